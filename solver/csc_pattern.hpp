@@ -1,0 +1,31 @@
+#pragma once
+/// Upper-triangular compressed-column sparsity pattern of a symmetric matrix. Linear algebra only:
+/// it knows nothing of elements or nodes, just of "cliques" (index sets coupled to each other).
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+namespace saasgaps {
+
+using Index = std::int64_t;  ///< SuiteSparse_long
+
+struct CscPattern {
+  Index n = 0;
+  std::vector<Index> colptr;  ///< n + 1 column starts
+  std::vector<Index> rowind;  ///< row indices, ascending within each column, row <= column
+
+  [[nodiscard]] Index nnz() const { return colptr.empty() ? 0 : colptr.back(); }
+
+  /// Position of entry (i, j) (either order) in rowind / the value array, or -1 when absent.
+  [[nodiscard]] Index find(Index i, Index j) const;
+
+  /// The pattern of a sum of dense blocks, clique c coupling every index in cliques(c) with every
+  /// other, plus the whole diagonal. Negative indices are skipped (eliminated unknowns).
+  /// O(nnz * clique size) time, no triplets.
+  static CscPattern from_cliques(Index n, std::size_t clique_count,
+                                 const std::function<std::span<const Index>(std::size_t)>& cliques);
+};
+
+}  // namespace saasgaps

@@ -1,0 +1,21 @@
+#pragma once
+/// Gathers one element's kernel input from the model: coordinates, temperatures, body forces.
+
+#include "element_kernel.hpp"
+#include "model.hpp"
+
+namespace saasgaps {
+
+/// Mean temperature of an element's nodes: the temperature its properties are read at.
+double element_temperature(const Model& model, const std::array<int, 4>& nodes, int node_count);
+
+/// Kernel input of solid element e with its constitutive law.
+ElementData solid_element_data(const Model& model, std::size_t e, const Constitutive& law);
+
+/// Kernel input of gap element g: no thermal strain and no body force (its properties are fictitious).
+ElementData gap_element_data(const Model& model, std::size_t g, const Constitutive& law);
+
+/// Corner coordinates of an element by node indices.
+std::array<Vec2, 4> corner_coordinates(const Model& model, const std::array<int, 4>& nodes, int node_count);
+
+}  // namespace saasgaps

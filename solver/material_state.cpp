@@ -1,0 +1,101 @@
+#include "material_state.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <numbers>
+
+#include "element_data.hpp"
+
+namespace saasgaps {
+
+Vec4 stress_in_material_axes(const Vec4& s, double angle_deg) {
+  const double t = angle_deg * std::numbers::pi / 180.0;
+  const double c = std::cos(t);
+  const double n = std::sin(t);
+  return Vec4(c * c * s[rr] + n * n * s[zz] + 2.0 * c * n * s[rz],
+              n * n * s[rr] + c * c * s[zz] - 2.0 * c * n * s[rz],
+              -c * n * s[rr] + c * n * s[zz] + (c * c - n * n) * s[rz], s[th]);
+}
+
+double reference_modulus(const ElasticConstants& c, bool isotropic) {
+  return isotropic ? c.E1 : (c.E1 + c.E2 + c.E3) / 3.0;
+}
+
+SolidMaterials::SolidMaterials(const Model& model) : model_(model) {
+  temperature_.reserve(model.elements.size());
+  for (const Element& el : model.elements) {
+    temperature_.push_back(element_temperature(model, el.nodes, el.node_count));
+  }
+  for (const Material& m : model.materials) {
+    if (!m.plasticity.empty() || !m.compression_table.empty()) nonlinear_ = true;
+  }
+}
+
+MaterialState SolidMaterials::initial() const {
+  return {std::vector<double>(model_.elements.size(), 1.0),
+          std::vector<DirectionChoice>(model_.elements.size(), all_tension)};
+}
+
+ElasticConstants SolidMaterials::constants(std::size_t e, DirectionChoice choice) const {
+  const Material& m = model_.materials[model_.elements[e].material];
+  const ElasticConstants tension = interpolate(m.table, temperature_[e], m.isotropic);
+  if (choice == all_tension || m.compression_table.empty()) return tension;
+  return mix_bimodulus(tension, interpolate(m.compression_table, temperature_[e], m.isotropic), choice);
+}
+
+Constitutive SolidMaterials::law(std::size_t e, const MaterialState& s) const {
+  const ElasticConstants c = secant(constants(e, s.compression[e]), s.secant_ratio[e]);
+  return constitutive(c, model_.analysis, model_.elements[e].angle_deg);
+}
+
+MaterialUpdate SolidMaterials::update(const MaterialState& used, std::span<const ElementState> states,
+                                      double tolerance) const {
+  const std::size_t n = model_.elements.size();
+  assert(states.size() == n);
+  MaterialUpdate u;
+  u.next = used;
+  u.yielded.assign(n, false);
+  u.converged.assign(n, true);
+  for (std::size_t e = 0; e < n; ++e) {
+    const Element& el = model_.elements[e];
+    const Material& m = model_.materials[el.material];
+    const Vec4& stress = states[e].stress;
+
+    if (!m.compression_table.empty()) {
+      const Vec4 material_stress = stress_in_material_axes(stress, el.angle_deg);
+      const DirectionChoice choice = compression_directions(material_stress);
+      // A flip in a direction that carries almost no stress changes almost nothing; it must not keep
+      // the iteration going forever, so only flips in stressed directions count.
+      const double scale = material_stress.cwiseAbs().maxCoeff();
+      const DirectionChoice flipped = choice ^ used.compression[e];
+      const std::array<int, 3> component{0, 1, 3};
+      for (int d = 0; d < 3; ++d) {
+        if ((flipped >> d & 1U) && std::abs(material_stress[component[d]]) > tolerance * scale) {
+          ++u.bimodulus_changes;
+          break;
+        }
+      }
+      u.next.compression[e] = choice;
+    }
+
+    if (!m.plasticity.empty()) {
+      const PlasticityRow row = interpolate(m.plasticity, temperature_[e]);
+      const double E = reference_modulus(constants(e, used.compression[e]), m.isotropic);
+      const BilinearCurve curve{E, row.yield_stress, row.hardening_ratio};
+      const double sigma_eff = von_mises(stress);
+      // The solution's effective stress sits on the secant line E_s = ratio E: its effective
+      // (mechanical) strain is sigma_eff / E_s. Read the curve at that same strain.
+      const double eps_eff = sigma_eff / (used.secant_ratio[e] * E);
+      const double ratio = eps_eff > 0.0 ? curve.stress(eps_eff) / (E * eps_eff) : 1.0;
+      u.next.secant_ratio[e] = ratio;
+      u.yielded[e] = sigma_eff > row.yield_stress;
+      u.converged[e] = std::abs(ratio - used.secant_ratio[e]) <= tolerance * used.secant_ratio[e];
+    }
+    if (u.yielded[e]) ++u.yielded_count;
+    if (!u.converged[e]) ++u.nonconverged_count;
+  }
+  return u;
+}
+
+}  // namespace saasgaps

@@ -1,0 +1,69 @@
+#pragma once
+/// The nonlinear material iteration of SAAS III: each solid element's stiffness is built from the
+/// previous solution (strain invariance), through
+///  - a secant modulus on the bilinear effective stress-strain curve (plasticity), and
+///  - the tension or compression table per material direction, by the sign of its stress (bimodulus).
+
+#include <span>
+#include <vector>
+
+#include "element_kernel.hpp"
+#include "material.hpp"
+#include "model.hpp"
+
+namespace saasgaps {
+
+/// What one iteration's solid stiffness was built with.
+struct MaterialState {
+  std::vector<double> secant_ratio;           ///< E_s / E per solid element (1 = elastic)
+  std::vector<DirectionChoice> compression;   ///< bimodulus choice per solid element
+
+  friend bool operator==(const MaterialState&, const MaterialState&) = default;
+};
+
+/// Per-element verdicts on one solution, and the state for the next iteration.
+struct MaterialUpdate {
+  MaterialState next;
+  std::vector<bool> yielded;    ///< YIELD?: effective stress above the yield stress
+  std::vector<bool> converged;  ///< N-L/CONV?: the secant modulus no longer changes
+  int yielded_count = 0;
+  int nonconverged_count = 0;
+  int bimodulus_changes = 0;    ///< elements whose direction choice changed in a stressed direction
+};
+
+class SolidMaterials {
+ public:
+  explicit SolidMaterials(const Model& model);
+
+  /// Every element elastic and in tension: the state of iteration 1.
+  [[nodiscard]] MaterialState initial() const;
+
+  /// The law of solid element e under state s.
+  [[nodiscard]] Constitutive law(std::size_t e, const MaterialState& s) const;
+
+  /// Strain invariance: from the element stresses of a solution built with `used`, read the secant
+  /// modulus off the bilinear curve at the same effective strain, and the bimodulus choice from
+  /// the stress signs. tolerance: relative change of E_s that still counts as converged.
+  [[nodiscard]] MaterialUpdate update(const MaterialState& used, std::span<const ElementState> states,
+                                      double tolerance) const;
+
+  /// True when some material is plastic or bimodulus (the iteration can change stiffness).
+  [[nodiscard]] bool nonlinear() const { return nonlinear_; }
+
+ private:
+  /// Elastic constants of element e for a direction choice, before any secant scaling.
+  [[nodiscard]] ElasticConstants constants(std::size_t e, DirectionChoice choice) const;
+
+  const Model& model_;
+  std::vector<double> temperature_;  // per solid element: mean of its nodes
+  bool nonlinear_ = false;
+};
+
+/// Stress in material axes (1, 2, 12, 3) of a global stress (rr, zz, rz, th), axis 1 at angle_deg.
+Vec4 stress_in_material_axes(const Vec4& stress, double angle_deg);
+
+/// E of the bilinear curve for an element's constants: E itself when isotropic, the mean of
+/// E1, E2, E3 when orthotropic.
+double reference_modulus(const ElasticConstants& c, bool isotropic);
+
+}  // namespace saasgaps

@@ -1,0 +1,156 @@
+#pragma once
+/// The analysis model as the solver sees it: plain data, every cross reference already resolved to
+/// an index (the io layer maps user ids to indices and reports bad input with JSON Pointers).
+///
+/// Coordinates are (r, z) in every analysis. Units are the user's own and must be consistent
+/// (the 1976 report uses in, lbf, psi, degF).
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace saasgaps {
+
+enum class AnalysisType { plane_stress, plane_strain, axisymmetric };
+
+struct Node {
+  int id = 0;
+  double r = 0.0;
+  double z = 0.0;
+};
+
+/// One row of a material property table, at temperature T. Axes 1 and 2 lie in the (r, z) plane,
+/// axis 1 at the element's material angle; axis 3 is the hoop (out-of-plane) direction.
+/// An isotropic row has E1 = E2 = E3 = E, nu12 = nu13 = nu23 = nu, alpha1..3 = alpha, and its
+/// shear modulus follows from the interpolated E and nu (G12 is ignored).
+struct PropertyRow {
+  double T = 0.0;
+  double E1 = 0.0, E2 = 0.0, E3 = 0.0;
+  double nu12 = 0.0, nu13 = 0.0, nu23 = 0.0;
+  double G12 = 0.0;
+  double alpha1 = 0.0, alpha2 = 0.0, alpha3 = 0.0;  ///< secant expansion from the reference temperature
+};
+
+/// Bilinear effective stress-strain curve at temperature T: yield stress and PEMR, the ratio of the
+/// secondary slope to E (0 <= PEMR < 1).
+struct PlasticityRow {
+  double T = 0.0;
+  double yield_stress = 0.0;
+  double hardening_ratio = 0.0;
+};
+
+struct Material {
+  int id = 0;
+  std::string name;
+  double density = 0.0;  ///< body force per unit volume = density * acceleration
+  bool isotropic = true;
+  std::vector<PropertyRow> table;              ///< sorted by T, at least one row
+  std::vector<PropertyRow> compression_table;  ///< empty: same properties in tension and compression
+  std::vector<PlasticityRow> plasticity;       ///< empty: linear elastic
+};
+
+/// A solid element: 3 nodes (constant-strain triangle) or 4 nodes (SAAS quadrilateral of four
+/// triangles around a condensed centre node), counter-clockwise, by node index.
+struct Element {
+  int id = 0;
+  std::array<int, 4> nodes{-1, -1, -1, -1};
+  int node_count = 4;
+  int material = 0;          ///< index into Model::materials
+  double angle_deg = 0.0;    ///< material axis 1, counter-clockwise from +r
+};
+
+/// A gap element: geometry like a solid element; its properties are set by the program. angle_deg
+/// is the M axis (across the gap).
+struct GapElement {
+  int id = 0;
+  std::array<int, 4> nodes{-1, -1, -1, -1};
+  int node_count = 4;
+  double angle_deg = 0.0;
+};
+
+/// How a gap passes the convergence test of section II (e).
+enum class GapConvergenceTest {
+  report,  ///< the report's behaviour (reproduces Tables I-III)
+  strict,  ///< also demands that gaps which do not touch have fallen to the schedule's floor modulus
+};
+
+struct GapSettings {
+  double initial_modulus = 100.0;          ///< E0, every gap's modulus in iteration 1
+  std::vector<double> tensile_schedule;    ///< tensile moduli from iteration 2 on; last = floor
+  double extrapolation_factor = 0.0;       ///< XFACT, 0 <= f < 1 (0: no extrapolation)
+  double closure_tolerance = 0.05;         ///< converged when eps_M > -(1 + tolerance)
+  double shear_ratio = 1.0e-6;             ///< gap shear modulus / current tensile modulus
+  GapConvergenceTest convergence_test = GapConvergenceTest::report;
+  std::vector<GapElement> elements;
+};
+
+/// Prescribed displacement components of one node.
+struct Constraint {
+  int node = 0;
+  std::optional<double> u_r;
+  std::optional<double> u_z;
+};
+
+/// Plane: force on the whole thickness. Axisymmetric: total force on the full ring (2 pi radians).
+struct NodalForce {
+  int node = 0;
+  double f_r = 0.0;
+  double f_z = 0.0;
+};
+
+/// Uniform traction on edge a-b of a solid element: normal > 0 pushes into the element, shear > 0
+/// acts along a -> b (the order the user gave).
+struct EdgePressure {
+  int element = 0;  ///< index of the solid element that owns the edge
+  int node_a = 0;
+  int node_b = 0;
+  double normal = 0.0;
+  double shear = 0.0;
+};
+
+/// Body force per unit volume = density * (accel_r, accel_z); omega (rad/time) spins an
+/// axisymmetric body about the z axis, adding density * omega^2 * r along r.
+struct BodyForce {
+  double accel_r = 0.0;
+  double accel_z = 0.0;
+  double omega = 0.0;
+};
+
+struct Loads {
+  std::vector<NodalForce> nodal_forces;
+  std::vector<EdgePressure> pressures;
+  std::vector<double> node_temperature;  ///< one per node (the default where none is given)
+  BodyForce body_force;
+};
+
+struct SolverOptions {
+  int max_iterations = 30;
+  double plastic_tolerance = 0.01;  ///< relative stress change that marks N-L/CONV? = NO
+};
+
+/// Indices tracked in every iteration's history row.
+struct OutputOptions {
+  std::vector<int> watch_elements;  ///< indices into Model::elements
+  std::vector<int> watch_gaps;      ///< indices into GapSettings::elements
+};
+
+struct Model {
+  std::string title;
+  std::string description;
+  AnalysisType analysis = AnalysisType::plane_stress;
+  double thickness = 1.0;              ///< plane analyses
+  double reference_temperature = 0.0;  ///< stress-free temperature
+  std::vector<Node> nodes;
+  std::vector<Material> materials;
+  std::vector<Element> elements;
+  std::optional<GapSettings> gaps;
+  std::vector<Constraint> constraints;
+  Loads loads;
+  SolverOptions solver;
+  OutputOptions output;
+
+  [[nodiscard]] std::size_t gap_count() const { return gaps ? gaps->elements.size() : 0; }
+};
+
+}  // namespace saasgaps

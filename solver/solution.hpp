@@ -1,0 +1,65 @@
+#pragma once
+/// The outcome of a run: status, history, and the last iteration's displacements, element
+/// stresses and strains, and gap states.
+
+#include <string>
+#include <vector>
+
+#include "gap_closure.hpp"
+#include "iteration_record.hpp"
+#include "voigt.hpp"
+
+namespace saasgaps {
+
+enum class RunStatus {
+  converged,
+  not_converged,  ///< max_iterations reached; resumable
+  stopped,        ///< stopped at an iteration boundary on request; resumable
+};
+
+const char* to_string(RunStatus status);
+
+struct NodeResult {
+  int id = 0;
+  double u_r = 0.0;
+  double u_z = 0.0;
+};
+
+struct ElementResult {
+  int id = 0;
+  Vec4 stress = Vec4::Zero();  ///< (rr, zz, rz, th)
+  Vec4 strain = Vec4::Zero();  ///< total (rr, zz, gamma_rz, th)
+  Principal principal;
+  double effective = 0.0;      ///< von Mises
+  bool yielded = false;        ///< YIELD?
+  bool plastic_converged = true;  ///< N-L/CONV?
+};
+
+/// open: eps_M >= 0; partial: closing but short of contact by more than the tolerance; closed:
+/// within the tolerance of contact; overclosed: beyond it.
+enum class GapState { open, partial, closed, overclosed };
+
+const char* to_string(GapState state);
+
+struct GapResult {
+  int id = 0;
+  double eps_m = 0.0;
+  double closure = 0.0;  ///< % (100 = faces touching)
+  double modulus = 0.0;  ///< E_M of the last iteration
+  double sigma_m = 0.0;  ///< normal stress across the gap: the contact pressure (negative = compression)
+  GapState state = GapState::open;
+  bool converged = false;  ///< GAP-CONV?
+  GapFailure failure = GapFailure::none;
+};
+
+struct Solution {
+  RunStatus status = RunStatus::not_converged;
+  int iterations = 0;
+  std::string message;
+  std::vector<IterationRecord> history;
+  std::vector<NodeResult> nodes;
+  std::vector<ElementResult> elements;
+  std::vector<GapResult> gaps;
+};
+
+}  // namespace saasgaps

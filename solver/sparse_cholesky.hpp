@@ -1,0 +1,57 @@
+#pragma once
+/// Sparse symmetric positive-definite solver on CHOLMOD's supernodal Cholesky factorization.
+/// The symbolic analysis (METIS fill-reducing ordering, elimination tree, supernodes) is done once
+/// per pattern; factorize() only repeats the numeric part in the same factor object, which after
+/// the first call allocates nothing. solve() reuses its workspace too.
+
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+#include "csc_pattern.hpp"
+
+namespace saasgaps {
+
+/// The matrix is not positive definite, or so close to singular that the answer would be noise.
+/// columns are the original (unpermuted) indices where the factorization broke down.
+class NotPositiveDefinite : public std::runtime_error {
+ public:
+  NotPositiveDefinite(const std::string& what, std::vector<Index> columns)
+      : std::runtime_error(what), columns_(std::move(columns)) {}
+  [[nodiscard]] const std::vector<Index>& columns() const { return columns_; }
+
+ private:
+  std::vector<Index> columns_;
+};
+
+class SparseCholesky {
+ public:
+  /// A pivot d_j = L_jj^2 smaller than this fraction of A_jj means all stiffness at j came from
+  /// cancellation: a mechanism in exact arithmetic (an unrestrained body or unconnected node).
+  static constexpr double singular_pivot_ratio = 1.0e-12;
+
+  /// Symbolic analysis of an upper-triangular pattern. The pattern must outlive this object.
+  explicit SparseCholesky(const CscPattern& pattern);
+  ~SparseCholesky();
+  SparseCholesky(const SparseCholesky&) = delete;
+  SparseCholesky& operator=(const SparseCholesky&) = delete;
+
+  /// Numeric factorization of the matrix with the analysed pattern and these values.
+  /// Throws NotPositiveDefinite naming the failing columns.
+  void factorize(std::span<const double> values);
+
+  /// x = A^-1 b with the last factorization.
+  void solve(std::span<const double> b, std::span<double> x);
+
+  [[nodiscard]] Index size() const;
+  [[nodiscard]] double factor_nonzeros() const;  ///< nnz(L)
+  [[nodiscard]] double factor_flops() const;     ///< floating-point operations of one factorization
+  [[nodiscard]] const char* ordering() const;    ///< the fill-reducing ordering in use
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace saasgaps

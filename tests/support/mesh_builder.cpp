@@ -1,0 +1,83 @@
+#include "mesh_builder.hpp"
+
+#include <algorithm>
+
+namespace saasgaps::testing {
+
+int max_node_id(const Model& model) {
+  int id = 0;
+  for (const Node& n : model.nodes) id = std::max(id, n.id);
+  return id;
+}
+
+int max_element_id(const Model& model) {
+  int id = 0;
+  for (const Element& e : model.elements) id = std::max(id, e.id);
+  if (model.gaps) {
+    for (const GapElement& g : model.gaps->elements) id = std::max(id, g.id);
+  }
+  return id;
+}
+
+Grid add_grid(Model& model, int ni, int nj, const std::function<Vec2(double, double)>& map, int material,
+              double angle_deg) {
+  Grid grid{ni, nj, {}};
+  int node_id = max_node_id(model);
+  for (int j = 0; j <= nj; ++j) {
+    for (int i = 0; i <= ni; ++i) {
+      const Vec2 x = map(static_cast<double>(i) / ni, static_cast<double>(j) / nj);
+      grid.nodes.push_back(static_cast<int>(model.nodes.size()));
+      model.nodes.push_back({++node_id, x.x(), x.y()});
+    }
+  }
+  int element_id = max_element_id(model);
+  for (int j = 0; j < nj; ++j) {
+    for (int i = 0; i < ni; ++i) {
+      Element e;
+      e.id = ++element_id;
+      e.nodes = {grid.at(i, j), grid.at(i + 1, j), grid.at(i + 1, j + 1), grid.at(i, j + 1)};
+      e.node_count = 4;
+      e.material = material;
+      e.angle_deg = angle_deg;
+      model.elements.push_back(e);
+    }
+  }
+  return grid;
+}
+
+void add_gap_row(Model& model, const std::vector<int>& a, const std::vector<int>& b,
+                 const std::function<double(int)>& angle_of) {
+  if (!model.gaps) model.gaps.emplace();
+  int element_id = max_element_id(model);
+  for (std::size_t k = 0; k + 1 < a.size(); ++k) {
+    GapElement g;
+    g.id = ++element_id;
+    g.nodes = {a[k], a[k + 1], b[k + 1], b[k]};
+    g.node_count = 4;
+    g.angle_deg = angle_of(static_cast<int>(k));
+    model.gaps->elements.push_back(g);
+  }
+}
+
+Material isotropic_material(int id, double E, double nu, double alpha) {
+  Material m;
+  m.id = id;
+  m.isotropic = true;
+  PropertyRow row;
+  row.E1 = row.E2 = row.E3 = E;
+  row.nu12 = row.nu13 = row.nu23 = nu;
+  row.G12 = E / (2.0 * (1.0 + nu));
+  row.alpha1 = row.alpha2 = row.alpha3 = alpha;
+  m.table.push_back(row);
+  return m;
+}
+
+void fill_temperatures(Model& model, double temperature) {
+  model.loads.node_temperature.resize(model.nodes.size(), temperature);
+}
+
+void constrain(Model& model, int node, std::optional<double> u_r, std::optional<double> u_z) {
+  model.constraints.push_back({node, u_r, u_z});
+}
+
+}  // namespace saasgaps::testing

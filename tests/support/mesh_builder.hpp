@@ -1,0 +1,43 @@
+#pragma once
+/// Models built in code for tests and benchmarks: structured grids mapped onto any shape.
+
+#include <functional>
+#include <vector>
+
+#include "model.hpp"
+#include "voigt.hpp"
+
+namespace saasgaps::testing {
+
+/// Node indices of a structured grid, (ni + 1) x (nj + 1) nodes.
+struct Grid {
+  int ni = 0;
+  int nj = 0;
+  std::vector<int> nodes;  ///< index of node (i, j) at i + (ni + 1) j
+  [[nodiscard]] int at(int i, int j) const { return nodes[static_cast<std::size_t>(i + (ni + 1) * j)]; }
+};
+
+/// Adds (ni + 1) x (nj + 1) nodes at map(i / ni, j / nj) and ni x nj quadrilaterals of `material`
+/// (counter-clockwise when map preserves orientation). Ids continue after the largest in use.
+Grid add_grid(Model& model, int ni, int nj, const std::function<Vec2(double, double)>& map, int material,
+              double angle_deg = 0.0);
+
+/// Adds gap elements joining two node rows a[k] (one face) and b[k] (other face), k = 0..n,
+/// as quads (a[k], a[k+1], b[k+1], b[k]) with M axis at angle_of(k) degrees.
+void add_gap_row(Model& model, const std::vector<int>& a, const std::vector<int>& b,
+                 const std::function<double(int)>& angle_of);
+
+/// An isotropic material with one table row.
+Material isotropic_material(int id, double E, double nu, double alpha = 0.0);
+
+/// Makes loads.node_temperature one per node (new nodes at `temperature`).
+void fill_temperatures(Model& model, double temperature);
+
+/// Fixes the given components of a node.
+void constrain(Model& model, int node, std::optional<double> u_r, std::optional<double> u_z);
+
+/// Largest node / element id in use.
+int max_node_id(const Model& model);
+int max_element_id(const Model& model);
+
+}  // namespace saasgaps::testing
