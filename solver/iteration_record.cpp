@@ -26,7 +26,7 @@ bool IterationRecord::same_numbers(const IterationRecord& o) const {
          max_closure == o.max_closure && yielded_elements == o.yielded_elements &&
          nonconverged_plastic == o.nonconverged_plastic && bimodulus_changes == o.bimodulus_changes &&
          extrapolated == o.extrapolated && same_rows(watch_elements, o.watch_elements) &&
-         same_rows(watch_gaps, o.watch_gaps);
+         same_rows(watch_gaps, o.watch_gaps) && gap_closures == o.gap_closures;
 }
 
 }  // namespace saasgaps

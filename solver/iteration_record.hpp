@@ -34,6 +34,7 @@ struct IterationRecord {
   bool extrapolated = false;   ///< gap moduli of this iteration used the extrapolation of Fig. 19
   std::vector<WatchedElement> watch_elements;
   std::vector<WatchedGap> watch_gaps;
+  std::vector<double> gap_closures;  ///< closure (%) of every gap, in model order: the closure plot
   double seconds = 0.0;        ///< wall time of the iteration
   int attempt = 1;             ///< which run (1 = first, 2 = first resume, ...) computed the row
 

@@ -1,0 +1,64 @@
+#include "io/history_json.hpp"
+
+namespace saasgaps::io {
+
+using nlohmann::json;
+
+json history_row_json(const IterationRecord& r) {
+  json elements = json::array();
+  for (const WatchedElement& e : r.watch_elements) {
+    elements.push_back({{"id", e.id},
+                        {"sigma_r", e.sigma_r},
+                        {"sigma_z", e.sigma_z},
+                        {"tau_rz", e.tau_rz},
+                        {"sigma_theta", e.sigma_theta},
+                        {"effective", e.effective}});
+  }
+  json gaps = json::array();
+  for (const WatchedGap& g : r.watch_gaps) {
+    gaps.push_back({{"id", g.id}, {"modulus", g.modulus}, {"closure", g.closure}, {"sigma_m", g.sigma_m}});
+  }
+  return {{"iteration", r.iteration},
+          {"tensile_modulus", r.tensile_modulus},
+          {"closed_gaps", r.closed_gaps},
+          {"nonconverged_gaps", r.nonconverged_gaps},
+          {"average_closure", r.average_closure},
+          {"max_closure", r.max_closure},
+          {"yielded_elements", r.yielded_elements},
+          {"nonconverged_plastic", r.nonconverged_plastic},
+          {"bimodulus_changes", r.bimodulus_changes},
+          {"extrapolated", r.extrapolated},
+          {"watch", {{"elements", elements}, {"gaps", gaps}}},
+          {"gap_closures", r.gap_closures},
+          {"seconds", r.seconds},
+          {"attempt", r.attempt}};
+}
+
+IterationRecord history_row_from_json(const json& j) {
+  IterationRecord r;
+  r.iteration = j.at("iteration").get<int>();
+  r.tensile_modulus = j.at("tensile_modulus").get<double>();
+  r.closed_gaps = j.at("closed_gaps").get<int>();
+  r.nonconverged_gaps = j.at("nonconverged_gaps").get<int>();
+  r.average_closure = j.at("average_closure").get<double>();
+  r.max_closure = j.at("max_closure").get<double>();
+  r.yielded_elements = j.at("yielded_elements").get<int>();
+  r.nonconverged_plastic = j.at("nonconverged_plastic").get<int>();
+  r.bimodulus_changes = j.value("bimodulus_changes", 0);
+  r.extrapolated = j.at("extrapolated").get<bool>();
+  r.seconds = j.at("seconds").get<double>();
+  r.gap_closures = j.value("gap_closures", std::vector<double>{});
+  r.attempt = j.value("attempt", 1);
+  for (const json& e : j.at("watch").at("elements")) {
+    r.watch_elements.push_back({e.at("id").get<int>(), e.at("sigma_r").get<double>(), e.at("sigma_z").get<double>(),
+                                e.at("tau_rz").get<double>(), e.at("sigma_theta").get<double>(),
+                                e.at("effective").get<double>()});
+  }
+  for (const json& g : j.at("watch").at("gaps")) {
+    r.watch_gaps.push_back({g.at("id").get<int>(), g.at("modulus").get<double>(), g.at("closure").get<double>(),
+                            g.at("sigma_m").get<double>()});
+  }
+  return r;
+}
+
+}  // namespace saasgaps::io

@@ -1,0 +1,49 @@
+#pragma once
+/// Reads the model document (the JSON contract of /work/shared/spec/model-format.md, formally
+/// schemas/model.schema.json) into the solver's Model, with every user id resolved to an index.
+///
+/// The reader is the one place where input is judged. It checks every rule of the contract, keeps
+/// going after a failure, and throws saasgaps::ModelError carrying every issue it found, each
+/// located by the JSON Pointer of the offending value (of the enclosing object for a missing key)
+/// and described by a sentence that quotes the value. It never throws anything else for any input.
+///
+/// Decisions beyond the contract's text (also documented in the schema's descriptions):
+/// - ids are JSON integers (1.0 is rejected even though JSON Schema calls it an integer) in
+///   1..2147483647; nodes, materials and elements are non-empty arrays.
+/// - gaps.shear_ratio (gap shear modulus / current tensile modulus, default 1e-6) and
+///   gaps.convergence_test ("report" | "strict", default "report") are SAASGAPS additions.
+/// - loads.temperatures.default defaults to analysis.reference_temperature, so a model without a
+///   temperature load has no thermal strain.
+/// - body_force.omega must be 0 unless the analysis is axisymmetric; analysis.thickness may only
+///   appear in plane analyses.
+/// - a constraint must prescribe r and/or z, and no component of a node is prescribed twice;
+///   constraints must not be empty (an unrestrained model is a rigid body mechanism).
+/// - a node may receive several nodal forces (they add); a node may have one nodal temperature.
+/// - watch lists may not repeat an id.
+/// - a repeated key in one JSON object is an error (parse_model only: a parsed nlohmann::json has
+///   already kept just one of the values).
+/// - a node that no element uses is not an error here (the solver reports the model singular).
+
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "model.hpp"
+
+namespace saasgaps::io {
+
+/// Checks `document` against every rule and returns the Model. Throws ModelError with all issues.
+Model read_model(const nlohmann::json& document);
+
+/// Parses JSON text into a document, for callers that keep the document itself (e.g. to fingerprint
+/// it). Throws ModelError when the text is not JSON (one issue at ""), when a number is beyond the
+/// range of a double (at the number's pointer) and when an object repeats a key (at that key).
+nlohmann::json parse_document(std::string_view text);
+
+/// Parses JSON text, then read_model. Text that is not JSON gives one issue at pointer "" with the
+/// parser's message and byte position; a number too large for a double is reported at its own
+/// pointer; repeated keys are reported (at the repeated key's pointer) together with the issues of
+/// read_model.
+Model parse_model(std::string_view text);
+
+}  // namespace saasgaps::io

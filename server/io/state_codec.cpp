@@ -1,0 +1,143 @@
+#include "io/state_codec.hpp"
+
+#include <cstdio>
+
+#include "errors.hpp"
+#include "io/history_json.hpp"
+
+namespace saasgaps::io {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr const char* format_name = "saasgaps-restart-state";
+
+/// FNV-1a, 64 bit: a fingerprint against mix-ups, not a security measure.
+std::uint64_t fnv1a(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ULL;
+  }
+  return h;
+}
+
+/// Entries that differ from `usual`, as [index, value] pairs: most elements stay elastic and in
+/// tension, so the material state is stored sparsely.
+template <class T>
+json sparse(const std::vector<T>& values, T usual) {
+  json pairs = json::array();
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (values[i] != usual) pairs.push_back(json::array({i, values[i]}));
+  }
+  return pairs;
+}
+
+template <class T>
+std::vector<T> dense(const json& pairs, std::size_t size, T usual) {
+  std::vector<T> values(size, usual);
+  for (const json& p : pairs) {
+    const auto i = p.at(0).get<std::size_t>();
+    if (i >= size) throw SolverError("restart state: material index " + std::to_string(i) + " out of range");
+    values[i] = p.at(1).get<T>();
+  }
+  return values;
+}
+
+}  // namespace
+
+std::string model_digest(const json& model_document) {
+  json significant = model_document;
+  if (significant.is_object()) {
+    significant.erase("title");
+    significant.erase("description");
+    significant.erase("output");
+  }
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(fnv1a(significant.dump())));
+  return text;
+}
+
+json state_to_json(const RestartState& s, const std::string& digest) {
+  json history = json::array();
+  for (const IterationRecord& row : s.history) history.push_back(history_row_json(row));
+  const GapHistory& g = s.gaps;
+  return {{"format", format_name},
+          {"version", s.version},
+          {"model_digest", digest},
+          {"iteration", s.iteration},
+          {"attempt", s.attempt},
+          {"dimensions", {{"nodes", s.node_count}, {"elements", s.element_count}, {"gaps", s.gap_count}}},
+          {"materials",
+           {{"secant_ratio", sparse(s.materials.secant_ratio, 1.0)},
+            {"compression", sparse(s.materials.compression, all_tension)}}},
+          {"gaps",
+           {{"normal", g.used.normal},
+            {"tensile", g.used.tensile},
+            {"schedule_step", g.used.schedule_step},
+            {"extrapolated", g.used.extrapolated},
+            {"strain", g.strain},
+            {"previous_normal", g.previous_normal},
+            {"previous_strain", g.previous_strain},
+            {"previous_tensile", g.previous_tensile}}},
+          {"displacement", s.displacement},
+          {"history", history}};
+}
+
+RestartState state_from_json(const json& j, const std::string& expected_digest) {
+  try {
+    if (!j.is_object() || j.value("format", "") != format_name) {
+      throw SolverError("not a SAASGAPS restart state");
+    }
+    RestartState s;
+    s.version = j.at("version").get<int>();
+    if (s.version != RestartState::current_version) {
+      throw SolverError("restart state version " + std::to_string(s.version) + " is not supported (expected " +
+                        std::to_string(RestartState::current_version) + ")");
+    }
+    if (!expected_digest.empty() && j.at("model_digest").get<std::string>() != expected_digest) {
+      throw SolverError("the restart state was saved for a different model (digest " +
+                        j.at("model_digest").get<std::string>() + ", this model " + expected_digest + ")");
+    }
+    s.iteration = j.at("iteration").get<int>();
+    s.attempt = j.at("attempt").get<int>();
+    const json& dims = j.at("dimensions");
+    s.node_count = dims.at("nodes").get<std::size_t>();
+    s.element_count = dims.at("elements").get<std::size_t>();
+    s.gap_count = dims.at("gaps").get<std::size_t>();
+    const json& m = j.at("materials");
+    s.materials.secant_ratio = dense(m.at("secant_ratio"), s.element_count, 1.0);
+    s.materials.compression = dense<DirectionChoice>(m.at("compression"), s.element_count, all_tension);
+    const json& g = j.at("gaps");
+    s.gaps.used.normal = g.at("normal").get<std::vector<double>>();
+    s.gaps.used.tensile = g.at("tensile").get<double>();
+    s.gaps.used.schedule_step = g.at("schedule_step").get<int>();
+    s.gaps.used.extrapolated = g.at("extrapolated").get<bool>();
+    s.gaps.strain = g.at("strain").get<std::vector<double>>();
+    s.gaps.previous_normal = g.at("previous_normal").get<std::vector<double>>();
+    s.gaps.previous_strain = g.at("previous_strain").get<std::vector<double>>();
+    s.gaps.previous_tensile = g.at("previous_tensile").get<double>();
+    s.displacement = j.at("displacement").get<std::vector<double>>();
+    for (const json& row : j.at("history")) s.history.push_back(history_row_from_json(row));
+    return s;
+  } catch (const json::exception& e) {
+    throw SolverError(std::string("malformed restart state: ") + e.what());
+  }
+}
+
+std::vector<std::uint8_t> state_to_cbor(const RestartState& state, const std::string& digest) {
+  return json::to_cbor(state_to_json(state, digest));
+}
+
+RestartState state_from_cbor(const std::vector<std::uint8_t>& bytes, const std::string& expected_digest) {
+  json document;
+  try {
+    document = json::from_cbor(bytes);
+  } catch (const json::exception& e) {
+    throw SolverError(std::string("malformed restart state: ") + e.what());
+  }
+  return state_from_json(document, expected_digest);
+}
+
+}  // namespace saasgaps::io
