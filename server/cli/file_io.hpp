@@ -1,0 +1,15 @@
+#pragma once
+/// Whole-file reads and atomic writes for the command line.
+
+#include <string>
+
+namespace saasgaps::cli {
+
+/// Throws std::runtime_error naming the file when it cannot be read.
+std::string read_file(const std::string& path);
+
+/// Writes to a temporary file next to path and renames it over path, so a reader (or a crash)
+/// never sees half a file.
+void write_file_atomically(const std::string& path, const std::string& content);
+
+}  // namespace saasgaps::cli

@@ -1,0 +1,71 @@
+/// saasgaps: thermal stress analysis of plane and axisymmetric bodies in contact across gaps.
+/// Subcommands: solve, validate (and serve, plot). Exit codes (service.md): 0 converged or valid,
+/// 3 not converged, 2 bad model, 1 any other failure. Exceptions become exit codes here only.
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "errors.hpp"
+#include "cli/solve_command.hpp"
+#include "cli/thread_environment.hpp"
+#include "cli/validate_command.hpp"
+
+namespace {
+
+int report_model_error(const saasgaps::ModelError& e) {
+  std::cerr << "invalid model: " << e.issues().size() << (e.issues().size() == 1 ? " error\n" : " errors\n");
+  for (const saasgaps::InputIssue& issue : e.issues()) {
+    std::cerr << (issue.pointer.empty() ? "(document)" : issue.pointer) << ": " << issue.detail << '\n';
+  }
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  saasgaps::cli::ensure_thread_environment(argc, argv);
+
+  CLI::App app{"SAASGAPS: thermal stress analysis of plane and axisymmetric bodies in contact across gaps"};
+  app.require_subcommand(1);
+
+  saasgaps::cli::SolveOptions solve;
+  CLI::App* solve_cmd = app.add_subcommand("solve", "Solve a model; one progress line per iteration on stderr");
+  solve_cmd->add_option("model", solve.model_path, "Model document (JSON)")->required();
+  solve_cmd->add_option("-o,--output", solve.result_path, "Result document (default: stdout)");
+  solve_cmd->add_option("--state-out", solve.state_out, "Write the restart state here after every iteration");
+  solve_cmd->add_option("--resume", solve.resume_from, "Continue from a restart state written by --state-out");
+  solve_cmd->add_option("--max-iterations", solve.max_iterations, "Iteration limit (overrides the model's)")
+      ->check(CLI::PositiveNumber);
+  solve_cmd->add_option("--schedule", solve.tensile_schedule,
+                        "New tensile modulus schedule, absolute moduli, comma separated (with --resume: "
+                        "started afresh at the next iteration)")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber);
+  solve_cmd->add_option("--extrapolation", solve.extrapolation_factor, "Extrapolation factor XFACT, 0 <= f < 1")
+      ->check(CLI::Range(0.0, 0.999999999));
+  solve_cmd->add_option("--stop-after", solve.stop_after, "Stop after this many iterations, keeping the state")
+      ->check(CLI::PositiveNumber);
+  solve_cmd->add_flag("-q,--quiet", solve.quiet, "No progress table");
+
+  std::string validate_path;
+  CLI::App* validate_cmd = app.add_subcommand("validate", "Check a model and print every error with its JSON Pointer");
+  validate_cmd->add_option("model", validate_path, "Model document (JSON)")->required();
+
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    if (solve_cmd->parsed()) return saasgaps::cli::run_solve(solve);
+    if (validate_cmd->parsed()) return saasgaps::cli::run_validate(validate_path);
+  } catch (const saasgaps::ModelError& e) {
+    return report_model_error(e);
+  } catch (const saasgaps::SingularModelError& e) {
+    // A mechanism is a defect of the model (model-format.md: "the model is restrained").
+    std::cerr << "invalid model: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return 1;
+  }
+  return 1;
+}

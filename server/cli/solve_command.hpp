@@ -1,0 +1,27 @@
+#pragma once
+/// `saasgaps solve MODEL.json [-o RESULT.json]`: runs the solver in-process, one progress line per
+/// iteration on stderr, the result document to a file or stdout.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace saasgaps::cli {
+
+struct SolveOptions {
+  std::string model_path;
+  std::string result_path;  ///< empty: stdout
+  std::string state_out;    ///< write the restart state after every iteration
+  std::string resume_from;  ///< continue from this restart state
+  std::optional<int> max_iterations;
+  std::optional<std::vector<double>> tensile_schedule;
+  std::optional<double> extrapolation_factor;
+  std::optional<int> stop_after;  ///< stop at the boundary after this iteration
+  bool quiet = false;
+};
+
+/// Exit code: 0 converged, 3 not converged (or stopped). Throws for bad input and failures; main()
+/// maps those to exit codes.
+int run_solve(const SolveOptions& options);
+
+}  // namespace saasgaps::cli

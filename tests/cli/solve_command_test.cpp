@@ -1,0 +1,141 @@
+// The saasgaps command line as a user drives it: exit codes of service.md, the iteration table on
+// stderr, and a run stopped and resumed through --state-out / --resume files.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code = -1;
+  std::string err;
+};
+
+class SolveCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("saasgaps-cli-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  static std::string example(const std::string& name) { return std::string(SAASGAPS_EXAMPLES_DIR) + "/" + name; }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  Outcome saasgaps(const std::string& arguments) const {
+    const std::string err = path("stderr.txt");
+    const std::string command = std::string(SAASGAPS_BINARY) + " " + arguments + " > " + path("stdout.txt") + " 2> " + err;
+    const int status = std::system(command.c_str());
+    Outcome r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.err = read(err);
+    return r;
+  }
+
+  static std::string read(const std::string& file) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  static nlohmann::json json_of(const std::string& file) { return nlohmann::json::parse(read(file)); }
+
+  /// The result without wall times and attempt numbers: what must match between runs.
+  static nlohmann::json numbers(nlohmann::json result) {
+    for (auto& row : result["history"]) {
+      row.erase("seconds");
+      row.erase("attempt");
+    }
+    return result;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(SolveCommand, ConvergedRunPrintsTheTableAndExitsZero) {
+  const Outcome r = saasgaps("solve " + example("report-problem2.json") + " -o " + path("result.json"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  for (const char* column : {"iter", "E tension", "closed", "non-conv", "avg clos %", "max clos %", "yielded",
+                             "N-L non-conv", "gap 20 E_M", "gap 20 clos %", "el 9 s_r"}) {
+    EXPECT_NE(r.err.find(column), std::string::npos) << "missing column " << column << "\n" << r.err;
+  }
+  EXPECT_NE(r.err.find("converged in 5 iterations"), std::string::npos) << r.err;
+  const nlohmann::json result = json_of(path("result.json"));
+  EXPECT_EQ(result["status"], "converged");
+  EXPECT_EQ(result["history"].size(), 5U);
+  EXPECT_EQ(result["gaps"].size(), 11U);
+}
+
+TEST_F(SolveCommand, StoppedThenResumedEqualsTheUninterruptedRun) {
+  ASSERT_EQ(saasgaps("solve " + example("report-problem3-case3.json") + " -q -o " + path("full.json")).exit_code, 0);
+  const Outcome stopped = saasgaps("solve " + example("report-problem3-case3.json") + " -q --stop-after 4 --state-out " +
+                               path("state.json") + " -o " + path("partial.json"));
+  EXPECT_EQ(stopped.exit_code, 3) << stopped.err;
+  EXPECT_NE(stopped.err.find("stopped on request after iteration 4"), std::string::npos) << stopped.err;
+  EXPECT_EQ(json_of(path("partial.json"))["status"], "not_converged");
+  const Outcome resumed = saasgaps("solve " + example("report-problem3-case3.json") + " -q --resume " + path("state.json") +
+                               " -o " + path("resumed.json"));
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(numbers(json_of(path("resumed.json"))), numbers(json_of(path("full.json"))));
+}
+
+TEST_F(SolveCommand, IterationLimitExitsThreeAndSaysWhatFails) {
+  const Outcome r = saasgaps("solve " + example("report-problem3-case1.json") + " --max-iterations 3 -o " +
+                         path("result.json"));
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  const nlohmann::json result = json_of(path("result.json"));
+  EXPECT_EQ(result["status"], "not_converged");
+  EXPECT_NE(result["message"].get<std::string>().find("overclosed"), std::string::npos) << result["message"];
+}
+
+TEST_F(SolveCommand, ResumeWithANewScheduleUsesIt) {
+  ASSERT_EQ(saasgaps("solve " + example("report-problem3-case1.json") + " -q --stop-after 2 --state-out " +
+                     path("state.json") + " -o " + path("partial.json")).exit_code, 3);
+  const Outcome r = saasgaps("solve " + example("report-problem3-case1.json") + " -q --resume " + path("state.json") +
+                         " --schedule 0.5,0.25 -o " + path("resumed.json"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json history = json_of(path("resumed.json"))["history"];
+  EXPECT_EQ(history[2]["tensile_modulus"], 0.5);
+  EXPECT_EQ(history[3]["tensile_modulus"], 0.25);
+  EXPECT_EQ(history[2]["attempt"], 2);
+}
+
+TEST_F(SolveCommand, BadModelExitsTwoWithPointers) {
+  std::ofstream(path("bad.json")) << R"({"schema_version": 1, "title": "x", "analysis": {"type": "plane_stres"},
+    "nodes": [], "materials": [], "elements": [], "constraints": []})";
+  const Outcome r = saasgaps("solve " + path("bad.json"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("/analysis/type"), std::string::npos) << r.err;
+  EXPECT_EQ(saasgaps("validate " + path("bad.json")).exit_code, 2);
+}
+
+TEST_F(SolveCommand, SingularModelExitsTwoNamingTheNodes) {
+  nlohmann::json model = json_of(example("report-beam-model-a.json"));
+  model["constraints"] = nlohmann::json::array({{{"node", 2}, {"r", 0.0}}});
+  std::ofstream(path("free.json")) << model.dump();
+  const Outcome r = saasgaps("solve " + path("free.json") + " -o " + path("result.json"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("not restrained"), std::string::npos) << r.err;
+  EXPECT_EQ(json_of(path("result.json"))["status"], "failed");
+}
+
+TEST_F(SolveCommand, UnreadableFileExitsOne) {
+  EXPECT_EQ(saasgaps("solve " + path("missing.json")).exit_code, 1);
+  const Outcome garbage = saasgaps("solve " + example("report-problem1.json") + " --resume " + example("report-problem2.json"));
+  EXPECT_EQ(garbage.exit_code, 1) << garbage.err;
+  EXPECT_NE(garbage.err.find("not a SAASGAPS restart state"), std::string::npos) << garbage.err;
+}
+
+}  // namespace
