@@ -244,6 +244,8 @@ class GapContactAnalysis {
       row.nonconverged_gaps = v.gap_verdict.nonconverged;
       row.average_closure = v.gap_verdict.average_closure;
       row.max_closure = v.gap_verdict.max_closure;
+      row.gap_closures.reserve(v.gap_strain.size());
+      for (double eps : v.gap_strain) row.gap_closures.push_back(-100.0 * eps);
     }
     for (int e : model_.output.watch_elements) {
       const Vec4& s = v.solids[e].stress;

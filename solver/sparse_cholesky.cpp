@@ -18,6 +18,7 @@ struct SparseCholesky::Impl {
   cholmod_dense* Y = nullptr;
   cholmod_dense* E = nullptr;
   std::vector<Index> diagonal;  // position of A_jj in the value array
+  std::vector<double> reference;  // |A_jj| of the last factorization
 
   explicit Impl(const CscPattern& p) : pattern(p) {
     cholmod_l_start(&common);
@@ -72,26 +73,80 @@ struct SparseCholesky::Impl {
     cholmod_l_finish(&common);
   }
 
-  /// Columns whose pivot lost nearly all of A_jj to cancellation (supernodal LL' only).
-  std::vector<Index> tiny_pivots(const double* values) const {
+  /// Factorizes `values` into L; true when positive definite and no pivot keeps less than `ratio`
+  /// of its column's diagonal in `reference`. Otherwise `worst` is the column that broke down.
+  bool factor_cleanly(const double* values, double ratio, Index& worst) {
+    A.x = const_cast<double*>(values);
+    A.xtype = CHOLMOD_REAL;
+    const int ok = cholmod_l_factorize(&A, L, &common);
+    A.x = nullptr;
+    A.xtype = CHOLMOD_PATTERN;
+    if (!ok || common.status < CHOLMOD_OK) {
+      throw std::runtime_error("CHOLMOD factorization failed (status " + std::to_string(common.status) + ")");
+    }
+    if (common.status == CHOLMOD_NOT_POSDEF || L->minor < L->n) {
+      worst = static_cast<const Index*>(L->Perm)[static_cast<Index>(L->minor)];
+      return false;
+    }
+    worst = smallest_pivot(ratio);
+    return worst < 0;
+  }
+
+  /// Where a failed factorization broke down: every mechanism, not just the first. Once one pivot
+  /// is (nearly) zero, round-off divided by it pollutes the later pivots, so one factorization can
+  /// name only one mechanism. The diagnosis grounds that column (a stiff spring, as an automatic
+  /// single-point constraint would) and factorizes afresh, until the matrix is definite. Columns
+  /// without any stiffness are named at once. Runs only after a failure.
+  std::vector<Index> breakdown_columns(std::span<const double> values, Index first) {
+    constexpr int max_rounds = 24;
+    std::vector<double> work(values.begin(), values.end());
+    double largest = 0.0;
+    for (Index j = 0; j < pattern.n; ++j) largest = std::max(largest, reference[j]);
+    const double ground = largest > 0.0 ? 1.0e6 * largest : 1.0;
     std::vector<Index> columns;
-    if (!L->is_super) return columns;
+    const auto ground_column = [&](Index j) {
+      columns.push_back(j);
+      work[diagonal[j]] = ground;
+    };
+    for (Index j = 0; j < pattern.n; ++j) {
+      if (!(values[diagonal[j]] > 0.0)) ground_column(j);
+    }
+    if (columns.empty()) ground_column(first);
+    for (int round = 0; round < max_rounds; ++round) {
+      Index worst = -1;
+      if (factor_cleanly(work.data(), singular_pivot_ratio, worst)) break;
+      ground_column(worst);
+    }
+    std::sort(columns.begin(), columns.end());
+    columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+    return columns;
+  }
+
+  /// The column whose pivot lost the largest share of its diagonal, if that share leaves less than
+  /// `ratio` of it (supernodal LL' only); -1 when every pivot is healthy.
+  Index smallest_pivot(double ratio) const {
+    if (!L->is_super) return -1;
     const auto* super = static_cast<const Index*>(L->super);
     const auto* pi = static_cast<const Index*>(L->pi);
     const auto* px = static_cast<const Index*>(L->px);
     const auto* Lx = static_cast<const double*>(L->x);
     const auto* perm = static_cast<const Index*>(L->Perm);
+    Index worst = -1;
+    double worst_ratio = ratio;
     for (size_t s = 0; s < L->nsuper; ++s) {
       const Index first = super[s];
       const Index rows = pi[s + 1] - pi[s];
       for (Index j = first; j < super[s + 1]; ++j) {
         const double ljj = Lx[px[s] + (j - first) + (j - first) * rows];
         const Index original = perm[j];
-        const double ajj = values[diagonal[original]];
-        if (!(ljj * ljj > singular_pivot_ratio * std::abs(ajj))) columns.push_back(original);
+        const double share = ljj * ljj / reference[original];
+        if (!(share >= worst_ratio)) {
+          worst_ratio = share;
+          worst = original;
+        }
       }
     }
-    return columns;
+    return worst;
   }
 };
 
@@ -102,23 +157,11 @@ SparseCholesky::~SparseCholesky() = default;
 void SparseCholesky::factorize(std::span<const double> values) {
   Impl& m = *impl_;
   assert(static_cast<Index>(values.size()) == m.pattern.nnz());
-  m.A.x = const_cast<double*>(values.data());
-  m.A.xtype = CHOLMOD_REAL;
-  const int ok = cholmod_l_factorize(&m.A, m.L, &m.common);
-  m.A.x = nullptr;
-  m.A.xtype = CHOLMOD_PATTERN;
-  if (!ok || m.common.status < CHOLMOD_OK) {
-    throw std::runtime_error("CHOLMOD factorization failed (status " + std::to_string(m.common.status) + ")");
-  }
-  if (m.common.status == CHOLMOD_NOT_POSDEF || m.L->minor < m.L->n) {
-    const auto* perm = static_cast<const Index*>(m.L->Perm);
-    throw NotPositiveDefinite("the stiffness matrix is not positive definite",
-                              {perm[static_cast<Index>(m.L->minor)]});
-  }
-  std::vector<Index> tiny = m.tiny_pivots(values.data());
-  if (!tiny.empty()) {
-    std::sort(tiny.begin(), tiny.end());
-    throw NotPositiveDefinite("the stiffness matrix is singular", std::move(tiny));
+  m.reference.resize(static_cast<size_t>(m.pattern.n));
+  for (Index j = 0; j < m.pattern.n; ++j) m.reference[j] = std::abs(values[m.diagonal[j]]);
+  Index worst = -1;
+  if (!m.factor_cleanly(values.data(), singular_pivot_ratio, worst)) {
+    throw NotPositiveDefinite("the stiffness matrix is singular", m.breakdown_columns(values, worst));
   }
 }
 

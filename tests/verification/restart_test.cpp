@@ -1,0 +1,131 @@
+// The computational restart: a run stopped after iteration k (or ended not converged) and resumed
+// from its saved state, through the JSON and CBOR codecs, ends with every output number equal to the
+// uninterrupted run's.
+#include <gtest/gtest.h>
+
+#include "analysis.hpp"
+#include "errors.hpp"
+#include "io/state_codec.hpp"
+#include "support/examples.hpp"
+
+namespace saasgaps {
+namespace {
+
+/// Keeps the state of every iteration and stops after `stop_after` iterations (0: never).
+class Recorder : public IterationObserver {
+ public:
+  explicit Recorder(int stop_after = 0) : stop_after_(stop_after) {}
+  void on_iteration(const IterationRecord&, const RestartState& state) override { states.push_back(state); }
+  bool stop_requested() override { return stop_after_ > 0 && static_cast<int>(states.size()) >= stop_after_; }
+  std::vector<RestartState> states;
+
+ private:
+  int stop_after_;
+};
+
+void expect_identical(const Solution& a, const Solution& b) {
+  ASSERT_EQ(a.status, b.status);
+  ASSERT_EQ(a.iterations, b.iterations);
+  ASSERT_EQ(a.history.size(), b.history.size());
+  for (std::size_t k = 0; k < a.history.size(); ++k) {
+    EXPECT_TRUE(a.history[k].same_numbers(b.history[k])) << "history row " << k + 1;
+  }
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  for (std::size_t n = 0; n < a.nodes.size(); ++n) {
+    EXPECT_EQ(a.nodes[n].u_r, b.nodes[n].u_r);
+    EXPECT_EQ(a.nodes[n].u_z, b.nodes[n].u_z);
+  }
+  ASSERT_EQ(a.elements.size(), b.elements.size());
+  for (std::size_t e = 0; e < a.elements.size(); ++e) {
+    EXPECT_EQ(a.elements[e].stress, b.elements[e].stress) << "element " << a.elements[e].id;
+    EXPECT_EQ(a.elements[e].strain, b.elements[e].strain);
+    EXPECT_EQ(a.elements[e].effective, b.elements[e].effective);
+    EXPECT_EQ(a.elements[e].yielded, b.elements[e].yielded);
+    EXPECT_EQ(a.elements[e].plastic_converged, b.elements[e].plastic_converged);
+  }
+  ASSERT_EQ(a.gaps.size(), b.gaps.size());
+  for (std::size_t g = 0; g < a.gaps.size(); ++g) {
+    EXPECT_EQ(a.gaps[g].eps_m, b.gaps[g].eps_m) << "gap " << a.gaps[g].id;
+    EXPECT_EQ(a.gaps[g].modulus, b.gaps[g].modulus);
+    EXPECT_EQ(a.gaps[g].sigma_m, b.gaps[g].sigma_m);
+    EXPECT_EQ(a.gaps[g].converged, b.gaps[g].converged);
+  }
+}
+
+class ExactRestart : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ExactRestart, StopAfterKResumeFromTheSavedStateGivesTheSameNumbers) {
+  const nlohmann::json document = testing::example_document(GetParam());
+  const Model model = testing::example_model(GetParam());
+  const std::string digest = io::model_digest(document);
+  Recorder all;
+  const Solution uninterrupted = solve(model, &all);
+  ASSERT_GE(uninterrupted.iterations, 3);
+
+  for (int k : {1, 2, uninterrupted.iterations - 1}) {
+    SCOPED_TRACE("stopped after iteration " + std::to_string(k));
+    Recorder first(k);
+    const Solution stopped = solve(model, &first);
+    ASSERT_EQ(stopped.status, RunStatus::stopped);
+    ASSERT_EQ(stopped.iterations, k);
+    // The state the stopped run saved equals the uninterrupted run's after k iterations (wall times
+    // in the history rows aside).
+    nlohmann::json saved = io::state_to_json(first.states.back(), digest);
+    nlohmann::json reference = io::state_to_json(all.states[k - 1], digest);
+    saved.erase("history");
+    reference.erase("history");
+    EXPECT_EQ(saved, reference);
+
+    const RestartState from_json = io::state_from_json(io::state_to_json(first.states.back(), digest), digest);
+    expect_identical(solve(model, nullptr, &from_json), uninterrupted);
+    const RestartState from_cbor = io::state_from_cbor(io::state_to_cbor(first.states.back(), digest), digest);
+    expect_identical(solve(model, nullptr, &from_cbor), uninterrupted);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(ReportProblems, ExactRestart,
+                         ::testing::Values("report-problem2.json", "report-problem3-case1.json",
+                                           "report-problem3-case3.json"));
+
+TEST(Restart, ANotConvergedRunResumesWithMoreIterations) {
+  const Model model = testing::example_model("report-problem3-case3.json");
+  const Solution uninterrupted = solve(model);
+  ResumeOptions short_run;
+  short_run.max_iterations = 6;
+  Recorder saved;
+  const Solution partial = solve(model, &saved, nullptr, short_run);
+  ASSERT_EQ(partial.status, RunStatus::not_converged);
+  EXPECT_NE(partial.message.find("max_iterations 6"), std::string::npos) << partial.message;
+  ResumeOptions more;
+  more.max_iterations = model.solver.max_iterations;
+  expect_identical(solve(model, nullptr, &saved.states.back(), more), uninterrupted);
+}
+
+TEST(Restart, ANewScheduleStartsAfreshFromItsFirstValue) {
+  const Model model = testing::example_model("report-problem3-case1.json");
+  Recorder saved(3);
+  solve(model, &saved);
+  ResumeOptions changes;
+  changes.tensile_schedule = std::vector<double>{0.5, 0.25};
+  const Solution resumed = solve(model, nullptr, &saved.states.back(), changes);
+  ASSERT_GE(resumed.history.size(), 5U);
+  EXPECT_EQ(resumed.history[3].tensile_modulus, 0.5);
+  EXPECT_EQ(resumed.history[4].tensile_modulus, 0.25);
+  EXPECT_EQ(resumed.history[3].attempt, 2);
+  EXPECT_EQ(resumed.history[2].attempt, 1);
+}
+
+TEST(Restart, AStateOfAnotherModelIsRefused) {
+  const nlohmann::json document = testing::example_document("report-problem3-case1.json");
+  Recorder saved(2);
+  solve(testing::example_model("report-problem3-case1.json"), &saved);
+  const nlohmann::json state = io::state_to_json(saved.states.back(), io::model_digest(document));
+  const nlohmann::json other = testing::example_document("report-problem3-case3.json");
+  EXPECT_THROW(io::state_from_json(state, io::model_digest(other)), SolverError);
+  // Past the digest, the solver itself refuses a state whose numbers do not fit the model.
+  const RestartState loaded = io::state_from_json(state, "");
+  EXPECT_THROW(solve(testing::example_model("report-problem1.json"), nullptr, &loaded), SolverError);
+}
+
+}  // namespace
+}  // namespace saasgaps
