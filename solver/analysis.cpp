@@ -67,13 +67,13 @@ class GapContactAnalysis {
         system_(model, dofs_),
         u_free_(static_cast<std::size_t>(dofs_.size()), 0.0) {
     if (gap_settings_) gaps_.emplace(*gap_settings_);
-    schedule_changed_ = options.tensile_schedule.has_value();
+    schedule_changed_ = options.tensile_schedule.has_value() && options.restart_schedule;
   }
 
   Solution run(IterationObserver* observer, const RestartState* resume) {
     RestartState state = resume ? resumed(*resume) : fresh();
-    Evaluation eval;
-    if (state.iteration > 0) eval = evaluate(state);
+    Evaluation& eval = eval_;
+    if (state.iteration > 0) evaluate(state, eval);
 
     for (;;) {
       if (state.iteration > 0 && eval.converged) return finish(state, eval, RunStatus::converged);
@@ -86,9 +86,15 @@ class GapContactAnalysis {
       // Section II (a)-(d): this iteration's gap moduli; strain invariance: its solid moduli.
       const bool first = state.iteration == 0;
       GapModuli moduli = gaps_ ? (first ? gaps_->initial() : gaps_->next(state.gaps)) : GapModuli{};
-      MaterialState solid = first ? materials_.initial() : eval.materials.next;
+      // The state's material buffers take the next iteration's values; the evaluation keeps the old
+      // ones to overwrite. No per-element allocation from one iteration to the next.
+      if (first) {
+        state.materials = materials_.initial();
+      } else {
+        std::swap(state.materials, eval.materials.next);
+      }
 
-      solve_linear_system(solid, moduli);
+      solve_linear_system(state.materials, moduli);
 
       // The snapshot after this iteration: its moduli, its displacements, the previous strains.
       GapHistory history;
@@ -99,11 +105,10 @@ class GapContactAnalysis {
       }
       history.used = std::move(moduli);
       state.gaps = std::move(history);
-      state.materials = std::move(solid);
       state.iteration += 1;
       store_displacements(state.displacement);
 
-      eval = evaluate(state);
+      evaluate(state, eval);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
       state.history.push_back(record(state, eval, seconds));
       if (observer != nullptr) observer->on_iteration(state.history.back(), state);
@@ -196,15 +201,14 @@ class GapContactAnalysis {
 
   /// Recovers stresses and gap strains of iteration K and tests convergence. The same code runs
   /// after a solve and after a resume, which is what makes a restart exact.
-  Evaluation evaluate(RestartState& state) const {
-    Evaluation v;
+  void evaluate(RestartState& state, Evaluation& v) const {
     v.solids.resize(model_.elements.size());
     for (std::size_t e = 0; e < model_.elements.size(); ++e) {
       const Element& el = model_.elements[e];
       const ElementData data = solid_element_data(model_, e, materials_.law(e, state.materials));
       v.solids[e] = element_state(data, element_displacements(state.displacement, el.nodes, el.node_count));
     }
-    v.materials = materials_.update(state.materials, v.solids, model_.solver.plastic_tolerance);
+    materials_.update(state.materials, v.solids, model_.solver.plastic_tolerance, v.materials);
     bool converged = v.materials.nonconverged_count == 0 && v.materials.bimodulus_changes == 0;
 
     if (gaps_) {
@@ -218,7 +222,7 @@ class GapContactAnalysis {
         v.gap_strain[g] = normal_component(v.gaps[g].strain, elements[g].angle_deg, 1.0);
       }
       if (state.gaps.strain.empty()) {
-        state.gaps.strain = v.gap_strain;
+        state.gaps.strain = v.gap_strain;  // O(gaps), not O(elements)
       } else if (state.gaps.strain != v.gap_strain) {
         throw SolverError("the restart state does not belong to this model (its gap strains differ)");
       }
@@ -226,7 +230,6 @@ class GapContactAnalysis {
       converged = converged && v.gap_verdict.all_converged();
     }
     v.converged = converged;
-    return v;
   }
 
   IterationRecord record(const RestartState& state, const Evaluation& v, double seconds) const {
@@ -342,6 +345,7 @@ class GapContactAnalysis {
   SolidMaterials materials_;
   StiffnessSystem system_;
   std::unique_ptr<SparseCholesky> cholesky_;  // symbolic analysis once, at the first solve
+  Evaluation eval_;                           // per-element buffers, reused every iteration
   MaterialState assembled_materials_;
   bool assembled_solids_ = false;
   std::vector<double> u_free_;

@@ -23,6 +23,9 @@ struct ResumeOptions {
   std::optional<std::vector<double>> tensile_schedule;
   std::optional<int> max_iterations;
   std::optional<double> extrapolation_factor;
+  /// Start a new tensile_schedule from its first value at the next iteration (the READ card). A
+  /// caller that re-applies a schedule an earlier resume already began (after a crash) sets false.
+  bool restart_schedule = true;
 };
 
 /// Runs a model from the start, or from `resume` when given. Throws SingularModelError for a

@@ -49,14 +49,16 @@ Constitutive SolidMaterials::law(std::size_t e, const MaterialState& s) const {
   return constitutive(c, model_.analysis, model_.elements[e].angle_deg);
 }
 
-MaterialUpdate SolidMaterials::update(const MaterialState& used, std::span<const ElementState> states,
-                                      double tolerance) const {
+void SolidMaterials::update(const MaterialState& used, std::span<const ElementState> states, double tolerance,
+                            MaterialUpdate& u) const {
   const std::size_t n = model_.elements.size();
   assert(states.size() == n);
-  MaterialUpdate u;
   u.next = used;
   u.yielded.assign(n, false);
   u.converged.assign(n, true);
+  u.yielded_count = 0;
+  u.nonconverged_count = 0;
+  u.bimodulus_changes = 0;
   for (std::size_t e = 0; e < n; ++e) {
     const Element& el = model_.elements[e];
     const Material& m = model_.materials[el.material];
@@ -95,7 +97,6 @@ MaterialUpdate SolidMaterials::update(const MaterialState& used, std::span<const
     if (u.yielded[e]) ++u.yielded_count;
     if (!u.converged[e]) ++u.nonconverged_count;
   }
-  return u;
 }
 
 }  // namespace saasgaps

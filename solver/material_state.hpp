@@ -43,9 +43,10 @@ class SolidMaterials {
 
   /// Strain invariance: from the element stresses of a solution built with `used`, read the secant
   /// modulus off the bilinear curve at the same effective strain, and the bimodulus choice from
-  /// the stress signs. tolerance: relative change of E_s that still counts as converged.
-  [[nodiscard]] MaterialUpdate update(const MaterialState& used, std::span<const ElementState> states,
-                                      double tolerance) const;
+  /// the stress signs. tolerance: relative change of E_s that still counts as converged. Writes into
+  /// `out`, whose buffers are reused from one iteration to the next.
+  void update(const MaterialState& used, std::span<const ElementState> states, double tolerance,
+              MaterialUpdate& out) const;
 
   /// True when some material is plastic or bimodulus (the iteration can change stiffness).
   [[nodiscard]] bool nonlinear() const { return nonlinear_; }

@@ -9,7 +9,7 @@ namespace saasgaps::cli {
 std::string read_file(const std::string& path);
 
 /// Writes to a temporary file next to path and renames it over path, so a reader (or a crash)
-/// never sees half a file.
+/// never sees half a file. Devices and pipes (/dev/null, /dev/stdout) are written in place.
 void write_file_atomically(const std::string& path, const std::string& content);
 
 }  // namespace saasgaps::cli

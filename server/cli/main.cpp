@@ -8,7 +8,7 @@
 
 #include "errors.hpp"
 #include "cli/solve_command.hpp"
-#include "cli/thread_environment.hpp"
+#include "thread_environment.hpp"
 #include "cli/validate_command.hpp"
 
 namespace {
@@ -24,7 +24,7 @@ int report_model_error(const saasgaps::ModelError& e) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  saasgaps::cli::ensure_thread_environment(argc, argv);
+  saasgaps::ensure_thread_environment(argv);
 
   CLI::App app{"SAASGAPS: thermal stress analysis of plane and axisymmetric bodies in contact across gaps"};
   app.require_subcommand(1);

@@ -1069,33 +1069,51 @@ std::vector<int> Reader::read_watch_list(const Obj& output, std::string_view key
 }
 
 // ------------------------------------------------------------------------------------------------
-// Text: the parser forgets where it was and keeps only the last of repeated keys, so a callback
-// tracks the path of the value being parsed.
+// Text: the parser forgets where it was and keeps only the last of repeated keys, so a first pass
+// over the text with a SAX handler tracks the path of each value. (A parse callback would do the
+// same in one pass, but nlohmann 3.11.2's callback parser rescans the enclosing array at every
+// object end: quadratic in the number of nodes.)
 
-class PathTracker {
+class PathTracker : public json::json_sax_t {
  public:
-  bool on_event(json::parse_event_t event, const json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start: frames_.push_back(Frame{true, {}, 0, {}}); break;
-      case json::parse_event_t::array_start: frames_.push_back(Frame{false, {}, 0, {}}); break;
-      case json::parse_event_t::key: {
-        Frame& top = frames_.back();
-        top.key = parsed.get<std::string>();
-        if (!top.keys.insert(top.key).second) {
-          repeated_.push_back(InputIssue{pointer(), "key " + quote_string(top.key) +
-                                                        " appears more than once in this object; a JSON reader keeps "
-                                                        "only one of the values, so give each key once"});
-        }
-        break;
-      }
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        frames_.pop_back();
-        next_item();
-        break;
-      case json::parse_event_t::value: next_item(); break;
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(json::number_integer_t) override { return value(); }
+  bool number_unsigned(json::number_unsigned_t) override { return value(); }
+  bool number_float(json::number_float_t, const json::string_t&) override { return value(); }
+  bool string(json::string_t&) override { return value(); }
+  bool binary(json::binary_t&) override { return value(); }
+  bool start_object(std::size_t) override {
+    frames_.push_back(Frame{true, {}, 0, {}});
+    return true;
+  }
+  bool key(json::string_t& name) override {
+    Frame& top = frames_.back();
+    top.key = name;
+    if (!top.keys.insert(top.key).second) {
+      repeated_.push_back(InputIssue{pointer(), "key " + quote_string(top.key) +
+                                                    " appears more than once in this object; a JSON reader keeps "
+                                                    "only one of the values, so give each key once"});
     }
-    return true;  // keep every value
+    return true;
+  }
+  bool end_object() override { return end_container(); }
+  bool start_array(std::size_t) override {
+    frames_.push_back(Frame{false, {}, 0, {}});
+    return true;
+  }
+  bool end_array() override { return end_container(); }
+  bool parse_error(std::size_t byte, const std::string&, const nlohmann::detail::exception& e) override {
+    // A number beyond the range of a double (out_of_range.406, e.g. 1e400) stops the parser inside
+    // the value the tracker is at; anything else is text that is not JSON.
+    if (e.id == 406) {
+      error_ = InputIssue{pointer(), without_exception_tag(e.what()) +
+                                         "; numbers must be finite and within the range of a double"};
+    } else {
+      error_ = InputIssue{"", "the document is not valid JSON: " + without_exception_tag(e.what()) + " (byte " +
+                                  std::to_string(byte) + ")"};
+    }
+    return false;
   }
 
   /// The pointer of the value being parsed now.
@@ -1106,6 +1124,7 @@ class PathTracker {
   }
 
   std::vector<InputIssue>& repeated_keys() { return repeated_; }
+  [[nodiscard]] const std::optional<InputIssue>& error() const { return error_; }
 
  private:
   struct Frame {
@@ -1115,42 +1134,41 @@ class PathTracker {
     std::unordered_set<std::string> keys;
   };
 
+  /// nlohmann's what() starts with "[json.exception.parse_error.101] "; the user needs the rest.
+  static std::string without_exception_tag(const char* what) {
+    std::string text = what;
+    if (const auto end = text.find("] "); text.starts_with("[json.exception.") && end != std::string::npos) {
+      text.erase(0, end + 2);
+    }
+    return text;
+  }
+
+  bool value() {
+    next_item();
+    return true;
+  }
+  bool end_container() {
+    frames_.pop_back();
+    next_item();
+    return true;
+  }
   void next_item() {
     if (!frames_.empty() && !frames_.back().is_object) ++frames_.back().index;
   }
 
   std::vector<Frame> frames_;
   std::vector<InputIssue> repeated_;
+  std::optional<InputIssue> error_;
 };
-
-/// nlohmann's what() starts with "[json.exception.parse_error.101] "; the user needs the rest.
-std::string without_exception_tag(const char* what) {
-  std::string text = what;
-  if (const auto end = text.find("] "); text.starts_with("[json.exception.") && end != std::string::npos) {
-    text.erase(0, end + 2);
-  }
-  return text;
-}
 
 /// Parses text, tracking the path so that repeated keys (returned) and number overflows (thrown)
 /// name their pointer. Text that is not JSON throws one issue at "".
 json parse_text(std::string_view text, std::vector<InputIssue>& repeated_keys) {
   PathTracker tracker;
-  json document;
-  try {
-    document = json::parse(text.begin(), text.end(),
-                           [&](int, json::parse_event_t event, json& parsed) { return tracker.on_event(event, parsed); });
-  } catch (const json::parse_error& e) {
-    throw ModelError({InputIssue{"", "the document is not valid JSON: " + without_exception_tag(e.what()) +
-                                         " (byte " + std::to_string(e.byte) + ")"}});
-  } catch (const json::exception& e) {
-    // A number beyond the range of a double (out_of_range.406, e.g. 1e400) stops the parser inside
-    // the value the tracker is at.
-    throw ModelError({InputIssue{tracker.pointer(), without_exception_tag(e.what()) +
-                                                        "; numbers must be finite and within the range of a double"}});
-  }
+  json::sax_parse(text.begin(), text.end(), &tracker);
+  if (tracker.error()) throw ModelError({*tracker.error()});
   repeated_keys = std::move(tracker.repeated_keys());
-  return document;
+  return json::parse(text.begin(), text.end());
 }
 
 }  // namespace
