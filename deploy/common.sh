@@ -11,10 +11,10 @@ SAASGAPS_BUILD="${SAASGAPS_BUILD:-$SAASGAPS_ROOT/build}"
 BUILD_PACKAGES=(
   build-essential cmake pkg-config
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread
-  libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev libcli11-dev
+  libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev libcli11-dev libcairo2-dev
 )
 # What the tests need on top.
-TEST_PACKAGES=(googletest libgtest-dev python3 python3-jsonschema)
+TEST_PACKAGES=(googletest libgtest-dev python3 python3-jsonschema python3-pil python3-meshio)
 
 # install_packages PKG...: apt-get installs the ones dpkg does not report as installed.
 install_packages() {

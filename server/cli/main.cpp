@@ -1,5 +1,5 @@
 /// saasgaps: thermal stress analysis of plane and axisymmetric bodies in contact across gaps.
-/// Subcommands: solve, validate (and serve, plot). Exit codes (service.md): 0 converged or valid,
+/// Subcommands: solve, validate, serve, plot, export-vtu. Exit codes (service.md): 0 converged or valid,
 /// 3 not converged, 2 bad model, 1 any other failure. Exceptions become exit codes here only.
 
 #include <CLI/CLI.hpp>
@@ -7,6 +7,8 @@
 #include <iostream>
 
 #include "errors.hpp"
+#include "cli/export_vtu_command.hpp"
+#include "cli/plot_command.hpp"
 #include "cli/solve_command.hpp"
 #include "thread_environment.hpp"
 #include "cli/validate_command.hpp"
@@ -47,16 +49,43 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--stop-after", solve.stop_after, "Stop after this many iterations, keeping the state")
       ->check(CLI::PositiveNumber);
   solve_cmd->add_flag("-q,--quiet", solve.quiet, "No progress table");
+  solve_cmd->add_option("--vtu", solve.vtu_path, "Also write the result as a VTK unstructured grid (.vtu)");
 
   std::string validate_path;
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check a model and print every error with its JSON Pointer");
   validate_cmd->add_option("model", validate_path, "Model document (JSON)")->required();
+
+  saasgaps::cli::PlotOptions plot;
+  CLI::App* plot_cmd = app.add_subcommand("plot", "Draw a contour, closure or convergence plot of a result (PNG or SVG)");
+  plot_cmd->add_option("result", plot.result_path, "Result document (JSON) written by solve")->required();
+  plot_cmd->add_option("-o,--output", plot.output_path, "Image file; the format follows the extension: .png or .svg")
+      ->required();
+  plot_cmd->add_option("--field", plot.field, "A field to contour, or closure, or convergence")->capture_default_str();
+  plot_cmd->add_option("--deformed", plot.deformed, "Draw the deformed mesh, displacements times SCALE (or 'auto')");
+  plot_cmd->add_flag("--mesh", plot.mesh, "Draw the element edges");
+  plot_cmd->add_option("--width", plot.width, "Image width, px")->check(CLI::Range(16, 8000))->capture_default_str();
+  plot_cmd->add_option("--height", plot.height, "Image height, px")->check(CLI::Range(16, 8000))->capture_default_str();
+  plot_cmd->add_option("--bands", plot.bands, "At most this many colour bands")->check(CLI::Range(2, 40))
+      ->capture_default_str();
+  plot_cmd->add_option("--colormap", plot.color_map, "rainbow or viridis")
+      ->check(CLI::IsMember({"rainbow", "viridis"}))
+      ->capture_default_str();
+  plot_cmd->add_option("--along", plot.along, "Closure plot x axis: gap index or position along the gaps")
+      ->check(CLI::IsMember({"index", "position"}))
+      ->capture_default_str();
+
+  saasgaps::cli::ExportVtuOptions vtu;
+  CLI::App* vtu_cmd = app.add_subcommand("export-vtu", "Write a result as a VTK unstructured grid (.vtu) for ParaView");
+  vtu_cmd->add_option("result", vtu.result_path, "Result document (JSON) written by solve")->required();
+  vtu_cmd->add_option("-o,--output", vtu.output_path, "VTU file")->required();
 
   CLI11_PARSE(app, argc, argv);
 
   try {
     if (solve_cmd->parsed()) return saasgaps::cli::run_solve(solve);
     if (validate_cmd->parsed()) return saasgaps::cli::run_validate(validate_path);
+    if (plot_cmd->parsed()) return saasgaps::cli::run_plot(plot);
+    if (vtu_cmd->parsed()) return saasgaps::cli::run_export_vtu(vtu);
   } catch (const saasgaps::ModelError& e) {
     return report_model_error(e);
   } catch (const saasgaps::SingularModelError& e) {

@@ -9,6 +9,7 @@
 #include "cli/progress_table.hpp"
 #include "io/result_writer.hpp"
 #include "io/state_codec.hpp"
+#include "io/vtu_writer.hpp"
 
 namespace saasgaps::cli {
 
@@ -69,16 +70,22 @@ int run_solve(const SolveOptions& options) {
   changes.extrapolation_factor = options.extrapolation_factor;
 
   CommandLineObserver observer(options, digest);
+  nlohmann::json result;
+  int exit_code = 0;
   try {
     const Solution solution = solve(model, &observer, resume ? &*resume : nullptr, changes);
     std::cerr << solution.message << '\n';
-    write_result(options, io::result_document(model, solution));
-    return solution.status == RunStatus::converged ? 0 : 3;
+    result = io::result_document(model, solution);
+    write_result(options, result);
+    exit_code = solution.status == RunStatus::converged ? 0 : 3;
   } catch (const std::exception& e) {
     // The failure is reported by main(); the result document records it too.
     if (!options.result_path.empty()) write_result(options, io::failed_result_document(e.what()));
     throw;
   }
+  // Outside the try: a VTU that cannot be written must not turn a good result into a failed one.
+  if (!options.vtu_path.empty()) write_file_atomically(options.vtu_path, io::result_to_vtu(result));
+  return exit_code;
 }
 
 }  // namespace saasgaps::cli

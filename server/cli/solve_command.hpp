@@ -18,6 +18,7 @@ struct SolveOptions {
   std::optional<double> extrapolation_factor;
   std::optional<int> stop_after;  ///< stop at the boundary after this iteration
   bool quiet = false;
+  std::string vtu_path;  ///< also write the result as a VTU file (io/vtu_writer.hpp)
 };
 
 /// Exit code: 0 converged, 3 not converged (or stopped). Throws for bad input and failures; main()

@@ -1,0 +1,17 @@
+#pragma once
+/// `saasgaps export-vtu RESULT.json -o FILE.vtu`: the result as a VTK unstructured grid for ParaView
+/// (see io/vtu_writer.hpp for what it holds).
+
+#include <string>
+
+namespace saasgaps::cli {
+
+struct ExportVtuOptions {
+  std::string result_path;
+  std::string output_path;
+};
+
+/// Exit code 0. Throws for unreadable or unsuitable results; main() maps that to exit 1.
+int run_export_vtu(const ExportVtuOptions& options);
+
+}  // namespace saasgaps::cli

@@ -1,0 +1,28 @@
+#pragma once
+/// Closure of each gap along the gap, one curve per iteration (the report's Figs. 12 and 13): how
+/// the contact spreads or recedes as the gap moduli are corrected. From the history rows'
+/// gap_closures (closure % of every gap, in the order of the document's "gaps").
+
+#include <nlohmann/json.hpp>
+
+#include "plot/canvas.hpp"
+
+namespace saasgaps::plot {
+
+enum class ClosureAxis {
+  gap_index,  ///< x = 1, 2, .. in model order, ticks labelled with gap ids
+  position,   ///< x = distance along the chain of gap centroids (undeformed), from the first gap
+};
+
+struct ClosureOptions {
+  ClosureAxis along = ClosureAxis::gap_index;
+  /// At most this many curves: with more iterations, the first, the last and evenly spaced ones
+  /// between are drawn (the subtitle says so), since 40 curves cannot be told apart.
+  int max_curves = 12;
+};
+
+/// Draws the closure plot over the whole canvas. Throws std::invalid_argument when the result has
+/// no gaps.
+void draw_closure_plot(const Canvas& canvas, const nlohmann::json& result, const ClosureOptions& options = {});
+
+}  // namespace saasgaps::plot

@@ -1,0 +1,54 @@
+#include "plot/contour_bands.hpp"
+
+#include <cmath>
+
+namespace saasgaps::plot {
+
+namespace {
+
+/// Sutherland-Hodgman against the half plane where inside(v) holds, the boundary at v = level.
+template <typename Inside>
+ValuePolygon clip(const ValuePolygon& polygon, double level, Inside inside) {
+  ValuePolygon out;
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const ValuePoint& p = polygon[i];
+    const ValuePoint& q = polygon[(i + 1) % n];
+    const bool p_in = inside(p.v);
+    const bool q_in = inside(q.v);
+    if (p_in) out.push_back(p);
+    if (p_in != q_in) {
+      // v changes sign relative to level along p-q, so v_q != v_p.
+      const double t = (level - p.v) / (q.v - p.v);
+      out.push_back({p.x + t * (q.x - p.x), p.y + t * (q.y - p.y), level});
+    }
+  }
+  return out.size() >= 3 ? out : ValuePolygon{};
+}
+
+}  // namespace
+
+ValuePolygon clip_at_least(const ValuePolygon& polygon, double level) {
+  return clip(polygon, level, [level](double v) { return v >= level; });
+}
+
+ValuePolygon clip_at_most(const ValuePolygon& polygon, double level) {
+  return clip(polygon, level, [level](double v) { return v <= level; });
+}
+
+ValuePolygon band(const ValuePolygon& polygon, double lo, double hi) {
+  return clip_at_most(clip_at_least(polygon, lo), hi);
+}
+
+std::vector<ValuePolygon> triangulate(std::span<const ValuePoint> c) {
+  if (c.size() == 3) return {ValuePolygon{c[0], c[1], c[2]}};
+  const auto length2 = [](const ValuePoint& p, const ValuePoint& q) {
+    return (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y);
+  };
+  if (length2(c[0], c[2]) <= length2(c[1], c[3])) {
+    return {ValuePolygon{c[0], c[1], c[2]}, ValuePolygon{c[0], c[2], c[3]}};
+  }
+  return {ValuePolygon{c[0], c[1], c[3]}, ValuePolygon{c[1], c[2], c[3]}};
+}
+
+}  // namespace saasgaps::plot

@@ -1,0 +1,37 @@
+#pragma once
+/// Filled contour plot of a field over the mesh (the report's Figs. 9-11 and 16-18): colour bands
+/// between round level values on the undeformed or the deformed mesh, the gap elements marked by
+/// state (closed, overclosed, partial, open), a colour bar with the levels, and the extreme element
+/// values with their element ids.
+
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "plot/canvas.hpp"
+#include "plot/result_mesh.hpp"
+
+namespace saasgaps::plot {
+
+struct ContourOptions {
+  std::string field = "effective";
+  /// Magnification s of the displacements: nodes drawn at (r + s u_r, z + s u_z), s > 0. None:
+  /// the undeformed mesh.
+  std::optional<double> deformation_scale;
+  /// Deformed, with automatic_deformation_scale() (overrides deformation_scale).
+  bool automatic_deformation = false;
+  bool mesh = false;  ///< draw the element edges
+  int max_bands = 12;
+  std::string color_map = "rainbow";
+};
+
+/// Draws the contour plot over the whole canvas. Unknown field or colour map, a gap field, or a
+/// result without a mesh: std::invalid_argument.
+void draw_contour_plot(const Canvas& canvas, const nlohmann::json& result, const ContourOptions& options);
+
+/// A round magnification (1, 2 or 5 times a power of ten) that draws the largest displacement at
+/// about 8 % of the model's larger extent; 1 when nothing moves.
+double automatic_deformation_scale(const ResultMesh& mesh);
+
+}  // namespace saasgaps::plot

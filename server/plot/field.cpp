@@ -1,0 +1,124 @@
+#include "plot/field.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace saasgaps::plot {
+
+namespace {
+
+constexpr std::string_view stress_units = "model stress units, e.g. psi";
+constexpr std::string_view strain_units = "strain";
+
+}  // namespace
+
+const std::vector<FieldInfo>& fields() {
+  static const std::vector<FieldInfo> all = {
+      {"sigma_r", FieldLocation::element, "sigma_r", "Radial stress \u03c3r", "Stress \u03c3x (along r)", stress_units},
+      {"sigma_z", FieldLocation::element, "sigma_z", "Axial stress \u03c3z", "Stress \u03c3y (along z)", stress_units},
+      {"tau_rz", FieldLocation::element, "tau_rz", "Shear stress \u03c4rz", "Shear stress \u03c4xy", stress_units},
+      {"sigma_theta", FieldLocation::element, "sigma_theta", "Hoop stress \u03c3\u03b8",
+       "Out-of-plane stress \u03c3\u03b8", stress_units},
+      {"sigma_1", FieldLocation::element, "sigma_1", "Maximum principal stress in the plane \u03c31",
+       "Maximum principal stress in the plane \u03c31", stress_units},
+      {"sigma_2", FieldLocation::element, "sigma_2", "Minimum principal stress in the plane \u03c32",
+       "Minimum principal stress in the plane \u03c32", stress_units},
+      {"effective", FieldLocation::element, "effective", "Effective (von Mises) stress",
+       "Effective (von Mises) stress", stress_units},
+      {"eps_r", FieldLocation::element, "eps_r", "Radial strain \u03b5r", "Strain \u03b5x", strain_units},
+      {"eps_z", FieldLocation::element, "eps_z", "Axial strain \u03b5z", "Strain \u03b5y", strain_units},
+      {"gamma_rz", FieldLocation::element, "gamma_rz", "Shear strain \u03b3rz", "Shear strain \u03b3xy", strain_units},
+      {"eps_theta", FieldLocation::element, "eps_theta", "Hoop strain \u03b5\u03b8", "Out-of-plane strain \u03b5\u03b8",
+       strain_units},
+      {"temperature", FieldLocation::node, "T", "Temperature", "Temperature", "model units, e.g. \u00b0F"},
+      {"displacement", FieldLocation::node, "", "Displacement magnitude |u|", "Displacement magnitude |u|",
+       "model length units, e.g. in"},
+      {"u_r", FieldLocation::node, "u_r", "Radial displacement ur", "Displacement ux", "model length units, e.g. in"},
+      {"u_z", FieldLocation::node, "u_z", "Axial displacement uz", "Displacement uy", "model length units, e.g. in"},
+      {"closure", FieldLocation::gap, "closure", "Gap closure", "Gap closure", "% of the gap width; 100 = contact"},
+  };
+  return all;
+}
+
+std::string field_names() {
+  std::string names;
+  for (const FieldInfo& f : fields()) names += (names.empty() ? "" : ", ") + std::string(f.name);
+  return names;
+}
+
+const FieldInfo& find_field(std::string_view name) {
+  for (const FieldInfo& f : fields()) {
+    if (f.name == name) return f;
+  }
+  throw std::invalid_argument("unknown field '" + std::string(name) + "'; fields: " + field_names());
+}
+
+std::string_view field_label(const FieldInfo& field, const ResultMesh& mesh) {
+  return mesh.plane() ? field.plane_label : field.axisymmetric_label;
+}
+
+std::vector<double> element_values(const nlohmann::json& result, const FieldInfo& field) {
+  if (field.location != FieldLocation::element) {
+    throw std::invalid_argument("'" + std::string(field.name) + "' is not an element field");
+  }
+  std::vector<double> values;
+  const std::string key(field.key);
+  for (const nlohmann::json& e : result.at("elements")) {
+    if (!e.contains(key)) {
+      throw std::invalid_argument("element " + e.value("id", nlohmann::json()).dump() + " has no '" + key + "'");
+    }
+    values.push_back(e.at(key).get<double>());
+  }
+  return values;
+}
+
+std::vector<double> gap_values(const ResultMesh& mesh, const FieldInfo& field) {
+  if (field.location != FieldLocation::gap) {
+    throw std::invalid_argument("'" + std::string(field.name) + "' is not a gap field");
+  }
+  std::vector<double> values;
+  for (const GapElement& g : mesh.gaps) values.push_back(g.closure);
+  return values;
+}
+
+std::vector<double> average_to_nodes(const ResultMesh& mesh, const std::vector<double>& per_element) {
+  std::vector<double> weighted(mesh.nodes.size(), 0.0);
+  std::vector<double> weight(mesh.nodes.size(), 0.0);
+  for (std::size_t e = 0; e < mesh.solids.size(); ++e) {
+    const double a = mesh.area(mesh.solids[e]);
+    for (const int n : mesh.solids[e].nodes) {
+      weighted[n] += a * per_element[e];
+      weight[n] += a;
+    }
+  }
+  std::vector<double> values(mesh.nodes.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t n = 0; n < values.size(); ++n) {
+    if (weight[n] > 0.0) values[n] = weighted[n] / weight[n];
+  }
+  return values;
+}
+
+std::vector<double> nodal_values(const nlohmann::json& result, const ResultMesh& mesh, const FieldInfo& field) {
+  switch (field.location) {
+    case FieldLocation::element:
+      return average_to_nodes(mesh, element_values(result, field));
+    case FieldLocation::node: {
+      const auto value = [&field](const MeshNode& n) {
+        if (field.name == "temperature") return n.temperature;
+        if (field.name == "u_r") return n.u_r;
+        if (field.name == "u_z") return n.u_z;
+        return std::hypot(n.u_r, n.u_z);  // displacement
+      };
+      std::vector<double> values;
+      for (const MeshNode& n : mesh.nodes) values.push_back(value(n));
+      return values;
+    }
+    case FieldLocation::gap:
+      break;
+  }
+  throw std::invalid_argument("'" + std::string(field.name) +
+                              "' is a gap field, without values at the nodes: use the closure plot");
+}
+
+}  // namespace saasgaps::plot

@@ -1,0 +1,109 @@
+#include "plot/result_mesh.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace saasgaps::plot {
+
+using nlohmann::json;
+
+std::string_view to_string(GapState state) {
+  switch (state) {
+    case GapState::open: return "open";
+    case GapState::partial: return "partial";
+    case GapState::closed: return "closed";
+    case GapState::overclosed: return "overclosed";
+  }
+  return "?";
+}
+
+namespace {
+
+GapState gap_state(const std::string& name) {
+  for (const GapState s : all_gap_states) {
+    if (name == to_string(s)) return s;
+  }
+  throw std::invalid_argument("unknown gap state '" + name + "'");
+}
+
+std::vector<int> node_indices(const json& ids, const std::unordered_map<int, int>& index, const char* what, int id) {
+  std::vector<int> nodes;
+  for (const json& n : ids) {
+    const auto found = index.find(n.get<int>());
+    if (found == index.end()) {
+      throw std::invalid_argument(std::string(what) + " " + std::to_string(id) + " refers to node " +
+                                  std::to_string(n.get<int>()) + ", which is not in the result's nodes");
+    }
+    nodes.push_back(found->second);
+  }
+  if (nodes.size() != 3 && nodes.size() != 4) {
+    throw std::invalid_argument(std::string(what) + " " + std::to_string(id) + " has " +
+                                std::to_string(nodes.size()) + " nodes; 3 or 4 expected");
+  }
+  return nodes;
+}
+
+}  // namespace
+
+const json& array_member(const json& document, const char* key) {
+  static const json empty = json::array();
+  const auto found = document.find(key);
+  return found != document.end() && found->is_array() ? *found : empty;
+}
+
+ResultMesh ResultMesh::from_result(const json& result) {
+  if (!result.is_object()) throw std::invalid_argument("the result document is not a JSON object");
+  const std::string status = result.value("status", "");
+  if (status == "failed") {
+    throw std::invalid_argument("the run failed, so the result has no mesh to plot: " + result.value("message", ""));
+  }
+  try {
+    ResultMesh mesh;
+    mesh.title = result.value("title", "");
+    mesh.analysis = result.value("analysis", "plane_stress");
+    mesh.status = status;
+    mesh.iterations = result.value("iterations", 0);
+    if (!result.contains("nodes") || result.at("nodes").empty() || !result.at("nodes").at(0).contains("r")) {
+      throw std::invalid_argument("the result document has no node coordinates (nodes[].r, .z): it predates "
+                                  "self-contained results; solve the model again");
+    }
+    std::unordered_map<int, int> index;
+    for (const json& n : result.at("nodes")) {
+      MeshNode node{n.at("id").get<int>(), n.at("r").get<double>(), n.at("z").get<double>(),
+                    n.value("T", 0.0),     n.at("u_r").get<double>(), n.at("u_z").get<double>()};
+      index.emplace(node.id, static_cast<int>(mesh.nodes.size()));
+      mesh.nodes.push_back(node);
+    }
+    for (const json& e : result.at("elements")) {
+      const int id = e.at("id").get<int>();
+      mesh.solids.push_back({id, e.value("material", 0), node_indices(e.at("nodes"), index, "element", id)});
+    }
+    for (const json& g : array_member(result, "gaps")) {
+      const int id = g.at("id").get<int>();
+      mesh.gaps.push_back({id, node_indices(g.at("nodes"), index, "gap element", id), g.value("angle", 0.0),
+                           g.at("closure").get<double>(), gap_state(g.at("state").get<std::string>()),
+                           g.value("converged", true)});
+    }
+    return mesh;
+  } catch (const json::exception& e) {
+    throw std::invalid_argument(std::string("malformed result document: ") + e.what());
+  }
+}
+
+double ResultMesh::area(const SolidElement& e) const {
+  double twice = 0.0;
+  for (std::size_t a = 0; a < e.nodes.size(); ++a) {
+    const MeshNode& p = nodes[e.nodes[a]];
+    const MeshNode& q = nodes[e.nodes[(a + 1) % e.nodes.size()]];
+    twice += p.r * q.z - q.r * p.z;
+  }
+  return std::abs(twice) / 2.0;
+}
+
+std::array<double, 2> ResultMesh::position(int node, double scale) const {
+  const MeshNode& n = nodes[node];
+  return {n.r + scale * n.u_r, n.z + scale * n.u_z};
+}
+
+}  // namespace saasgaps::plot

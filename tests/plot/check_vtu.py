@@ -1,0 +1,98 @@
+#!/usr/bin/python3
+"""The VTU export read back with meshio (python3-meshio), as ParaView users would get it.
+
+    /usr/bin/python3 tests/plot/check_vtu.py --saasgaps build/saasgaps --examples schemas/examples
+
+Solves report problem 3 case 1 with `saasgaps solve --vtu` and exports the result again with
+`saasgaps export-vtu`, then checks: both files are identical; point and cell counts equal the
+model's nodes and elements + gap elements; solid cells come first, then the gaps, with is_gap and
+element_id to match; and values read back exactly equal the result document's (a node's
+displacement and temperature, every element's sigma_r and effective stress, every gap's closure
+and state code, the coordinates).
+"""
+
+import argparse
+import json
+import pathlib
+import subprocess
+import sys
+import tempfile
+
+import meshio
+import numpy
+
+STATE_CODES = {"open": 0, "partial": 1, "closed": 2, "overclosed": 3}
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAIL:", message)
+
+
+def run(saasgaps, *args):
+    done = subprocess.run([saasgaps, *args], capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit(f"saasgaps {' '.join(args)} failed ({done.returncode}): {done.stderr}")
+
+
+def cell_array(mesh, name):
+    return numpy.concatenate(mesh.cell_data[name])
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--saasgaps", required=True)
+    parser.add_argument("--examples", required=True, type=pathlib.Path)
+    args = parser.parse_args()
+    model_path = args.examples / "report-problem3-case1.json"
+    model = json.loads(model_path.read_text())
+    with tempfile.TemporaryDirectory(prefix="saasgaps-vtu-") as tmp:
+        out = pathlib.Path(tmp)
+        run(args.saasgaps, "solve", str(model_path), "-q", "-o", str(out / "result.json"), "--vtu", str(out / "solve.vtu"))
+        run(args.saasgaps, "export-vtu", str(out / "result.json"), "-o", str(out / "export.vtu"))
+        check((out / "solve.vtu").read_bytes() == (out / "export.vtu").read_bytes(),
+              "solve --vtu and export-vtu wrote different files")
+        result = json.loads((out / "result.json").read_text())
+        mesh = meshio.read(out / "export.vtu")
+
+    n_elements, n_gaps = len(model["elements"]), len(model["gaps"]["elements"])
+    check(len(mesh.points) == len(model["nodes"]), f"{len(mesh.points)} points for {len(model['nodes'])} nodes")
+    n_cells = sum(len(block.data) for block in mesh.cells)
+    check(n_cells == n_elements + n_gaps, f"{n_cells} cells for {n_elements} elements + {n_gaps} gaps")
+
+    # Coordinates and point data, node by node (points are in the document's node order).
+    node_ids = mesh.point_data["node_id"]
+    for i, node in enumerate(result["nodes"]):
+        check(node_ids[i] == node["id"], f"point {i} is node {node_ids[i]}, expected {node['id']}")
+        check(tuple(mesh.points[i]) == (node["r"], node["z"], 0.0), f"node {node['id']}: coordinates")
+        check(tuple(mesh.point_data["displacement"][i]) == (node["u_r"], node["u_z"], 0.0),
+              f"node {node['id']}: displacement {mesh.point_data['displacement'][i]} vs {node['u_r']}, {node['u_z']}")
+        check(mesh.point_data["temperature"][i] == node["T"], f"node {node['id']}: temperature")
+    centre = result["nodes"][0]
+    print(f"node {centre['id']}: u_z = {mesh.point_data['displacement'][0][1]!r} (result {centre['u_z']!r})")
+
+    ids, is_gap = cell_array(mesh, "element_id"), cell_array(mesh, "is_gap")
+    sigma_r, effective = cell_array(mesh, "sigma_r"), cell_array(mesh, "effective")
+    closure, state = cell_array(mesh, "gap_closure"), cell_array(mesh, "gap_state")
+    for i, element in enumerate(result["elements"]):
+        check(ids[i] == element["id"] and is_gap[i] == 0, f"cell {i} should be element {element['id']}")
+        check(sigma_r[i] == element["sigma_r"], f"element {element['id']}: sigma_r {sigma_r[i]!r} vs {element['sigma_r']!r}")
+        check(effective[i] == element["effective"], f"element {element['id']}: effective")
+        check(state[i] == -1, f"element {element['id']}: gap_state {state[i]} on a solid")
+    for k, gap in enumerate(result["gaps"]):
+        i = n_elements + k
+        check(ids[i] == gap["id"] and is_gap[i] == 1, f"cell {i} should be gap {gap['id']}")
+        check(closure[i] == gap["closure"], f"gap {gap['id']}: closure {closure[i]!r} vs {gap['closure']!r}")
+        check(state[i] == STATE_CODES[gap["state"]], f"gap {gap['id']}: state code {state[i]} for {gap['state']}")
+    element62 = next(i for i, e in enumerate(result["elements"]) if e["id"] == 62)
+    print(f"element 62: sigma_r = {sigma_r[element62]!r}; gap 81: closure = {closure[n_elements]!r}")
+
+    if failures:
+        sys.exit(f"{len(failures)} check(s) failed")
+    print("all VTU checks passed")
+
+
+if __name__ == "__main__":
+    main()

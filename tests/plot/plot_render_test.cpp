@@ -1,0 +1,193 @@
+// Plots of real results: report problem 3 case 1 (beam on a foundation, 18 gaps) and the shrink-fit
+// rings (plane strain, 24 gaps between two bodies). The results come from the saasgaps binary, as a
+// user makes them; the plot library draws them without the solver. Also the plot and export-vtu
+// commands' files and errors.
+#include <gtest/gtest.h>
+
+#include <cairo.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "plot/plot_request.hpp"
+
+namespace saasgaps::plot {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+struct Outcome {
+  int exit_code = -1;
+  std::string err;
+};
+
+/// Solves the two example models once for the whole suite.
+class PlotRender : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / ("saasgaps-plot-" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    for (const auto& [name, model] : {std::pair{"p3", "report-problem3-case1.json"},
+                                      std::pair{"ring", "ring-shrink-fit-plane-strain.json"}}) {
+      const Outcome r = run("solve " + std::string(SAASGAPS_EXAMPLES_DIR) + "/" + model + " -q -o " +
+                            path(std::string(name) + ".json"));
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    p3_ = nlohmann::json::parse(read(dir_ / "p3.json"));
+    ring_ = nlohmann::json::parse(read(dir_ / "ring.json"));
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+
+  static std::string path(const std::string& name) { return (dir_ / name).string(); }
+
+  static Outcome run(const std::string& arguments) {
+    const std::string err = path("stderr.txt");
+    const std::string command = std::string(SAASGAPS_BINARY) + " " + arguments + " > " + path("stdout.txt") + " 2> " + err;
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(err)};
+  }
+
+  /// Decodes a PNG with cairo; expects the size and counts the distinct colours.
+  static std::size_t png_colours(const std::string& png, int width, int height) {
+    const fs::path file = dir_ / "decode.png";
+    std::ofstream(file, std::ios::binary) << png;
+    cairo_surface_t* image = cairo_image_surface_create_from_png(file.c_str());
+    EXPECT_EQ(cairo_surface_status(image), CAIRO_STATUS_SUCCESS);
+    EXPECT_EQ(cairo_image_surface_get_width(image), width);
+    EXPECT_EQ(cairo_image_surface_get_height(image), height);
+    std::set<std::uint32_t> colours;
+    const unsigned char* data = cairo_image_surface_get_data(image);
+    const int stride = cairo_image_surface_get_stride(image);
+    for (int y = 0; data && y < height; ++y) {
+      const auto* row = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+      for (int x = 0; x < width; ++x) colours.insert(row[x] & 0xFFFFFFU);
+    }
+    cairo_surface_destroy(image);
+    return colours.size();
+  }
+
+  static std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+  }
+
+  static inline fs::path dir_;
+  static inline nlohmann::json p3_, ring_;
+};
+
+PlotRequest request(const std::string& name, ImageFormat format, int width = 900, int height = 600) {
+  PlotRequest r;
+  r.name = name;
+  r.format = format;
+  r.width = width;
+  r.height = height;
+  return r;
+}
+
+TEST_F(PlotRender, ContourPngsDecodeAtTheirSizeWithManyColours) {
+  PlotRequest effective = request("effective", ImageFormat::png, 1000, 600);
+  effective.contour.deformation_scale = 50.0;
+  effective.contour.mesh = true;
+  EXPECT_GT(png_colours(render_plot(p3_, effective), 1000, 600), 30U);
+
+  PlotRequest hoop = request("sigma_theta", ImageFormat::png, 700, 700);
+  EXPECT_GT(png_colours(render_plot(ring_, hoop), 700, 700), 30U);
+
+  PlotRequest temperature = request("temperature", ImageFormat::png);
+  EXPECT_GT(png_colours(render_plot(ring_, temperature), 900, 600), 30U);
+
+  PlotRequest displacement = request("displacement", ImageFormat::png, 800, 800);
+  displacement.contour.automatic_deformation = true;
+  EXPECT_GT(png_colours(render_plot(ring_, displacement), 800, 800), 30U);
+}
+
+TEST_F(PlotRender, ClosureAndConvergencePngs) {
+  for (const nlohmann::json* result : {&p3_, &ring_}) {
+    EXPECT_GT(png_colours(render_plot(*result, request("closure", ImageFormat::png)), 900, 600), 30U);
+    EXPECT_GT(png_colours(render_plot(*result, request("convergence", ImageFormat::png, 640, 480)), 640, 480), 30U);
+  }
+  PlotRequest along = request("closure", ImageFormat::png);
+  along.closure.along = ClosureAxis::position;
+  EXPECT_GT(png_colours(render_plot(ring_, along), 900, 600), 30U);
+}
+
+TEST_F(PlotRender, SvgDocumentsHoldTheDrawing) {
+  PlotRequest contour = request("effective", ImageFormat::svg);
+  contour.contour.mesh = true;
+  const std::string svg = render_plot(p3_, contour);
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0U);
+  EXPECT_NE(svg.find("width=\"900px\""), std::string::npos);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  // One path per colour level and per gap element, glyph outlines for every label.
+  EXPECT_GT(count(svg, "<path"), p3_["gaps"].size() + 10);
+  EXPECT_GT(count(svg, "<use"), 100U) << "the labels' glyphs";
+  for (const char* name : {"closure", "convergence"}) {
+    const std::string chart = render_plot(ring_, request(name, ImageFormat::svg));
+    EXPECT_NE(chart.find("</svg>"), std::string::npos) << name;
+    EXPECT_GT(count(chart, "<use"), 100U) << name;
+  }
+}
+
+TEST_F(PlotRender, PlotCommandWritesTheFileTheExtensionNames) {
+  Outcome r = run("plot " + path("p3.json") + " --field effective --deformed 50 --mesh --width 640 --height 400 -o " +
+                  path("effective.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(png_colours(read(dir_ / "effective.png"), 640, 400), 30U);
+  r = run("plot " + path("ring.json") + " --field closure -o " + path("closure.svg"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(read(dir_ / "closure.svg").find("<svg"), std::string::npos);
+  r = run("plot " + path("ring.json") + " --field convergence --deformed auto -o " + path("convergence.png"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+TEST_F(PlotRender, UnknownFieldIsAClearErrorListingTheFields) {
+  const Outcome r = run("plot " + path("p3.json") + " --field stress -o " + path("x.png"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("unknown field 'stress'"), std::string::npos) << r.err;
+  for (const char* name : {"sigma_r", "sigma_z", "tau_rz", "sigma_theta", "sigma_1", "sigma_2", "effective",
+                           "temperature", "displacement", "closure", "convergence"}) {
+    EXPECT_NE(r.err.find(name), std::string::npos) << name << " missing from: " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+TEST_F(PlotRender, OtherBadArgumentsFailWithAMessage) {
+  Outcome r = run("plot " + path("p3.json") + " --field effective -o " + path("x.jpg"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find(".png or .svg"), std::string::npos) << r.err;
+  r = run("plot " + path("p3.json") + " --field effective --deformed lots -o " + path("x.png"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--deformed"), std::string::npos) << r.err;
+  r = run("plot " + path("missing.json") + " --field effective -o " + path("x.png"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("missing.json"), std::string::npos) << r.err;
+}
+
+TEST_F(PlotRender, VtuFromExportAndFromSolveAgree) {
+  Outcome r = run("export-vtu " + path("p3.json") + " -o " + path("p3.vtu"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run("solve " + std::string(SAASGAPS_EXAMPLES_DIR) + "/report-problem3-case1.json -q -o " + path("again.json") +
+          " --vtu " + path("again.vtu"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string exported = read(dir_ / "p3.vtu");
+  EXPECT_EQ(exported, read(dir_ / "again.vtu"));
+  EXPECT_NE(exported.find("NumberOfPoints=\"114\" NumberOfCells=\"90\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace saasgaps::plot
