@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs the report's Problem 3 (case 1) as a worked example.
+# Installs what is missing, builds, and starts the SAASGAPS service on 127.0.0.1:8080 with its SQLite
+# database in var/saasgaps.db. Arguments pass through to `saasgaps serve`, e.g.
+#   ./deploy/run.sh --port 9000 --workers 2
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 install_packages "${BUILD_PACKAGES[@]}"
 build_project saasgaps
-exec "$SAASGAPS_BUILD/saasgaps" solve "$SAASGAPS_ROOT/schemas/examples/report-problem3-case1.json" \
-  -o "$SAASGAPS_BUILD/report-problem3-case1.result.json" "$@"
+mkdir -p "$SAASGAPS_ROOT/var"
+exec "$SAASGAPS_BUILD/saasgaps" serve --db "$SAASGAPS_ROOT/var/saasgaps.db" "$@"

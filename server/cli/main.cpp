@@ -9,6 +9,7 @@
 #include "errors.hpp"
 #include "cli/export_vtu_command.hpp"
 #include "cli/plot_command.hpp"
+#include "cli/serve_command.hpp"
 #include "cli/solve_command.hpp"
 #include "thread_environment.hpp"
 #include "cli/validate_command.hpp"
@@ -55,6 +56,27 @@ int main(int argc, char** argv) {
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check a model and print every error with its JSON Pointer");
   validate_cmd->add_option("model", validate_path, "Model document (JSON)")->required();
 
+  saasgaps::cli::ServeOptions serve;
+  CLI::App* serve_cmd = app.add_subcommand("serve", "Run the HTTP job service on an SQLite database file");
+  serve_cmd->add_option("--host", serve.host, "Address to listen on (beyond loopback only with --token-file)")
+      ->capture_default_str();
+  serve_cmd->add_option("--port", serve.port, "TCP port; 0 picks a free one and prints it")
+      ->check(CLI::Range(0, 65535))
+      ->capture_default_str();
+  serve_cmd->add_option("--db", serve.database, "SQLite database file, created on first start")->capture_default_str();
+  serve_cmd->add_option("--workers", serve.workers, "Jobs solved at once")->check(CLI::Range(1, 64))->capture_default_str();
+  serve_cmd->add_option("--max-body", serve.max_body, "Largest request body in bytes (413 beyond)")
+      ->check(CLI::Range(std::size_t{1024}, std::size_t{1} << 40))
+      ->capture_default_str();
+  serve_cmd->add_option("--token-file", serve.token_file, "File holding a bearer token every request must carry");
+  serve_cmd->add_option("--max-streams", serve.max_streams, "Concurrent event streams (503 beyond)")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  serve_cmd->add_option("--max-interruptions", serve.max_interruptions,
+                        "Server deaths a running job survives before it fails instead of resuming")
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
+
   saasgaps::cli::PlotOptions plot;
   CLI::App* plot_cmd = app.add_subcommand("plot", "Draw a contour, closure or convergence plot of a result (PNG or SVG)");
   plot_cmd->add_option("result", plot.result_path, "Result document (JSON) written by solve")->required();
@@ -84,6 +106,7 @@ int main(int argc, char** argv) {
   try {
     if (solve_cmd->parsed()) return saasgaps::cli::run_solve(solve);
     if (validate_cmd->parsed()) return saasgaps::cli::run_validate(validate_path);
+    if (serve_cmd->parsed()) return saasgaps::cli::run_serve(serve);
     if (plot_cmd->parsed()) return saasgaps::cli::run_plot(plot);
     if (vtu_cmd->parsed()) return saasgaps::cli::run_export_vtu(vtu);
   } catch (const saasgaps::ModelError& e) {

@@ -1,0 +1,550 @@
+#include "service/job_store.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <ctime>
+#include <nlohmann/json.hpp>
+
+namespace saasgaps::service {
+
+using nlohmann::json;
+
+namespace {
+
+/// Schema versions, applied in order; PRAGMA user_version records how far a database has come.
+const std::vector<const char*> migrations = {
+    // 1: the first schema.
+    R"sql(
+    CREATE TABLE jobs (
+      id INTEGER PRIMARY KEY AUTOINCREMENT,
+      state TEXT NOT NULL,
+      title TEXT NOT NULL,
+      created_at TEXT NOT NULL,
+      started_at TEXT,
+      finished_at TEXT,
+      updated_at TEXT NOT NULL,
+      iteration INTEGER NOT NULL DEFAULT 0,
+      max_iterations INTEGER NOT NULL,
+      attempts INTEGER NOT NULL DEFAULT 0,
+      interruptions INTEGER NOT NULL DEFAULT 0,
+      cancel_requested INTEGER NOT NULL DEFAULT 0,
+      settings TEXT NOT NULL DEFAULT '{}',
+      lease_owner TEXT,
+      heartbeat_at TEXT,
+      idempotency_key TEXT UNIQUE,
+      request_digest TEXT,
+      error TEXT,
+      message TEXT
+    );
+    CREATE INDEX jobs_by_state ON jobs(state, id);
+    CREATE TABLE models (
+      job_id INTEGER PRIMARY KEY REFERENCES jobs(id) ON DELETE CASCADE,
+      document TEXT NOT NULL
+    );
+    CREATE TABLE iterations (
+      job_id INTEGER NOT NULL REFERENCES jobs(id) ON DELETE CASCADE,
+      iteration INTEGER NOT NULL,
+      row TEXT NOT NULL,
+      PRIMARY KEY (job_id, iteration)
+    ) WITHOUT ROWID;
+    CREATE TABLE states (
+      job_id INTEGER NOT NULL REFERENCES jobs(id) ON DELETE CASCADE,
+      iteration INTEGER NOT NULL,
+      state BLOB NOT NULL,
+      created_at TEXT NOT NULL,
+      PRIMARY KEY (job_id, iteration)
+    );
+    CREATE TABLE results (
+      job_id INTEGER PRIMARY KEY REFERENCES jobs(id) ON DELETE CASCADE,
+      document TEXT NOT NULL
+    );
+    CREATE TABLE events (
+      id INTEGER PRIMARY KEY AUTOINCREMENT,
+      job_id INTEGER NOT NULL REFERENCES jobs(id) ON DELETE CASCADE,
+      kind TEXT NOT NULL,
+      data TEXT NOT NULL,
+      created_at TEXT NOT NULL
+    );
+    CREATE INDEX events_by_job ON events(job_id, id);
+    )sql",
+};
+
+constexpr const char* job_columns =
+    "id, state, title, created_at, started_at, finished_at, iteration, max_iterations, attempts, interruptions, "
+    "cancel_requested, error, message, settings, "
+    "(SELECT row FROM iterations i WHERE i.job_id = jobs.id ORDER BY iteration DESC LIMIT 1)";
+
+json settings_json(const RunSettings& s) {
+  json j = json::object();
+  if (s.tensile_schedule) j["tensile_schedule"] = *s.tensile_schedule;
+  if (s.max_iterations) j["max_iterations"] = *s.max_iterations;
+  if (s.extrapolation_factor) j["extrapolation_factor"] = *s.extrapolation_factor;
+  j["restart_schedule"] = s.restart_schedule;
+  return j;
+}
+
+RunSettings parse_settings(const std::string& text) {
+  const json j = json::parse(text);
+  RunSettings s;
+  if (j.contains("tensile_schedule")) s.tensile_schedule = j["tensile_schedule"].get<std::vector<double>>();
+  if (j.contains("max_iterations")) s.max_iterations = j["max_iterations"].get<int>();
+  if (j.contains("extrapolation_factor")) s.extrapolation_factor = j["extrapolation_factor"].get<double>();
+  s.restart_schedule = j.value("restart_schedule", false);
+  return s;
+}
+
+JobRecord read_job(const Statement& q) {
+  JobRecord j;
+  j.id = q.integer(0);
+  j.state = parse_job_state(q.text(1)).value_or(JobState::failed);
+  j.title = q.text(2);
+  j.created_at = q.text(3);
+  j.started_at = q.optional_text(4);
+  j.finished_at = q.optional_text(5);
+  j.iteration = static_cast<int>(q.integer(6));
+  j.max_iterations = static_cast<int>(q.integer(7));
+  j.attempts = static_cast<int>(q.integer(8));
+  j.interruptions = static_cast<int>(q.integer(9));
+  j.cancel_requested = q.integer(10) != 0;
+  j.error = q.optional_text(11);
+  j.message = q.optional_text(12);
+  j.settings = parse_settings(q.text(13));
+  j.last_row = q.optional_text(14);
+  return j;
+}
+
+std::optional<JobRecord> find_job(Connection& db, std::int64_t id) {
+  Statement q = db.prepare(std::string("SELECT ") + job_columns + " FROM jobs WHERE id = ?");
+  q.bind(1, id);
+  if (!q.step()) return std::nullopt;
+  return read_job(q);
+}
+
+JobRecord require_job(Connection& db, std::int64_t id) {
+  std::optional<JobRecord> job = find_job(db, id);
+  if (!job) throw JobNotFound(id);
+  return *job;
+}
+
+void add_event(Connection& db, std::int64_t job, const std::string& kind, const std::string& data) {
+  db.prepare("INSERT INTO events (job_id, kind, data, created_at) VALUES (?, ?, ?, ?)")
+      .bind(1, job)
+      .bind(2, kind)
+      .bind(3, data)
+      .bind(4, utc_now())
+      .run();
+}
+
+/// Sets a job's state (and optional message / error) and records the state event.
+void change_state(Connection& db, std::int64_t job, JobState state, const std::optional<std::string>& message = {},
+                  const std::optional<std::string>& error = {}) {
+  const std::string now = utc_now();
+  db.prepare(
+        "UPDATE jobs SET state = ?, updated_at = ?, message = COALESCE(?, message), error = ?,"
+        " finished_at = CASE WHEN ? THEN ? ELSE finished_at END WHERE id = ?")
+      .bind(1, to_string(state))
+      .bind(2, now)
+      .bind(3, message)
+      .bind(4, error)
+      .bind(5, is_finished(state) ? 1 : 0)
+      .bind(6, now)
+      .bind(7, job)
+      .run();
+  const JobRecord record = require_job(db, job);
+  json data = {{"job", job}, {"state", to_string(state)}, {"iteration", record.iteration}};
+  if (record.message) data["message"] = *record.message;
+  if (error) data["error"] = *error;
+  add_event(db, job, "state", data.dump());
+}
+
+}  // namespace
+
+const char* to_string(JobState state) {
+  switch (state) {
+    case JobState::queued: return "queued";
+    case JobState::running: return "running";
+    case JobState::converged: return "converged";
+    case JobState::not_converged: return "not_converged";
+    case JobState::failed: return "failed";
+    case JobState::cancelled: return "cancelled";
+    case JobState::interrupted: return "interrupted";
+  }
+  return "failed";
+}
+
+std::optional<JobState> parse_job_state(std::string_view text) {
+  for (JobState s : {JobState::queued, JobState::running, JobState::converged, JobState::not_converged,
+                     JobState::failed, JobState::cancelled, JobState::interrupted}) {
+    if (text == to_string(s)) return s;
+  }
+  return std::nullopt;
+}
+
+bool is_finished(JobState state) {
+  return state == JobState::converged || state == JobState::not_converged || state == JobState::failed ||
+         state == JobState::cancelled;
+}
+
+std::string utc_now() {
+  const auto now = std::chrono::system_clock::now();
+  const std::time_t seconds = std::chrono::system_clock::to_time_t(now);
+  const auto millis =
+      std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
+  std::tm tm{};
+  gmtime_r(&seconds, &tm);
+  char text[96];
+  std::snprintf(text, sizeof text, "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", tm.tm_year + 1900, tm.tm_mon + 1,
+                tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, static_cast<int>(millis));
+  return text;
+}
+
+/// Connections handed out one per caller at a time: SQLite connections are not shared across threads,
+/// and separate connections let WAL readers run beside the writer.
+class JobStore::Pool {
+ public:
+  explicit Pool(std::string path) : path_(std::move(path)) {}
+
+  class Lease {
+   public:
+    Lease(Pool& pool, std::unique_ptr<Connection> c) : pool_(pool), connection_(std::move(c)) {}
+    ~Lease() { pool_.give_back(std::move(connection_)); }
+    Lease(const Lease&) = delete;
+    Lease& operator=(const Lease&) = delete;
+    Connection& operator*() { return *connection_; }
+    Connection* operator->() { return connection_.get(); }
+
+   private:
+    Pool& pool_;
+    std::unique_ptr<Connection> connection_;
+  };
+
+  Lease lease() {
+    {
+      std::lock_guard lock(mutex_);
+      if (!idle_.empty()) {
+        std::unique_ptr<Connection> c = std::move(idle_.back());
+        idle_.pop_back();
+        return Lease(*this, std::move(c));
+      }
+    }
+    return Lease(*this, std::make_unique<Connection>(path_));
+  }
+
+ private:
+  void give_back(std::unique_ptr<Connection> c) {
+    std::lock_guard lock(mutex_);
+    if (idle_.size() < 16) idle_.push_back(std::move(c));
+  }
+
+  std::string path_;
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<Connection>> idle_;
+};
+
+JobStore::JobStore(std::string path, int max_interruptions)
+    : pool_(std::make_unique<Pool>(std::move(path))), max_interruptions_(max_interruptions) {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  Statement version_query = db->prepare("PRAGMA user_version");
+  version_query.step();
+  const auto version = static_cast<std::size_t>(version_query.integer(0));
+  if (version > migrations.size()) {
+    throw StoreError("the database has schema version " + std::to_string(version) +
+                     ", newer than this server knows (" + std::to_string(migrations.size()) + ")");
+  }
+  for (std::size_t v = version; v < migrations.size(); ++v) db->execute(migrations[v]);
+  db->execute("PRAGMA user_version = " + std::to_string(migrations.size()));
+  tx.commit();
+}
+
+JobStore::~JobStore() = default;
+
+JobStore::Submitted JobStore::submit(const std::string& model, const std::string& title, int max_iterations,
+                                     const std::optional<std::string>& idempotency_key,
+                                     const std::string& request_digest) {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  if (idempotency_key) {
+    Statement q = db->prepare("SELECT id, request_digest FROM jobs WHERE idempotency_key = ?");
+    q.bind(1, *idempotency_key);
+    if (q.step()) {
+      if (q.text(1) != request_digest) {
+        throw JobConflict("Idempotency-Key \"" + *idempotency_key + "\" was used for a different request (job " +
+                          std::to_string(q.integer(0)) + ")");
+      }
+      return {require_job(*db, q.integer(0)), true};
+    }
+  }
+  const std::string now = utc_now();
+  db->prepare(
+        "INSERT INTO jobs (state, title, created_at, updated_at, max_iterations, idempotency_key, request_digest)"
+        " VALUES ('queued', ?, ?, ?, ?, ?, ?)")
+      .bind(1, title)
+      .bind(2, now)
+      .bind(3, now)
+      .bind(4, max_iterations)
+      .bind(5, idempotency_key)
+      .bind(6, request_digest)
+      .run();
+  const std::int64_t id = db->last_insert_id();
+  db->prepare("INSERT INTO models (job_id, document) VALUES (?, ?)").bind(1, id).bind(2, model).run();
+  add_event(*db, id, "state", json{{"job", id}, {"state", "queued"}, {"iteration", 0}}.dump());
+  JobRecord job = require_job(*db, id);
+  tx.commit();
+  return {job, false};
+}
+
+JobRecord JobStore::get(std::int64_t id) {
+  auto db = pool_->lease();
+  return require_job(*db, id);
+}
+
+JobStore::Page JobStore::list(std::optional<JobState> state, int page_size, std::optional<std::int64_t> before) {
+  auto db = pool_->lease();
+  Statement q = db->prepare(std::string("SELECT ") + job_columns +
+                            " FROM jobs WHERE (?1 IS NULL OR state = ?1) AND (?2 IS NULL OR id < ?2)"
+                            " ORDER BY id DESC LIMIT ?3");
+  if (state) q.bind(1, to_string(*state)); else q.bind_null(1);
+  q.bind(2, before);
+  q.bind(3, page_size + 1);
+  Page page;
+  while (q.step()) page.jobs.push_back(read_job(q));
+  if (static_cast<int>(page.jobs.size()) > page_size) {
+    page.jobs.pop_back();
+    page.next_before = page.jobs.back().id;
+  }
+  return page;
+}
+
+std::vector<std::string> JobStore::iterations(std::int64_t id, int after) {
+  auto db = pool_->lease();
+  require_job(*db, id);
+  Statement q = db->prepare("SELECT row FROM iterations WHERE job_id = ? AND iteration > ? ORDER BY iteration");
+  q.bind(1, id).bind(2, after);
+  std::vector<std::string> rows;
+  while (q.step()) rows.push_back(q.text(0));
+  return rows;
+}
+
+std::string JobStore::model(std::int64_t id) {
+  auto db = pool_->lease();
+  Statement q = db->prepare("SELECT document FROM models WHERE job_id = ?");
+  q.bind(1, id);
+  if (!q.step()) throw JobNotFound(id);
+  return q.text(0);
+}
+
+std::optional<std::string> JobStore::result(std::int64_t id) {
+  auto db = pool_->lease();
+  const JobRecord job = require_job(*db, id);
+  if (job.state == JobState::running) {
+    throw JobConflict("job " + std::to_string(id) + " is running; its result is written when it stops");
+  }
+  Statement q = db->prepare("SELECT document FROM results WHERE job_id = ?");
+  q.bind(1, id);
+  if (!q.step()) return std::nullopt;
+  return q.text(0);
+}
+
+std::vector<JobEvent> JobStore::events(std::int64_t id, std::int64_t after_event, int limit) {
+  auto db = pool_->lease();
+  require_job(*db, id);
+  Statement q = db->prepare("SELECT id, kind, data FROM events WHERE job_id = ? AND id > ? ORDER BY id LIMIT ?");
+  q.bind(1, id).bind(2, after_event).bind(3, limit);
+  std::vector<JobEvent> events;
+  while (q.step()) events.push_back({q.integer(0), q.text(1), q.text(2)});
+  return events;
+}
+
+int JobStore::queue_length() {
+  auto db = pool_->lease();
+  Statement q = db->prepare("SELECT COUNT(*) FROM jobs WHERE state IN ('queued', 'interrupted')");
+  q.step();
+  return static_cast<int>(q.integer(0));
+}
+
+int JobStore::running_count() {
+  auto db = pool_->lease();
+  Statement q = db->prepare("SELECT COUNT(*) FROM jobs WHERE state = 'running'");
+  q.step();
+  return static_cast<int>(q.integer(0));
+}
+
+std::optional<ClaimedJob> JobStore::claim(const std::string& worker) {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  Statement next = db->prepare("SELECT id FROM jobs WHERE state IN ('queued', 'interrupted') ORDER BY id LIMIT 1");
+  if (!next.step()) return std::nullopt;
+  const std::int64_t id = next.integer(0);
+  const std::string now = utc_now();
+  db->prepare(
+        "UPDATE jobs SET attempts = attempts + 1, started_at = COALESCE(started_at, ?), lease_owner = ?,"
+        " heartbeat_at = ?, cancel_requested = 0, finished_at = NULL, error = NULL WHERE id = ?")
+      .bind(1, now)
+      .bind(2, worker)
+      .bind(3, now)
+      .bind(4, id)
+      .run();
+  change_state(*db, id, JobState::running);
+  ClaimedJob claimed;
+  claimed.job = require_job(*db, id);
+  Statement model = db->prepare("SELECT document FROM models WHERE job_id = ?");
+  model.bind(1, id);
+  if (!model.step()) throw StoreError("job " + std::to_string(id) + " has no model");
+  claimed.model = model.text(0);
+  Statement state = db->prepare("SELECT state FROM states WHERE job_id = ? ORDER BY iteration DESC LIMIT 1");
+  state.bind(1, id);
+  if (state.step()) claimed.state = state.blob(0);
+  tx.commit();
+  return claimed;
+}
+
+void JobStore::record_iteration(std::int64_t id, int iteration, const std::string& row,
+                                const std::vector<std::uint8_t>& state) {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  const std::string now = utc_now();
+  // A plain INSERT: an iteration recorded twice would be a bug, and must fail loudly.
+  db->prepare("INSERT INTO iterations (job_id, iteration, row) VALUES (?, ?, ?)").bind(1, id).bind(2, iteration).bind(3, row).run();
+  db->prepare("INSERT INTO states (job_id, iteration, state, created_at) VALUES (?, ?, ?, ?)")
+      .bind(1, id)
+      .bind(2, iteration)
+      .bind_blob(3, state)
+      .bind(4, now)
+      .run();
+  // Keep the latest two states: the newest, and one to fall back on.
+  db->prepare("DELETE FROM states WHERE job_id = ? AND iteration < ?").bind(1, id).bind(2, iteration - 1).run();
+  // The first committed iteration after a resume has used the new schedule: from here on a restart
+  // continues it rather than starting it again.
+  db->prepare(
+        "UPDATE jobs SET iteration = ?, heartbeat_at = ?, updated_at = ?,"
+        " settings = json_set(settings, '$.restart_schedule', json('false')) WHERE id = ?")
+      .bind(1, iteration)
+      .bind(2, now)
+      .bind(3, now)
+      .bind(4, id)
+      .run();
+  add_event(*db, id, "iteration", row);
+  tx.commit();
+}
+
+bool JobStore::cancel_requested(std::int64_t id) {
+  auto db = pool_->lease();
+  Statement q = db->prepare("SELECT cancel_requested FROM jobs WHERE id = ?");
+  q.bind(1, id);
+  return q.step() && q.integer(0) != 0;
+}
+
+void JobStore::finish(std::int64_t id, JobState state, const std::optional<std::string>& result,
+                      const std::optional<std::string>& message, const std::optional<std::string>& error) {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  if (result) {
+    db->prepare("INSERT OR REPLACE INTO results (job_id, document) VALUES (?, ?)").bind(1, id).bind(2, *result).run();
+  }
+  db->prepare("UPDATE jobs SET lease_owner = NULL, cancel_requested = 0 WHERE id = ?").bind(1, id).run();
+  change_state(*db, id, state, message, error);
+  tx.commit();
+}
+
+JobRecord JobStore::cancel(std::int64_t id) {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  const JobRecord job = require_job(*db, id);
+  switch (job.state) {
+    case JobState::queued:
+    case JobState::interrupted:
+      change_state(*db, id, JobState::cancelled, "cancelled before it ran again");
+      break;
+    case JobState::running:
+      db->prepare("UPDATE jobs SET cancel_requested = 1, updated_at = ? WHERE id = ?").bind(1, utc_now()).bind(2, id).run();
+      break;
+    default:
+      throw JobConflict("job " + std::to_string(id) + " is " + to_string(job.state) + "; only queued, running or "
+                        "interrupted jobs can be cancelled");
+  }
+  JobRecord updated = require_job(*db, id);
+  tx.commit();
+  return updated;
+}
+
+JobRecord JobStore::resume(std::int64_t id, const RunSettings& changes) {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  const JobRecord job = require_job(*db, id);
+  if (job.state == JobState::queued || job.state == JobState::running || job.state == JobState::converged) {
+    throw JobConflict("job " + std::to_string(id) + " is " + to_string(job.state) + "; only cancelled, "
+                      "not_converged, interrupted or failed jobs can be resumed");
+  }
+  RunSettings settings = job.settings;
+  if (changes.tensile_schedule) {
+    settings.tensile_schedule = changes.tensile_schedule;
+    settings.restart_schedule = true;
+  }
+  if (changes.max_iterations) settings.max_iterations = changes.max_iterations;
+  if (changes.extrapolation_factor) settings.extrapolation_factor = changes.extrapolation_factor;
+  db->prepare("UPDATE jobs SET settings = ?, max_iterations = COALESCE(?, max_iterations), interruptions = 0 WHERE id = ?")
+      .bind(1, settings_json(settings).dump())
+      .bind(2, changes.max_iterations)
+      .bind(3, id)
+      .run();
+  change_state(*db, id, JobState::queued, "resumed from iteration " + std::to_string(job.iteration));
+  JobRecord updated = require_job(*db, id);
+  tx.commit();
+  return updated;
+}
+
+void JobStore::remove(std::int64_t id) {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  const JobRecord job = require_job(*db, id);
+  if (!is_finished(job.state)) {
+    throw JobConflict("job " + std::to_string(id) + " is " + to_string(job.state) + "; cancel it before deleting");
+  }
+  db->prepare("DELETE FROM jobs WHERE id = ?").bind(1, id).run();
+  tx.commit();
+}
+
+int JobStore::recover_interrupted() {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  std::vector<std::int64_t> orphans;
+  Statement q = db->prepare("SELECT id FROM jobs WHERE state = 'running'");
+  while (q.step()) orphans.push_back(q.integer(0));
+  for (std::int64_t id : orphans) {
+    db->prepare("UPDATE jobs SET interruptions = interruptions + 1, lease_owner = NULL WHERE id = ?").bind(1, id).run();
+    const JobRecord job = require_job(*db, id);
+    if (job.interruptions > max_interruptions_) {
+      change_state(*db, id, JobState::failed, std::nullopt,
+                   "the server stopped while solving this job " + std::to_string(job.interruptions) +
+                       " times; it is not resumed again automatically (resume it by hand to try once more)");
+    } else {
+      change_state(*db, id, JobState::interrupted,
+                   "the server stopped while solving; resumes from iteration " + std::to_string(job.iteration));
+    }
+  }
+  tx.commit();
+  return static_cast<int>(orphans.size());
+}
+
+DatabaseLock::DatabaseLock(const std::string& database_path) {
+  const std::string path = database_path + ".lock";
+  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0) throw StoreError("cannot open " + path + ": " + std::strerror(errno));
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    fd_ = -1;
+    throw StoreError("the database " + database_path + " is in use by another saasgaps server");
+  }
+}
+
+DatabaseLock::~DatabaseLock() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+}  // namespace saasgaps::service

@@ -1,0 +1,158 @@
+#pragma once
+/// The service's only state: jobs, their submitted models, iteration histories, restart states,
+/// results and events, in one SQLite file (WAL, full-sync commits, BEGIN IMMEDIATE writes).
+///
+/// Every state change is one transaction together with the event that announces it; every finished
+/// iteration's history row and restart state commit together (with their event) before the next
+/// iteration starts. A single server owns a database at a time (see DatabaseLock), so on start-up
+/// every job still marked running was left by a dead server.
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "service/sqlite.hpp"
+
+namespace saasgaps::service {
+
+enum class JobState { queued, running, converged, not_converged, failed, cancelled, interrupted };
+
+const char* to_string(JobState state);
+std::optional<JobState> parse_job_state(std::string_view text);
+bool is_finished(JobState state);  ///< converged, not_converged, failed, cancelled
+
+/// The job does not exist.
+class JobNotFound : public std::runtime_error {
+ public:
+  explicit JobNotFound(std::int64_t id) : std::runtime_error("no job " + std::to_string(id)) {}
+};
+
+/// The request does not fit the job's state (resume while running, result while running, ...).
+class JobConflict : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// What a restart may change (the report's READ card), as the service keeps it: the settings in
+/// force for the job from now on, and whether a new schedule still has to start afresh.
+struct RunSettings {
+  std::optional<std::vector<double>> tensile_schedule;
+  std::optional<int> max_iterations;
+  std::optional<double> extrapolation_factor;
+  bool restart_schedule = false;  ///< a new schedule not yet used by any committed iteration
+};
+
+struct JobRecord {
+  std::int64_t id = 0;
+  JobState state = JobState::queued;
+  std::string title;
+  std::string created_at;
+  std::optional<std::string> started_at;
+  std::optional<std::string> finished_at;
+  int iteration = 0;  ///< last finished iteration
+  int max_iterations = 0;
+  int attempts = 0;       ///< runs started (the first run, resumes, automatic restarts)
+  int interruptions = 0;  ///< times a server died while running it
+  bool cancel_requested = false;
+  std::optional<std::string> error;
+  std::optional<std::string> message;
+  std::optional<std::string> last_row;  ///< JSON of the last history row
+  RunSettings settings;
+};
+
+/// What a worker needs to run a job.
+struct ClaimedJob {
+  JobRecord job;
+  std::string model;                             ///< the submitted document
+  std::optional<std::vector<std::uint8_t>> state;  ///< the latest restart state, when resuming
+};
+
+struct JobEvent {
+  std::int64_t id = 0;
+  std::string kind;  ///< "state" or "iteration"
+  std::string data;  ///< JSON
+};
+
+class JobStore {
+ public:
+  /// Opens or creates the database and migrates its schema to the current version.
+  /// max_interruptions: after this many server deaths while running, a job fails instead of resuming.
+  JobStore(std::string path, int max_interruptions);
+  ~JobStore();
+
+  struct Submitted {
+    JobRecord job;
+    bool replayed = false;  ///< an earlier request with the same Idempotency-Key made this job
+  };
+  /// Queues a validated model. With an idempotency key seen before: the same request returns its
+  /// job (replayed), a different request under the same key is a JobConflict.
+  Submitted submit(const std::string& model, const std::string& title, int max_iterations,
+                   const std::optional<std::string>& idempotency_key, const std::string& request_digest);
+
+  [[nodiscard]] JobRecord get(std::int64_t id);
+  struct Page {
+    std::vector<JobRecord> jobs;
+    std::optional<std::int64_t> next_before;  ///< id to continue below, when more remain
+  };
+  /// Newest first, optionally one state only; page_size jobs with id below `before`.
+  [[nodiscard]] Page list(std::optional<JobState> state, int page_size, std::optional<std::int64_t> before);
+  /// History rows (JSON) with iteration > after, in order.
+  [[nodiscard]] std::vector<std::string> iterations(std::int64_t id, int after);
+  [[nodiscard]] std::string model(std::int64_t id);
+  /// The result document; JobConflict while running, JobNotFound (for the result) when none exists.
+  [[nodiscard]] std::optional<std::string> result(std::int64_t id);
+  [[nodiscard]] std::vector<JobEvent> events(std::int64_t id, std::int64_t after_event, int limit);
+  [[nodiscard]] int queue_length();
+  [[nodiscard]] int running_count();
+
+  /// The oldest queued or interrupted job, now running (attempts + 1), or nothing.
+  std::optional<ClaimedJob> claim(const std::string& worker);
+  /// One finished iteration: its history row, its restart state (only the latest two are kept) and
+  /// its event, in one transaction.
+  void record_iteration(std::int64_t id, int iteration, const std::string& row,
+                        const std::vector<std::uint8_t>& state);
+  [[nodiscard]] bool cancel_requested(std::int64_t id);
+  /// A run ended: its final state, result document and message.
+  void finish(std::int64_t id, JobState state, const std::optional<std::string>& result,
+              const std::optional<std::string>& message, const std::optional<std::string>& error);
+
+  /// Cancels a queued or interrupted job at once, or asks a running one to stop at its next
+  /// iteration boundary. JobConflict for a finished job.
+  JobRecord cancel(std::int64_t id);
+  /// Queues a cancelled, not_converged, interrupted or failed job to continue from its last saved
+  /// iteration with the given changes. JobConflict when queued, running or converged.
+  JobRecord resume(std::int64_t id, const RunSettings& changes);
+  /// Deletes a finished job and all its rows. JobConflict when not finished.
+  void remove(std::int64_t id);
+
+  /// Start-up: jobs left running by a dead server become interrupted (to be resumed by the
+  /// workers), or failed once interrupted more than max_interruptions times. Returns how many.
+  int recover_interrupted();
+
+ private:
+  class Pool;
+  std::unique_ptr<Pool> pool_;
+  int max_interruptions_;
+};
+
+/// An exclusive advisory lock on "<database>.lock": one server per database. Released by the kernel
+/// when the process dies, even by kill -9.
+class DatabaseLock {
+ public:
+  explicit DatabaseLock(const std::string& database_path);
+  ~DatabaseLock();
+  DatabaseLock(const DatabaseLock&) = delete;
+  DatabaseLock& operator=(const DatabaseLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+/// Current UTC time, ISO 8601 with milliseconds.
+std::string utc_now();
+
+}  // namespace saasgaps::service

@@ -1,0 +1,72 @@
+#include "service/problem.hpp"
+
+#include "errors.hpp"
+#include "service/job_store.hpp"
+
+namespace saasgaps::service {
+
+using nlohmann::json;
+
+namespace {
+const char* reason(int status) {
+  switch (status) {
+    case 400: return "Bad Request";
+    case 401: return "Unauthorized";
+    case 404: return "Not Found";
+    case 405: return "Method Not Allowed";
+    case 409: return "Conflict";
+    case 413: return "Content Too Large";
+    case 422: return "Unprocessable Content";
+    case 503: return "Service Unavailable";
+    default: return status >= 500 ? "Internal Server Error" : "Error";
+  }
+}
+}  // namespace
+
+void write_problem(httplib::Response& res, int status, const std::string& title, const std::string& detail,
+                   const json& errors) {
+  json body = {{"type", "about:blank"}, {"title", title}, {"status", status}, {"detail", detail}};
+  if (!errors.is_null()) body["errors"] = errors;
+  res.status = status;
+  res.set_content(body.dump(), "application/problem+json");
+}
+
+void respond_to_exception(const httplib::Request& req, httplib::Response& res, std::exception_ptr error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const HttpError& e) {
+    write_problem(res, e.status(), e.title(), e.what(), e.errors());
+  } catch (const ModelError& e) {
+    json errors = json::array();
+    for (const InputIssue& issue : e.issues()) errors.push_back({{"pointer", issue.pointer}, {"detail", issue.detail}});
+    write_problem(res, 422, "Invalid model",
+                  std::to_string(e.issues().size()) + (e.issues().size() == 1 ? " error" : " errors") +
+                      " in the model document",
+                  errors);
+  } catch (const JobNotFound& e) {
+    write_problem(res, 404, "Not Found", e.what());
+  } catch (const JobConflict& e) {
+    write_problem(res, 409, "Conflict", e.what());
+  } catch (const std::exception& e) {
+    write_problem(res, 500, "Internal Server Error", std::string(req.method + " " + req.path + " failed: ") + e.what());
+  } catch (...) {
+    write_problem(res, 500, "Internal Server Error", req.method + " " + req.path + " failed");
+  }
+}
+
+void fill_error_body(const httplib::Request& req, httplib::Response& res) {
+  if (!res.body.empty()) return;
+  std::string detail = req.method + " " + req.path;
+  switch (res.status) {
+    case 404: detail += ": no such resource"; break;
+    case 413: detail += ": the request body is larger than the server accepts (--max-body)"; break;
+    case 400:
+      detail += req.has_header("Content-Length") ? ": the request could not be read"
+                                                 : ": a POST needs a body, even an empty one (curl -d '' or --json '{}')";
+      break;
+    default: detail += ": " + std::string(reason(res.status)); break;
+  }
+  write_problem(res, res.status, reason(res.status), detail);
+}
+
+}  // namespace saasgaps::service

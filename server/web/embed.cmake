@@ -1,0 +1,23 @@
+# Writes the web assets into a C++ source as raw string literals, so the binary serves the page
+# with nothing else installed. Run by CMake at build time:
+#   cmake -DOUTPUT=web_assets.cpp -DINPUTS="index.html|app.js|app.css" -P embed.cmake
+file(WRITE "${OUTPUT}" "// Generated from server/web by embed.cmake: do not edit.\n#include \"web/web_assets.hpp\"\n\n")
+file(APPEND "${OUTPUT}" "namespace saasgaps::web {\n\nnamespace {\nconst Asset table[] = {\n")
+string(REPLACE "|" ";" INPUTS "${INPUTS}")
+foreach(input IN LISTS INPUTS)
+  get_filename_component(name "${input}" NAME)
+  get_filename_component(extension "${input}" EXT)
+  if(extension STREQUAL ".html")
+    set(type "text/html; charset=utf-8")
+    set(path "/")
+  elseif(extension STREQUAL ".js")
+    set(type "text/javascript; charset=utf-8")
+    set(path "/${name}")
+  else()
+    set(type "text/css; charset=utf-8")
+    set(path "/${name}")
+  endif()
+  file(READ "${input}" content)
+  file(APPEND "${OUTPUT}" "    {\"${path}\", \"${type}\", R\"saasgaps_asset(${content})saasgaps_asset\"},\n")
+endforeach()
+file(APPEND "${OUTPUT}" "};\n}  // namespace\n\nstd::span<const Asset> assets() { return table; }\n\n}  // namespace saasgaps::web\n")

@@ -1,0 +1,132 @@
+#include "service/server_process.hpp"
+
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+#include <thread>
+
+extern char** environ;
+
+namespace saasgaps::testing {
+
+namespace {
+
+/// posix_spawn with stdout (and optionally stderr) into a pipe; returns the read end.
+pid_t spawn(const std::vector<std::string>& arguments, int& read_end, bool merge_stderr) {
+  int pipe_fds[2];
+  if (pipe(pipe_fds) != 0) throw std::runtime_error("pipe failed");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], STDOUT_FILENO);
+  if (merge_stderr) posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], STDERR_FILENO);
+  posix_spawn_file_actions_addclose(&actions, pipe_fds[0]);
+  std::vector<char*> argv;
+  for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(pipe_fds[1]);
+  if (rc != 0) {
+    close(pipe_fds[0]);
+    throw std::runtime_error("cannot start " + arguments[0]);
+  }
+  read_end = pipe_fds[0];
+  return pid;
+}
+
+}  // namespace
+
+ServerProcess::ServerProcess(const std::filesystem::path& database, const std::vector<std::string>& arguments) {
+  std::vector<std::string> command = {SAASGAPS_BINARY, "serve", "--port", "0", "--db", database.string()};
+  command.insert(command.end(), arguments.begin(), arguments.end());
+  int out = -1;
+  pid_ = spawn(command, out, true);
+  // The first line says where it listens: "... listening on http://127.0.0.1:PORT (...)".
+  std::string line;
+  char c = 0;
+  while (read(out, &c, 1) == 1 && c != '\n') line += c;
+  close(out);
+  const auto at = line.find("127.0.0.1:");
+  if (at == std::string::npos) {
+    kill_hard();
+    throw std::runtime_error("the server did not start: " + line);
+  }
+  port_ = std::stoi(line.substr(at + 10));
+}
+
+ServerProcess::~ServerProcess() {
+  if (pid_ > 0) kill_hard();
+}
+
+httplib::Client ServerProcess::client() const {
+  httplib::Client c("127.0.0.1", port_);
+  c.set_read_timeout(std::chrono::seconds(30));
+  return c;
+}
+
+void ServerProcess::kill_hard() {
+  if (pid_ <= 0) return;
+  ::kill(pid_, SIGKILL);
+  int status = 0;
+  waitpid(pid_, &status, 0);
+  pid_ = -1;
+}
+
+int ServerProcess::stop() {
+  if (pid_ <= 0) return -1;
+  ::kill(pid_, SIGTERM);
+  int status = 0;
+  waitpid(pid_, &status, 0);
+  pid_ = -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+CommandResult run_command(const std::vector<std::string>& arguments) {
+  int out = -1;
+  const pid_t pid = spawn(arguments, out, true);
+  CommandResult result;
+  char buffer[4096];
+  ssize_t n = 0;
+  while ((n = read(out, buffer, sizeof buffer)) > 0) result.output.append(buffer, static_cast<std::size_t>(n));
+  close(out);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+nlohmann::json get_json(httplib::Client& client, const std::string& path) {
+  const httplib::Result r = client.Get(path);
+  if (!r) throw std::runtime_error("GET " + path + " failed: " + httplib::to_string(r.error()));
+  if (r->status / 100 != 2) throw std::runtime_error("GET " + path + " answered " + std::to_string(r->status) + ": " + r->body);
+  return nlohmann::json::parse(r->body);
+}
+
+nlohmann::json wait_for_state(httplib::Client& client, std::int64_t job, const std::vector<std::string>& states,
+                              std::chrono::seconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    nlohmann::json j = get_json(client, "/v1/jobs/" + std::to_string(job));
+    if (std::find(states.begin(), states.end(), j["state"].get<std::string>()) != states.end()) return j;
+    if (std::chrono::steady_clock::now() > deadline) {
+      throw std::runtime_error("job " + std::to_string(job) + " still " + j["state"].get<std::string>());
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+nlohmann::json result_numbers(nlohmann::json result) {
+  for (auto& row : result["history"]) {
+    row.erase("seconds");
+    row.erase("attempt");
+  }
+  return result;
+}
+
+}  // namespace saasgaps::testing

@@ -1,0 +1,356 @@
+// The HTTP job service, driven like a user drives it: a real `saasgaps serve` process on an
+// ephemeral loopback port with a real SQLite file; bad requests; kill -9 in the middle of a long job
+// and a restart; cancel and resume; several jobs at once; event streams.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <thread>
+
+#include "service/long_job_model.hpp"
+#include "service/server_process.hpp"
+
+namespace saasgaps::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+class Service : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("saasgaps-service-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  [[nodiscard]] fs::path database() const { return dir_ / "jobs.db"; }
+
+  static std::string example_text(const std::string& name) {
+    std::ifstream in(std::string(SAASGAPS_EXAMPLES_DIR) + "/" + name);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }
+
+  /// POST a model; returns the job id (asserting 202).
+  static std::int64_t submit(httplib::Client& client, const std::string& body, const httplib::Headers& headers = {}) {
+    const httplib::Result r = client.Post("/v1/jobs", headers, body, "application/json");
+    EXPECT_TRUE(r) << httplib::to_string(r.error());
+    EXPECT_EQ(r->status, 202) << r->body;
+    EXPECT_EQ(r->get_header_value("Location"), "/v1/jobs/" + std::to_string(json::parse(r->body)["id"].get<int>()));
+    return json::parse(r->body)["id"].get<std::int64_t>();
+  }
+
+  /// `saasgaps solve` of the same document: the reference every service result must equal.
+  [[nodiscard]] json solve_locally(const std::string& body) const {
+    const fs::path model = dir_ / "reference-model.json", result = dir_ / "reference-result.json";
+    std::ofstream(model) << body;
+    const CommandResult run = run_command({SAASGAPS_BINARY, "solve", model.string(), "-q", "-o", result.string()});
+    EXPECT_LE(run.exit_code, 3) << run.output;
+    std::ifstream in(result);
+    return json::parse(in);
+  }
+
+  static json problem(const httplib::Result& r, int status) {
+    EXPECT_TRUE(r);
+    EXPECT_EQ(r->status, status) << r->body;
+    EXPECT_EQ(r->get_header_value("Content-Type"), "application/problem+json") << r->body;
+    return json::parse(r->body);
+  }
+
+  /// Waits until the job has finished iteration k while still running; fails if it stops first.
+  static void wait_for_iteration(httplib::Client& client, std::int64_t job, int k) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    for (;;) {
+      const json j = get_json(client, "/v1/jobs/" + std::to_string(job));
+      const std::string state = j["state"];
+      if (state == "running" && j["iteration"].get<int>() >= k) return;
+      ASSERT_TRUE(state == "queued" || state == "running") << "the job stopped before iteration " << k << ": " << j.dump();
+      ASSERT_LT(std::chrono::steady_clock::now(), deadline) << "iteration " << k << " never came";
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  }
+
+  static std::vector<int> iteration_numbers(httplib::Client& client, std::int64_t job) {
+    std::vector<int> numbers;
+    const json rows = get_json(client, "/v1/jobs/" + std::to_string(job) + "/iterations");
+    for (const json& row : rows["iterations"]) {
+      numbers.push_back(row["iteration"].get<int>());
+    }
+    return numbers;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Service, ReportProblem3GivesTheSameResultAsSolve) {
+  ServerProcess server(database());
+  httplib::Client client = server.client();
+  const std::string body = example_text("report-problem3-case3.json");
+  const std::int64_t job = submit(client, body);
+  const json done = wait_for_state(client, job, {"converged", "not_converged", "failed"});
+  EXPECT_EQ(done["state"], "converged");
+  EXPECT_EQ(done["attempts"], 1);
+  EXPECT_EQ(done["iteration"], done["last_row"]["iteration"]);
+  const json result = get_json(client, "/v1/jobs/" + std::to_string(job) + "/result");
+  EXPECT_EQ(result_numbers(result), result_numbers(solve_locally(body)));
+  EXPECT_EQ(json::parse(client.Get("/v1/jobs/" + std::to_string(job) + "/model")->body), json::parse(body));
+  const json rows = get_json(client, "/v1/jobs/" + std::to_string(job) + "/iterations?after=10")["iterations"];
+  ASSERT_FALSE(rows.empty());
+  EXPECT_EQ(rows.front()["iteration"], 11);
+}
+
+TEST_F(Service, EveryBadRequestClassGetsItsStatusAndAPointer) {
+  ServerProcess server(database(), {"--max-body", "65536"});
+  httplib::Client client = server.client();
+  // 400: not JSON.
+  EXPECT_NE(problem(client.Post("/v1/jobs", "{not json", "application/json"), 400)["detail"].get<std::string>().find("not JSON"),
+            std::string::npos);
+  // 422: an invalid model, with every error's pointer.
+  json model = json::parse(example_text("report-problem1.json"));
+  model["elements"][0]["nodes"] = {2, 3, 15, 14};  // clockwise
+  model["gaps"]["extrapolation_factor"] = 1.5;
+  const json invalid = problem(client.Post("/v1/jobs", model.dump(), "application/json"), 422);
+  std::set<std::string> pointers;
+  for (const json& e : invalid["errors"]) pointers.insert(e["pointer"].get<std::string>());
+  EXPECT_TRUE(pointers.count("/elements/0/nodes")) << invalid.dump();
+  EXPECT_TRUE(pointers.count("/gaps/extrapolation_factor")) << invalid.dump();
+  // 413: over --max-body.
+  EXPECT_EQ(problem(client.Post("/v1/jobs", std::string(100000, ' ') + "{}", "application/json"), 413)["status"], 413);
+  // 404: unknown job, unknown route, result before any exists.
+  problem(client.Get("/v1/jobs/424242"), 404);
+  problem(client.Get("/v1/nothing-here"), 404);
+  // 400: bad query parameters.
+  problem(client.Get("/v1/jobs?page_size=0"), 400);
+  problem(client.Get("/v1/jobs?state=sleeping"), 400);
+  // 422: a resume body with bad values, each with its pointer.
+  const std::int64_t job = submit(client, example_text("report-problem1.json"));
+  wait_for_state(client, job, {"converged"});
+  const json bad_resume = problem(
+      client.Post("/v1/jobs/" + std::to_string(job) + "/resume", R"({"tensile_schedule": [5, -1], "speed": 3})", "application/json"),
+      422);
+  pointers.clear();
+  for (const json& e : bad_resume["errors"]) pointers.insert(e["pointer"].get<std::string>());
+  EXPECT_TRUE(pointers.count("/tensile_schedule/1")) << bad_resume.dump();
+  EXPECT_TRUE(pointers.count("/speed")) << bad_resume.dump();
+  // 409: resuming a converged job.
+  problem(client.Post("/v1/jobs/" + std::to_string(job) + "/resume", "{}", "application/json"), 409);
+  // 409: cancelling a finished job.
+  problem(client.Post("/v1/jobs/" + std::to_string(job) + "/cancel", "", "application/json"), 409);
+}
+
+TEST_F(Service, ConflictsWhileAJobRuns) {
+  ServerProcess server(database());
+  httplib::Client client = server.client();
+  const std::int64_t job = submit(client, tilted_block_document(120).dump());
+  wait_for_state(client, job, {"running"});
+  const std::string path = "/v1/jobs/" + std::to_string(job);
+  problem(client.Get(path + "/result"), 409);
+  problem(client.Post(path + "/resume", "{}", "application/json"), 409);
+  problem(client.Delete(path), 409);
+  EXPECT_EQ(client.Post(path + "/cancel", "", "application/json")->status, 202);
+  EXPECT_EQ(wait_for_state(client, job, {"cancelled", "converged"})["state"], "cancelled");
+  EXPECT_EQ(client.Delete(path)->status, 204);
+  problem(client.Get(path), 404);
+}
+
+TEST_F(Service, KillNineMidJobThenRestartResumesToTheUninterruptedResult) {
+  const std::string body = tilted_block_document(160).dump();
+  const json reference = solve_locally(body);
+  ASSERT_GE(reference["iterations"].get<int>(), 8);
+  std::int64_t job = 0;
+  {
+    ServerProcess server(database());
+    httplib::Client client = server.client();
+    job = submit(client, body);
+    // Kill while iteration 3 or later is committed and the job still runs.
+    wait_for_iteration(client, job, 3);
+    server.kill_hard();
+  }
+  ServerProcess restarted(database());
+  httplib::Client client = restarted.client();
+  const json done = wait_for_state(client, job, {"converged", "not_converged", "failed"});
+  EXPECT_EQ(done["state"], "converged") << done.dump();
+  EXPECT_EQ(done["attempts"], 2);
+  EXPECT_EQ(done["interruptions"], 1);
+  // Each iteration exactly once, in order.
+  const std::vector<int> numbers = iteration_numbers(client, job);
+  ASSERT_EQ(static_cast<int>(numbers.size()), reference["iterations"].get<int>());
+  for (std::size_t k = 0; k < numbers.size(); ++k) EXPECT_EQ(numbers[k], static_cast<int>(k) + 1);
+  // The rows after the restart say so; the result equals the uninterrupted run's to the last digit.
+  const json result = get_json(client, "/v1/jobs/" + std::to_string(job) + "/result");
+  EXPECT_EQ(result["history"].back()["attempt"], 2);
+  EXPECT_EQ(result["history"].front()["attempt"], 1);
+  EXPECT_EQ(result_numbers(result), result_numbers(reference));
+}
+
+TEST_F(Service, CancelThenResumeWithANewSchedule) {
+  ServerProcess server(database());
+  httplib::Client client = server.client();
+  const std::int64_t job = submit(client, tilted_block_document(120).dump());
+  const std::string path = "/v1/jobs/" + std::to_string(job);
+  wait_for_iteration(client, job, 2);
+  ASSERT_EQ(client.Post(path + "/cancel", "", "application/json")->status, 202);
+  const json cancelled = wait_for_state(client, job, {"cancelled"});
+  const int stopped_at = cancelled["iteration"].get<int>();
+  EXPECT_GE(stopped_at, 2);
+  // The stopped run's result is there to look at, and says it did not converge.
+  EXPECT_EQ(get_json(client, path + "/result")["status"], "not_converged");
+
+  const httplib::Result resumed =
+      client.Post(path + "/resume", R"({"tensile_schedule": [3, 1], "max_iterations": 60})", "application/json");
+  ASSERT_EQ(resumed->status, 202) << resumed->body;
+  EXPECT_EQ(json::parse(resumed->body)["state"], "queued");
+  const json done = wait_for_state(client, job, {"converged", "not_converged", "failed"});
+  EXPECT_EQ(done["state"], "converged") << done.dump();
+  EXPECT_EQ(done["max_iterations"], 60);
+  const json rows = get_json(client, path + "/iterations")["iterations"];
+  ASSERT_GT(static_cast<int>(rows.size()), stopped_at + 2);
+  // The new schedule starts afresh after the stop, and the rows record the second attempt.
+  EXPECT_EQ(rows[stopped_at]["tensile_modulus"], 3.0);
+  EXPECT_EQ(rows[stopped_at + 1]["tensile_modulus"], 1.0);
+  EXPECT_EQ(rows[stopped_at]["attempt"], 2);
+  EXPECT_EQ(rows[stopped_at - 1]["attempt"], 1);
+}
+
+TEST_F(Service, SeveralJobsQueuedAtOnce) {
+  ServerProcess server(database(), {"--workers", "2"});
+  httplib::Client client = server.client();
+  const std::vector<std::string> names = {"report-problem1.json", "report-problem2.json", "report-problem3-case1.json",
+                                          "report-problem3-case2.json", "report-problem3-case3.json",
+                                          "report-beam-model-b.json"};
+  std::vector<std::int64_t> jobs;
+  for (const std::string& name : names) jobs.push_back(submit(client, example_text(name)));
+  for (std::size_t k = 0; k < jobs.size(); ++k) {
+    const json done = wait_for_state(client, jobs[k], {"converged", "not_converged", "failed"});
+    EXPECT_EQ(done["state"], "converged") << names[k];
+    EXPECT_EQ(result_numbers(get_json(client, "/v1/jobs/" + std::to_string(jobs[k]) + "/result")),
+              result_numbers(solve_locally(example_text(names[k]))))
+        << names[k];
+  }
+  // Newest first, filtered by state, paginated.
+  const json first = get_json(client, "/v1/jobs?page_size=4&state=converged");
+  ASSERT_EQ(first["jobs"].size(), 4U);
+  EXPECT_EQ(first["jobs"][0]["id"], jobs.back());
+  const json second = get_json(client, "/v1/jobs?page_size=4&state=converged&page_token=" +
+                                           first["next_page_token"].get<std::string>());
+  EXPECT_EQ(second["jobs"].size(), 2U);
+  EXPECT_TRUE(second["next_page_token"].is_null());
+  EXPECT_EQ(get_json(client, "/healthz")["queue_length"], 0);
+}
+
+TEST_F(Service, EventStreamFollowsAJobAndResumesWithLastEventId) {
+  ServerProcess server(database());
+  httplib::Client client = server.client();
+  const std::int64_t job = submit(client, example_text("report-problem2.json"));
+  wait_for_state(client, job, {"converged"});
+  const std::string path = "/v1/jobs/" + std::to_string(job) + "/events";
+  const httplib::Result all = client.Get(path);
+  ASSERT_EQ(all->status, 200);
+  EXPECT_EQ(all->get_header_value("Content-Type"), "text/event-stream");
+  // queued, running, 5 iterations, converged; each with an id.
+  std::vector<std::int64_t> ids;
+  std::vector<std::string> kinds;
+  std::istringstream lines(all->body);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("id: ", 0) == 0) ids.push_back(std::stoll(line.substr(4)));
+    if (line.rfind("event: ", 0) == 0) kinds.push_back(line.substr(7));
+  }
+  ASSERT_EQ(kinds.size(), 8U) << all->body;
+  EXPECT_EQ(std::count(kinds.begin(), kinds.end(), "iteration"), 5);
+  EXPECT_EQ(kinds.back(), "state");
+  EXPECT_NE(all->body.find("\"state\":\"converged\""), std::string::npos);
+  // Reconnecting after the fourth event gives the rest only.
+  const httplib::Result rest = client.Get(path, {{"Last-Event-ID", std::to_string(ids[3])}});
+  EXPECT_EQ(std::count(rest->body.begin(), rest->body.end(), '\n') / 4, 4) << rest->body;
+  EXPECT_EQ(rest->body.find("id: " + std::to_string(ids[3]) + "\n"), std::string::npos);
+}
+
+TEST_F(Service, EventStreamsAreCappedSoOtherRoutesStayAvailable) {
+  ServerProcess server(database(), {"--max-streams", "1"});
+  httplib::Client client = server.client();
+  const std::int64_t job = submit(client, tilted_block_document(120).dump());
+  wait_for_state(client, job, {"running"});
+  std::atomic<bool> streaming{true};
+  std::thread watcher([&] {
+    httplib::Client c = server.client();
+    c.Get("/v1/jobs/" + std::to_string(job) + "/events",
+          [&](const char*, std::size_t) { return streaming.load(); });
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  const json busy = problem(client.Get("/v1/jobs/" + std::to_string(job) + "/events"), 503);
+  EXPECT_NE(busy["detail"].get<std::string>().find("too many"), std::string::npos);
+  EXPECT_EQ(client.Get("/healthz")->status, 200);
+  client.Post("/v1/jobs/" + std::to_string(job) + "/cancel", "", "application/json");
+  streaming = false;
+  watcher.join();
+}
+
+TEST_F(Service, IdempotencyKeyReplaysTheSameJob) {
+  ServerProcess server(database());
+  httplib::Client client = server.client();
+  const std::string body = example_text("report-problem1.json");
+  const std::int64_t first = submit(client, body, {{"Idempotency-Key", "abc-123"}});
+  const httplib::Result again = client.Post("/v1/jobs", {{"Idempotency-Key", "abc-123"}}, body, "application/json");
+  ASSERT_EQ(again->status, 202);
+  EXPECT_EQ(json::parse(again->body)["id"], first);
+  EXPECT_EQ(again->get_header_value("Idempotent-Replayed"), "true");
+  problem(client.Post("/v1/jobs", {{"Idempotency-Key", "abc-123"}}, example_text("report-problem2.json"), "application/json"), 409);
+  EXPECT_EQ(get_json(client, "/v1/jobs")["jobs"].size(), 1U);
+}
+
+TEST_F(Service, TokenFileTurnsOnBearerAuthentication) {
+  const fs::path token = dir_ / "token";
+  std::ofstream(token) << "s3cret-token\n";
+  ServerProcess server(database(), {"--token-file", token.string()});
+  httplib::Client client = server.client();
+  problem(client.Get("/v1/jobs"), 401);
+  EXPECT_EQ(client.Get("/healthz")->status, 200);
+  client.set_bearer_token_auth("s3cret-token");
+  EXPECT_EQ(client.Get("/v1/jobs")->status, 200);
+  client.set_bearer_token_auth("wrong");
+  problem(client.Get("/v1/jobs"), 401);
+}
+
+TEST_F(Service, RefusesUnsafeOrDoubleStarts) {
+  // Beyond loopback only with a token.
+  const CommandResult open = run_command({SAASGAPS_BINARY, "serve", "--host", "0.0.0.0", "--port", "0", "--db",
+                                          (dir_ / "open.db").string()});
+  EXPECT_NE(open.exit_code, 0);
+  EXPECT_NE(open.output.find("token"), std::string::npos) << open.output;
+  ServerProcess server(database());
+  // A second server on the same port fails instead of sharing it.
+  const CommandResult same_port = run_command({SAASGAPS_BINARY, "serve", "--port", std::to_string(server.port()),
+                                               "--db", (dir_ / "other.db").string()});
+  EXPECT_NE(same_port.exit_code, 0);
+  EXPECT_NE(same_port.output.find("cannot listen"), std::string::npos) << same_port.output;
+  // A second server on the same database fails instead of corrupting its jobs.
+  const CommandResult same_db = run_command({SAASGAPS_BINARY, "serve", "--port", "0", "--db", database().string()});
+  EXPECT_NE(same_db.exit_code, 0);
+  EXPECT_NE(same_db.output.find("in use"), std::string::npos) << same_db.output;
+}
+
+TEST_F(Service, GracefulStopInterruptsAndTheNextServerResumes) {
+  const std::string body = tilted_block_document(120).dump();
+  std::int64_t job = 0;
+  {
+    ServerProcess server(database());
+    httplib::Client client = server.client();
+    job = submit(client, body);
+    wait_for_iteration(client, job, 2);
+    EXPECT_EQ(server.stop(), 0);
+  }
+  ServerProcess restarted(database());
+  httplib::Client client = restarted.client();
+  const json done = wait_for_state(client, job, {"converged", "not_converged", "failed"});
+  EXPECT_EQ(done["state"], "converged");
+  EXPECT_EQ(done["interruptions"], 0);  // a clean stop is not a crash
+  EXPECT_EQ(result_numbers(get_json(client, "/v1/jobs/" + std::to_string(job) + "/result")),
+            result_numbers(solve_locally(body)));
+}
+
+}  // namespace
+}  // namespace saasgaps::testing
