@@ -4,6 +4,7 @@
 #include <cassert>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <sstream>
 
 #include "dof_map.hpp"
@@ -147,15 +148,24 @@ class GapContactAnalysis {
 
   /// Assembles what changed and solves K u = f into u_free_.
   void solve_linear_system(const MaterialState& solid, const GapModuli& moduli) {
+    // The symbolic analysis needs only the pattern: the first time, it runs on a second core while
+    // this one assembles.
+    std::future<std::unique_ptr<SparseCholesky>> analysed;
+    if (!cholesky_) {
+      analysed = std::async(std::launch::async, [this] {
+        return std::make_unique<SparseCholesky>(system_.pattern(), dofs_.node_of_equation());
+      });
+    }
     if (!assembled_solids_ || solid != assembled_materials_) {
-      system_.assemble_solids([&](std::size_t e) { return materials_.law(e, solid); });
+      SolidMaterials::LawMemo memo;
+      system_.assemble_solids([&](std::size_t e) { return materials_.law(e, solid, memo); });
       assembled_materials_ = solid;
       assembled_solids_ = true;
     }
     if (gaps_) {
       system_.assemble_gaps([&](std::size_t g) { return gaps_->law(g, moduli, model_.analysis); });
     }
-    if (!cholesky_) cholesky_ = std::make_unique<SparseCholesky>(system_.pattern());
+    if (analysed.valid()) cholesky_ = analysed.get();
     try {
       cholesky_->factorize(system_.values());
     } catch (const NotPositiveDefinite& e) {
@@ -203,9 +213,10 @@ class GapContactAnalysis {
   /// after a solve and after a resume, which is what makes a restart exact.
   void evaluate(RestartState& state, Evaluation& v) const {
     v.solids.resize(model_.elements.size());
+    SolidMaterials::LawMemo memo;
     for (std::size_t e = 0; e < model_.elements.size(); ++e) {
       const Element& el = model_.elements[e];
-      const ElementData data = solid_element_data(model_, e, materials_.law(e, state.materials));
+      const ElementData data = solid_element_data(model_, e, materials_.law(e, state.materials, memo));
       v.solids[e] = element_state(data, element_displacements(state.displacement, el.nodes, el.node_count));
     }
     materials_.update(state.materials, v.solids, model_.solver.plastic_tolerance, v.materials);

@@ -18,6 +18,7 @@ DofMap::DofMap(const Model& model)
     if (equation_[k] == prescribed_dof) continue;
     equation_[k] = free_count_++;
     owner_.push_back({model.nodes[k / 2].id, k % 2 == 0 ? 'r' : 'z'});
+    node_of_.push_back(static_cast<Index>(k / 2));
   }
 }
 

@@ -25,6 +25,10 @@ class DofMap {
   /// The node (by id) and direction of an equation number: the inverse map for error messages.
   [[nodiscard]] NodeDof node_dof(Index equation) const { return owner_[equation]; }
 
+  /// For each equation, the index of its node: the two components of a node share their couplings,
+  /// which lets the fill-reducing ordering work on nodes.
+  [[nodiscard]] const std::vector<Index>& node_of_equation() const { return node_of_; }
+
   /// Equation numbers of an element's 8 local DOFs (u_r, u_z per corner).
   [[nodiscard]] std::array<Index, 8> element_equations(const std::array<int, 4>& nodes, int node_count) const;
 
@@ -33,6 +37,7 @@ class DofMap {
   std::vector<Index> equation_;  // 2 per node
   std::vector<double> value_;    // prescribed values, 2 per node (0 for free components)
   std::vector<NodeDof> owner_;   // per equation
+  std::vector<Index> node_of_;   // per equation
 };
 
 }  // namespace saasgaps

@@ -49,6 +49,15 @@ Constitutive SolidMaterials::law(std::size_t e, const MaterialState& s) const {
   return constitutive(c, model_.analysis, model_.elements[e].angle_deg);
 }
 
+const Constitutive& SolidMaterials::law(std::size_t e, const MaterialState& s, LawMemo& memo) const {
+  const Element& el = model_.elements[e];
+  if (memo.material != el.material || memo.temperature != temperature_[e] || memo.angle != el.angle_deg ||
+      memo.secant_ratio != s.secant_ratio[e] || memo.compression != s.compression[e]) {
+    memo = {el.material, temperature_[e], el.angle_deg, s.secant_ratio[e], s.compression[e], law(e, s)};
+  }
+  return memo.law;
+}
+
 void SolidMaterials::update(const MaterialState& used, std::span<const ElementState> states, double tolerance,
                             MaterialUpdate& u) const {
   const std::size_t n = model_.elements.size();

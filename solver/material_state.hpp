@@ -41,6 +41,17 @@ class SolidMaterials {
   /// The law of solid element e under state s.
   [[nodiscard]] Constitutive law(std::size_t e, const MaterialState& s) const;
 
+  /// The last law computed and what it depended on: neighbouring elements usually share material,
+  /// temperature, angle and state, and then share the law (a 4x4 inversion and rotation saved).
+  struct LawMemo {
+    int material = -1;
+    double temperature = 0.0, angle = 0.0, secant_ratio = 0.0;
+    DirectionChoice compression = 0;
+    Constitutive law;
+  };
+  /// law(e, s), reusing memo when element e needs the same law as the last one.
+  [[nodiscard]] const Constitutive& law(std::size_t e, const MaterialState& s, LawMemo& memo) const;
+
   /// Strain invariance: from the element stresses of a solution built with `used`, read the secant
   /// modulus off the bilinear curve at the same effective strain, and the bimodulus choice from
   /// the stress signs. tolerance: relative change of E_s that still counts as converged. Writes into

@@ -3,11 +3,24 @@
 #include <cholmod.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 #include <cmath>
 #include <string>
+#include <thread>
+
+#include "cholmod_memory.hpp"
 
 namespace saasgaps {
+
+namespace {
+
+std::atomic<int> max_blas_threads{static_cast<int>(std::max(1U, std::thread::hardware_concurrency()))};
+
+/// Factorizations this big gain from parallel BLAS; smaller ones lose to thread overhead.
+constexpr double parallel_blas_flops = 1.0e10;
+
+}  // namespace
 
 struct SparseCholesky::Impl {
   const CscPattern& pattern;
@@ -19,8 +32,12 @@ struct SparseCholesky::Impl {
   cholmod_dense* E = nullptr;
   std::vector<Index> diagonal;  // position of A_jj in the value array
   std::vector<double> reference;  // |A_jj| of the last factorization
+  const char* ordering_name = "METIS";
+  double flops = 0.0;         // of one numeric factorization, from the analysis
+  double factor_entries = 0.0;
 
-  explicit Impl(const CscPattern& p) : pattern(p) {
+  Impl(const CscPattern& p, std::span<const Index> groups) : pattern(p) {
+    use_huge_pages_for_cholmod();
     cholmod_l_start(&common);
     common.print = 0;
     common.supernodal = CHOLMOD_SUPERNODAL;
@@ -51,18 +68,95 @@ struct SparseCholesky::Impl {
       assert(diagonal[j] >= 0 && "every unknown couples to itself");
     }
 
-    L = cholmod_l_analyze(&A, &common);
+    if (!groups.empty()) {
+      std::vector<Index> order = group_order(groups);
+      if (!order.empty()) {
+        common.method[0].ordering = CHOLMOD_GIVEN;
+        L = cholmod_l_analyze_p(&A, order.data(), nullptr, 0, &common);
+        ordering_name = "METIS on node groups";
+      }
+    }
+    if (L == nullptr) {
+      common.method[0].ordering = CHOLMOD_METIS;
+      L = cholmod_l_analyze(&A, &common);
+      ordering_name = "METIS";
+    }
     if (L == nullptr || common.status < CHOLMOD_OK) {
       // METIS can refuse odd graphs; AMD always works.
       if (L != nullptr) cholmod_l_free_factor(&L, &common);
       common.method[0].ordering = CHOLMOD_AMD;
       L = cholmod_l_analyze(&A, &common);
+      ordering_name = "AMD";
     }
     if (L == nullptr) {
       cholmod_l_finish(&common);
       throw std::runtime_error("CHOLMOD symbolic analysis failed (status " +
                                std::to_string(common.status) + ")");
     }
+    flops = common.fl;
+    factor_entries = common.lnz;
+  }
+
+  /// METIS on the graph whose vertices are the groups of unknowns, expanded to the unknowns (a
+  /// group's members stay together, in order). Empty when METIS fails.
+  std::vector<Index> group_order(std::span<const Index> groups) {
+    assert(static_cast<Index>(groups.size()) == pattern.n);
+    const Index count = groups.empty() ? 0 : *std::max_element(groups.begin(), groups.end()) + 1;
+    // Members of each group, CSR layout.
+    std::vector<Index> member_start(static_cast<size_t>(count) + 1, 0), members(groups.size());
+    for (Index g : groups) ++member_start[g + 1];
+    for (Index g = 0; g < count; ++g) member_start[g + 1] += member_start[g];
+    {
+      std::vector<Index> fill(member_start.begin(), member_start.end() - 1);
+      for (Index j = 0; j < pattern.n; ++j) members[fill[groups[j]]++] = j;
+    }
+    // The group graph, upper triangle by columns: group h is adjacent to g when some unknown of g
+    // couples to some unknown of h. Each unknown's column holds its couplings to lower unknowns and
+    // the upper ones see it from their own columns, so both directions are covered.
+    std::vector<std::vector<Index>> adjacency(static_cast<size_t>(count));
+    std::vector<Index> marker(static_cast<size_t>(count), -1);
+    for (Index g = 0; g < count; ++g) {
+      marker[g] = g;
+      for (Index m = member_start[g]; m < member_start[g + 1]; ++m) {
+        const Index j = members[m];
+        for (Index k = pattern.colptr[j]; k < pattern.colptr[j + 1]; ++k) {
+          const Index h = groups[pattern.rowind[k]];
+          if (marker[h] == g) continue;
+          marker[h] = g;
+          if (h < g) adjacency[g].push_back(h); else adjacency[h].push_back(g);
+        }
+      }
+    }
+    std::vector<Index> colptr(static_cast<size_t>(count) + 1, 0), rowind;
+    for (Index g = 0; g < count; ++g) {
+      std::sort(adjacency[g].begin(), adjacency[g].end());
+      adjacency[g].erase(std::unique(adjacency[g].begin(), adjacency[g].end()), adjacency[g].end());
+      colptr[g + 1] = colptr[g] + static_cast<Index>(adjacency[g].size());
+    }
+    rowind.reserve(static_cast<size_t>(colptr[count]));
+    for (auto& column : adjacency) {
+      rowind.insert(rowind.end(), column.begin(), column.end());
+      std::vector<Index>().swap(column);
+    }
+    cholmod_sparse G{};
+    G.nrow = G.ncol = static_cast<size_t>(count);
+    G.nzmax = rowind.size();
+    G.p = colptr.data();
+    G.i = rowind.data();
+    G.stype = 1;
+    G.itype = CHOLMOD_LONG;
+    G.xtype = CHOLMOD_PATTERN;
+    G.dtype = CHOLMOD_DOUBLE;
+    G.sorted = 1;
+    G.packed = 1;
+    std::vector<Index> group_perm(static_cast<size_t>(count));
+    if (!cholmod_l_metis(&G, nullptr, 0, 0, group_perm.data(), &common)) return {};
+    std::vector<Index> order;
+    order.reserve(groups.size());
+    for (Index g : group_perm) {
+      for (Index m = member_start[g]; m < member_start[g + 1]; ++m) order.push_back(members[m]);
+    }
+    return order;
   }
 
   ~Impl() {
@@ -150,7 +244,10 @@ struct SparseCholesky::Impl {
   }
 };
 
-SparseCholesky::SparseCholesky(const CscPattern& pattern) : impl_(std::make_unique<Impl>(pattern)) {}
+SparseCholesky::SparseCholesky(const CscPattern& pattern, std::span<const Index> groups)
+    : impl_(std::make_unique<Impl>(pattern, groups)) {}
+
+void SparseCholesky::set_max_blas_threads(int threads) { max_blas_threads = std::max(1, threads); }
 
 SparseCholesky::~SparseCholesky() = default;
 
@@ -159,6 +256,7 @@ void SparseCholesky::factorize(std::span<const double> values) {
   assert(static_cast<Index>(values.size()) == m.pattern.nnz());
   m.reference.resize(static_cast<size_t>(m.pattern.n));
   for (Index j = 0; j < m.pattern.n; ++j) m.reference[j] = std::abs(values[m.diagonal[j]]);
+  set_blas_threads(m.flops >= parallel_blas_flops ? max_blas_threads.load() : 1);
   Index worst = -1;
   if (!m.factor_cleanly(values.data(), singular_pivot_ratio, worst)) {
     throw NotPositiveDefinite("the stiffness matrix is singular", m.breakdown_columns(values, worst));
@@ -185,15 +283,8 @@ void SparseCholesky::solve(std::span<const double> b, std::span<double> x) {
 }
 
 Index SparseCholesky::size() const { return impl_->pattern.n; }
-double SparseCholesky::factor_nonzeros() const { return impl_->common.lnz; }
-double SparseCholesky::factor_flops() const { return impl_->common.fl; }
-const char* SparseCholesky::ordering() const {
-  switch (impl_->L->ordering) {
-    case CHOLMOD_METIS: return "METIS";
-    case CHOLMOD_AMD: return "AMD";
-    case CHOLMOD_NESDIS: return "NESDIS";
-    default: return "other";
-  }
-}
+double SparseCholesky::factor_nonzeros() const { return impl_->factor_entries; }
+double SparseCholesky::factor_flops() const { return impl_->flops; }
+const char* SparseCholesky::ordering() const { return impl_->ordering_name; }
 
 }  // namespace saasgaps

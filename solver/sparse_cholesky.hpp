@@ -32,7 +32,10 @@ class SparseCholesky {
   static constexpr double singular_pivot_ratio = 1.0e-12;
 
   /// Symbolic analysis of an upper-triangular pattern. The pattern must outlive this object.
-  explicit SparseCholesky(const CscPattern& pattern);
+  /// groups (optional, one entry per unknown): unknowns with the same group share their sparsity
+  /// (the two displacement components of a node). The fill-reducing ordering is then computed on
+  /// the graph of groups, about four times smaller, and expanded; without groups, on the unknowns.
+  explicit SparseCholesky(const CscPattern& pattern, std::span<const Index> groups = {});
   ~SparseCholesky();
   SparseCholesky(const SparseCholesky&) = delete;
   SparseCholesky& operator=(const SparseCholesky&) = delete;
@@ -48,6 +51,11 @@ class SparseCholesky {
   [[nodiscard]] double factor_nonzeros() const;  ///< nnz(L)
   [[nodiscard]] double factor_flops() const;     ///< floating-point operations of one factorization
   [[nodiscard]] const char* ordering() const;    ///< the fill-reducing ordering in use
+
+  /// Most BLAS threads a factorization may use (default: the cores). Factorizations under about
+  /// 10 Gflop run on one: below that the threads cost more than they give (measured on 2 cores).
+  /// A server solving several jobs at once sets 1.
+  static void set_max_blas_threads(int threads);
 
  private:
   struct Impl;

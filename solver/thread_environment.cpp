@@ -2,18 +2,15 @@
 
 #include <unistd.h>
 
-#include <algorithm>
 #include <cstdlib>
-#include <string>
-#include <thread>
 
 namespace saasgaps {
 
 void ensure_thread_environment(char** argv) {
   if (std::getenv("OMP_THREAD_LIMIT") != nullptr) return;
-  const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
-  setenv("OMP_THREAD_LIMIT", std::to_string(cores).c_str(), 1);
-  setenv("OPENBLAS_NUM_THREADS", "1", 0);  // 0: keep the user's choice
+  // CHOLMOD's OpenMP loops gain nothing here and fight OpenBLAS's threads for the cores; the
+  // parallelism goes to the BLAS instead (SparseCholesky sets its thread count per factorization).
+  setenv("OMP_THREAD_LIMIT", "1", 1);
   // If the re-exec fails we simply carry on with the library defaults: slower, still correct.
   execv("/proc/self/exe", argv);
 }

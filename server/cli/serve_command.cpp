@@ -4,12 +4,17 @@
 #include <netinet/in.h>
 #include <sys/socket.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <csignal>
 #include <iostream>
 #include <stdexcept>
 #include <thread>
 
 #include "cli/file_io.hpp"
+#include "sparse_cholesky.hpp"
 #include "service/event_hub.hpp"
 #include "service/http_api.hpp"
 #include "service/job_runner.hpp"
@@ -32,6 +37,16 @@ std::string read_token(const std::string& path) {
   return token;
 }
 
+/// The write end of the self-pipe that turns SIGINT / SIGTERM into a shutdown. A handler, not a
+/// blocked mask and sigwait: libraries (OpenBLAS) start threads before main(), and a signal
+/// delivered to one of those would otherwise kill the process instead of stopping it cleanly.
+int shutdown_pipe_write = -1;
+
+extern "C" void request_shutdown(int) {
+  const char byte = 1;
+  [[maybe_unused]] const ssize_t written = write(shutdown_pipe_write, &byte, 1);
+}
+
 /// SO_REUSEADDR only: cpp-httplib's default also sets SO_REUSEPORT, which would let a second server
 /// share the port (and steal half the connections) instead of failing to start.
 void exclusive_port(socket_t sock) {
@@ -49,12 +64,18 @@ int run_serve(const ServeOptions& options) {
                              " without authentication: give --token-file, or listen on 127.0.0.1");
   }
 
-  // Signals go to a dedicated thread: block them before any other thread exists.
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  int shutdown_pipe[2];
+  if (pipe2(shutdown_pipe, O_CLOEXEC) != 0) throw std::runtime_error("cannot create the shutdown pipe");
+  shutdown_pipe_write = shutdown_pipe[1];
+  struct sigaction action {};
+  action.sa_handler = request_shutdown;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+
+  // Jobs solved side by side share the cores: each factorization then runs its BLAS on one thread.
+  if (options.workers > 1) SparseCholesky::set_max_blas_threads(1);
 
   service::DatabaseLock lock(options.database);
   service::JobStore store(options.database, options.max_interruptions);
@@ -78,9 +99,10 @@ int run_serve(const ServeOptions& options) {
   }
 
   service::JobRunner runner(store, hub, options.workers);
-  std::thread signal_waiter([&server, signals] {
-    int received = 0;
-    sigwait(&signals, &received);
+  std::thread signal_waiter([&server, read_end = shutdown_pipe[0]] {
+    char byte = 0;
+    while (read(read_end, &byte, 1) < 0 && errno == EINTR) {
+    }
     server.stop();
   });
   std::cout << "saasgaps serve: listening on http://" << options.host << ":" << port << " (database "
@@ -89,8 +111,8 @@ int run_serve(const ServeOptions& options) {
   std::cout << ")" << std::endl;
 
   const bool clean = server.listen_after_bind();
-  // Stop the signal thread if listening ended for another reason.
-  pthread_kill(signal_waiter.native_handle(), SIGTERM);
+  // Wake the signal thread if listening ended for another reason.
+  request_shutdown(0);
   signal_waiter.join();
   std::cout << "saasgaps serve: stopping; running jobs halt at their next iteration boundary" << std::endl;
   return clean ? 0 : 1;

@@ -134,7 +134,8 @@ int main(int argc, char** argv) {
     dofs = std::make_unique<DofMap>(m);
     system = std::make_unique<StiffnessSystem>(m, *dofs);
   });
-  assembly_s = timed([&] { system->assemble_solids([&](std::size_t e) { return materials.law(e, state); }); });
+  SolidMaterials::LawMemo memo;
+  assembly_s = timed([&] { system->assemble_solids([&](std::size_t e) { return materials.law(e, state, memo); }); });
 
   std::unique_ptr<GapClosure> gaps;
   GapModuli moduli;
@@ -144,7 +145,7 @@ int main(int argc, char** argv) {
     system->assemble_gaps([&](std::size_t g) { return gaps->law(g, moduli, m.analysis); });
   }
   std::unique_ptr<SparseCholesky> cholesky;
-  symbolic_s = timed([&] { cholesky = std::make_unique<SparseCholesky>(system->pattern()); });
+  symbolic_s = timed([&] { cholesky = std::make_unique<SparseCholesky>(system->pattern(), dofs->node_of_equation()); });
   first_numeric_s = timed([&] { cholesky->factorize(system->values()); });
   numeric_s = timed([&] { cholesky->factorize(system->values()); });
   u.resize(static_cast<std::size_t>(dofs->size()));
