@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "analysis.hpp"
 #include "dof_map.hpp"
 #include "element_data.hpp"
 #include "gap_closure.hpp"
@@ -115,9 +116,13 @@ int main(int argc, char** argv) {
   double target_dofs = 1.0e5;
   bool with_gaps = false;
   bool baseline = false;
+  bool end_to_end = false;
   app.add_option("--dofs", target_dofs, "Approximate number of degrees of freedom")->check(CLI::Range(100.0, 1.0e8));
   app.add_flag("--gaps", with_gaps, "Cut the block by a row of gap elements and time a gap iteration");
   app.add_flag("--baseline", baseline, "Also time Eigen's triplet assembly (after the peak memory reading)");
+  app.add_flag("--end-to-end", end_to_end,
+               "Also time one whole iteration as saasgaps solve runs it (fresh objects; symbolic analysis "
+               "beside the assembly; stress recovery)");
   CLI11_PARSE(app, argc, argv);
 
   const int n = std::max(2, static_cast<int>(std::lround(std::sqrt(target_dofs / 2.0))) - 1);
@@ -177,6 +182,12 @@ int main(int argc, char** argv) {
   std::printf("%-44s %10.0f\n", "peak memory (MiB)", peak);
   std::printf("ratio assembly / repeated factorization: %.3f\n", assembly_s / numeric_s);
   if (with_gaps) std::printf("ratio gap iteration / repeated factorization: %.3f\n", gap_iteration_s / numeric_s);
+  if (end_to_end) {
+    ResumeOptions one_iteration;
+    one_iteration.max_iterations = 1;
+    const double first_iteration_s = timed([&] { (void)solve(m, nullptr, nullptr, one_iteration); });
+    std::printf("%-44s %10.3f\n", "end to end: first iteration of solve()", first_iteration_s);
+  }
   if (baseline) {
     const double triplet_s = triplet_assembly_seconds(m, *dofs, materials, state);
     std::printf("%-44s %10.3f\n", "baseline: Eigen triplet assembly", triplet_s);
