@@ -14,14 +14,25 @@ double element_temperature(const Model& model, const std::array<int, 4>& nodes, 
   return sum / node_count;
 }
 
-ElementData solid_element_data(const Model& model, std::size_t e, const Constitutive& law) {
-  const Element& el = model.elements[e];
+namespace {
+
+/// What solid and gap elements share: corners, analysis, thickness, law.
+ElementData element_geometry(const Model& model, const std::array<int, 4>& nodes, int node_count,
+                             const Constitutive& law) {
   ElementData d;
-  d.node_count = el.node_count;
-  d.x = corner_coordinates(model, el.nodes, el.node_count);
+  d.node_count = node_count;
+  d.x = corner_coordinates(model, nodes, node_count);
   d.analysis = model.analysis;
   d.thickness = model.thickness;
   d.law = law;
+  return d;
+}
+
+}  // namespace
+
+ElementData solid_element_data(const Model& model, std::size_t e, const Constitutive& law) {
+  const Element& el = model.elements[e];
+  ElementData d = element_geometry(model, el.nodes, el.node_count, law);
   for (int a = 0; a < el.node_count; ++a) {
     d.dT[a] = model.loads.node_temperature[el.nodes[a]] - model.reference_temperature;
   }
@@ -34,13 +45,7 @@ ElementData solid_element_data(const Model& model, std::size_t e, const Constitu
 
 ElementData gap_element_data(const Model& model, std::size_t g, const Constitutive& law) {
   const GapElement& gap = model.gaps->elements[g];
-  ElementData d;
-  d.node_count = gap.node_count;
-  d.x = corner_coordinates(model, gap.nodes, gap.node_count);
-  d.analysis = model.analysis;
-  d.thickness = model.thickness;
-  d.law = law;
-  return d;
+  return element_geometry(model, gap.nodes, gap.node_count, law);
 }
 
 }  // namespace saasgaps
