@@ -74,19 +74,19 @@ void SolidMaterials::update(const MaterialState& used, std::span<const ElementSt
     const Vec4& stress = states[e].stress;
 
     if (!m.compression_table.empty()) {
+      // A direction switches tables only when it carries stress: a component that is zero up to
+      // round-off has no sign worth following, and flipping on it would never settle.
       const Vec4 material_stress = stress_in_material_axes(stress, el.angle_deg);
-      const DirectionChoice choice = compression_directions(material_stress);
-      // A flip in a direction that carries almost no stress changes almost nothing; it must not keep
-      // the iteration going forever, so only flips in stressed directions count.
       const double scale = material_stress.cwiseAbs().maxCoeff();
-      const DirectionChoice flipped = choice ^ used.compression[e];
+      const DirectionChoice signs = compression_directions(material_stress);
+      DirectionChoice choice = used.compression[e];
       const std::array<int, 3> component{0, 1, 3};
       for (int d = 0; d < 3; ++d) {
-        if ((flipped >> d & 1U) && std::abs(material_stress[component[d]]) > tolerance * scale) {
-          ++u.bimodulus_changes;
-          break;
-        }
+        if (std::abs(material_stress[component[d]]) <= tolerance * scale) continue;
+        const auto bit = static_cast<DirectionChoice>(1U << d);
+        choice = static_cast<DirectionChoice>((choice & ~bit) | (signs & bit));
       }
+      if (choice != used.compression[e]) ++u.bimodulus_changes;
       u.next.compression[e] = choice;
     }
 

@@ -2,7 +2,8 @@
 /// The nonlinear material iteration of SAAS III: each solid element's stiffness is built from the
 /// previous solution (strain invariance), through
 ///  - a secant modulus on the bilinear effective stress-strain curve (plasticity), and
-///  - the tension or compression table per material direction, by the sign of its stress (bimodulus).
+///  - the tension or compression table per material direction, by the sign of its stress (bimodulus);
+///    a direction whose stress is below the plastic tolerance of the element's largest keeps its table.
 
 #include <span>
 #include <vector>
@@ -28,7 +29,7 @@ struct MaterialUpdate {
   std::vector<bool> converged;  ///< N-L/CONV?: the secant modulus no longer changes
   int yielded_count = 0;
   int nonconverged_count = 0;
-  int bimodulus_changes = 0;    ///< elements whose direction choice changed in a stressed direction
+  int bimodulus_changes = 0;    ///< elements whose choice changed (only stressed directions change)
 };
 
 class SolidMaterials {

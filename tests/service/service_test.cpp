@@ -103,6 +103,36 @@ TEST_F(Service, ReportProblem3GivesTheSameResultAsSolve) {
   EXPECT_EQ(rows.front()["iteration"], 11);
 }
 
+TEST_F(Service, PlotsAndVtuOfAStoredResult) {
+  ServerProcess server(database());
+  httplib::Client client = server.client();
+  const std::int64_t job = submit(client, example_text("report-problem3-case1.json"));
+  wait_for_state(client, job, {"converged"});
+  const std::string path = "/v1/jobs/" + std::to_string(job);
+  const httplib::Result png = client.Get(path + "/plots/effective.png?deformed=auto&width=640&height=400");
+  ASSERT_EQ(png->status, 200) << png->body;
+  EXPECT_EQ(png->get_header_value("Content-Type"), "image/png");
+  EXPECT_EQ(png->body.substr(1, 3), "PNG");
+  const httplib::Result svg = client.Get(path + "/plots/closure.svg");
+  ASSERT_EQ(svg->status, 200) << svg->body;
+  EXPECT_EQ(svg->get_header_value("Content-Type"), "image/svg+xml");
+  EXPECT_NE(svg->body.find("<svg"), std::string::npos);
+  EXPECT_EQ(client.Get(path + "/plots/convergence.png")->status, 200);
+  const httplib::Result vtu = client.Get(path + "/result.vtu");
+  ASSERT_EQ(vtu->status, 200);
+  EXPECT_NE(vtu->body.find("<UnstructuredGrid>"), std::string::npos);
+  // An unknown field is a 404 that lists the fields; bad options are a 400.
+  const json unknown = problem(client.Get(path + "/plots/stress_of_doom.png"), 404);
+  EXPECT_NE(unknown["detail"].get<std::string>().find("sigma_theta"), std::string::npos) << unknown.dump();
+  problem(client.Get(path + "/plots/effective.png?deformed=lots"), 400);
+  problem(client.Get(path + "/plots/effective.png?width=5"), 400);
+  // The dashboard is served from the binary.
+  const httplib::Result page = client.Get("/");
+  ASSERT_EQ(page->status, 200);
+  EXPECT_NE(page->body.find("SAASGAPS"), std::string::npos);
+  EXPECT_EQ(client.Get("/app.js")->status, 200);
+}
+
 TEST_F(Service, EveryBadRequestClassGetsItsStatusAndAPointer) {
   ServerProcess server(database(), {"--max-body", "65536"});
   httplib::Client client = server.client();
