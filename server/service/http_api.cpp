@@ -290,8 +290,12 @@ void HttpApi::install(httplib::Server& server) {
     });
   }
   server.Get("/healthz", [this](const httplib::Request&, httplib::Response& res) {
-    send_json(res, 200, {{"status", "ok"}, {"queue_length", store_.queue_length()}, {"running", store_.running_count()},
-                         {"workers", options_.workers}});
+    send_json(res, 200, {{"status", "ok"},
+                         {"queue_length", store_.queue_length()},
+                         {"running", store_.running_count()},
+                         {"workers", options_.workers},
+                         {"event_streams", open_streams_.load()},
+                         {"max_event_streams", options_.max_streams}});
   });
 }
 

@@ -310,7 +310,10 @@ TEST_F(Service, EventStreamsAreCappedSoOtherRoutesStayAvailable) {
     c.Get("/v1/jobs/" + std::to_string(job) + "/events",
           [&](const char*, std::size_t) { return streaming.load(); });
   });
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  for (int attempt = 0; attempt < 600 && get_json(client, "/healthz")["event_streams"] != 1; ++attempt) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_EQ(get_json(client, "/healthz")["event_streams"], 1);
   const json busy = problem(client.Get("/v1/jobs/" + std::to_string(job) + "/events"), 503);
   EXPECT_NE(busy["detail"].get<std::string>().find("too many"), std::string::npos);
   EXPECT_EQ(client.Get("/healthz")->status, 200);
