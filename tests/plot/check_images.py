@@ -16,7 +16,6 @@ import argparse
 import json
 import pathlib
 import re
-import subprocess
 import sys
 import tempfile
 import xml.etree.ElementTree as ET
@@ -24,19 +23,7 @@ import xml.etree.ElementTree as ET
 from PIL import Image
 
 SVG = "{http://www.w3.org/2000/svg}"
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL:", message)
-
-
-def run(saasgaps, *args):
-    done = subprocess.run([saasgaps, *args], capture_output=True, text=True)
-    if done.returncode != 0:
-        sys.exit(f"saasgaps {' '.join(args)} failed ({done.returncode}): {done.stderr}")
+from checking import check, failures, run
 
 
 def check_png(path, width, height):

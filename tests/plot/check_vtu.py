@@ -14,7 +14,6 @@ and state code, the coordinates).
 import argparse
 import json
 import pathlib
-import subprocess
 import sys
 import tempfile
 
@@ -22,19 +21,7 @@ import meshio
 import numpy
 
 STATE_CODES = {"open": 0, "partial": 1, "closed": 2, "overclosed": 3}
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL:", message)
-
-
-def run(saasgaps, *args):
-    done = subprocess.run([saasgaps, *args], capture_output=True, text=True)
-    if done.returncode != 0:
-        sys.exit(f"saasgaps {' '.join(args)} failed ({done.returncode}): {done.stderr}")
+from checking import check, failures, run
 
 
 def cell_array(mesh, name):

@@ -1,0 +1,20 @@
+"""What the plot checks share: recording failures, and running the saasgaps binary."""
+
+import subprocess
+import sys
+
+failures = []
+
+
+def check(condition, message):
+    """Records a failed check and goes on, so one run reports every failure."""
+    if not condition:
+        failures.append(message)
+        print("FAIL:", message)
+
+
+def run(saasgaps, *args):
+    """Runs saasgaps with args; a failure ends the check with its stderr."""
+    done = subprocess.run([saasgaps, *args], capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit(f"saasgaps {' '.join(args)} failed ({done.returncode}): {done.stderr}")
