@@ -17,15 +17,11 @@ const std::array<LocalPair, 36> upper_pairs = [] {
 }();
 
 StiffnessSystem::StiffnessSystem(const Model& model, const DofMap& dofs) : model_(model), dofs_(dofs) {
-  const std::size_t solids = model.elements.size();
-  const std::size_t slots = solids + model.gap_count();
+  const std::size_t slots = model.elements.size() + model.gap_count();
   equations_.resize(slots);
-  for (std::size_t e = 0; e < solids; ++e) {
-    equations_[e] = dofs.element_equations(model.elements[e].nodes, model.elements[e].node_count);
-  }
-  for (std::size_t g = 0; g < model.gap_count(); ++g) {
-    const GapElement& gap = model.gaps->elements[g];
-    equations_[solids + g] = dofs.element_equations(gap.nodes, gap.node_count);
+  for (std::size_t s = 0; s < slots; ++s) {
+    const SlotNodes corners = slot_nodes(s);
+    equations_[s] = dofs.element_equations(corners.nodes, corners.count);
   }
 
   pattern_ = CscPattern::from_cliques(dofs.size(), slots, [this](std::size_t s) {
@@ -40,17 +36,17 @@ StiffnessSystem::StiffnessSystem(const Model& model, const DofMap& dofs) : model
       const auto [a, b] = upper_pairs[k];
       if (eq[a] >= 0 && eq[b] >= 0) scatter_[36 * s + k] = pattern_.find(eq[a], eq[b]);
     }
-    const auto& nodes = s < solids ? model.elements[s].nodes : model.gaps->elements[s - solids].nodes;
-    const int count = s < solids ? model.elements[s].node_count : model.gaps->elements[s - solids].node_count;
-    for (int a = 0; a < count; ++a) {
+    const SlotNodes corners = slot_nodes(s);
+    for (int a = 0; a < corners.count; ++a) {
       for (int dir = 0; dir < 2; ++dir) {
-        if (dofs.equation(nodes[a], dir) == DofMap::prescribed_dof && dofs.prescribed(nodes[a], dir) != 0.0) {
+        const int node = corners.nodes[a];
+        if (dofs.equation(node, dir) == DofMap::prescribed_dof && dofs.prescribed(node, dir) != 0.0) {
           has_prescribed_[s] = true;
         }
       }
     }
   }
-  for (std::size_t s = solids; s < slots; ++s) {
+  for (std::size_t s = model.elements.size(); s < slots; ++s) {
     for (int k = 0; k < 36; ++k) {
       if (scatter_[36 * s + k] >= 0) gap_positions_.push_back(scatter_[36 * s + k]);
     }
@@ -63,6 +59,13 @@ StiffnessSystem::StiffnessSystem(const Model& model, const DofMap& dofs) : model
   rhs_.assign(static_cast<std::size_t>(dofs.size()), 0.0);
   solid_rhs_.assign(rhs_.size(), 0.0);
   assemble_external_loads();
+}
+
+StiffnessSystem::SlotNodes StiffnessSystem::slot_nodes(std::size_t slot) const {
+  const std::size_t solids = model_.elements.size();
+  if (slot < solids) return {model_.elements[slot].nodes, model_.elements[slot].node_count};
+  const GapElement& gap = model_.gaps->elements[slot - solids];
+  return {gap.nodes, gap.node_count};
 }
 
 void StiffnessSystem::assemble_external_loads() {
@@ -102,8 +105,7 @@ void StiffnessSystem::scatter(std::size_t slot, const ElementMatrices& m, std::v
   }
   if (!has_prescribed_[slot]) return;
   // Move K_fp u_p of prescribed displacements to the right-hand side.
-  const std::size_t solids = model_.elements.size();
-  const auto& nodes = slot < solids ? model_.elements[slot].nodes : model_.gaps->elements[slot - solids].nodes;
+  const auto& nodes = slot_nodes(slot).nodes;
   for (int b = 0; b < 8; ++b) {
     if (eq[b] != DofMap::prescribed_dof) continue;
     const double u = dofs_.prescribed(nodes[b / 2], b % 2);

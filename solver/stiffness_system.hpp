@@ -42,6 +42,13 @@ class StiffnessSystem {
   void scatter(std::size_t slot, const ElementMatrices& m, std::vector<double>& rhs);
   void assemble_external_loads();
 
+  /// The corner nodes of a slot: solid elements first, then gap elements.
+  struct SlotNodes {
+    const std::array<int, 4>& nodes;
+    int count;
+  };
+  [[nodiscard]] SlotNodes slot_nodes(std::size_t slot) const;
+
   const Model& model_;
   const DofMap& dofs_;
   CscPattern pattern_;
