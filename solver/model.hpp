@@ -75,7 +75,14 @@ enum class GapConvergenceTest {
   strict,  ///< also demands that gaps which do not touch have fallen to the schedule's floor modulus
 };
 
+/// How the gap elements are solved.
+enum class GapMethod {
+  classic,  ///< the report's stress-invariance iteration of section II (reproduces Tables I-III)
+  exact,    ///< gap elements give node pairs; frictionless unilateral contact solved exactly
+};
+
 struct GapSettings {
+  GapMethod method = GapMethod::classic;
   double initial_modulus = 100.0;          ///< E0, every gap's modulus in iteration 1
   std::vector<double> tensile_schedule;    ///< tensile moduli from iteration 2 on; last = floor
   double extrapolation_factor = 0.0;       ///< XFACT, 0 <= f < 1 (0: no extrapolation)
@@ -135,9 +142,19 @@ struct OutputOptions {
   std::vector<int> watch_gaps;      ///< indices into GapSettings::elements
 };
 
+/// Names of the model's units, for people: the solver never converts (units must be consistent).
+/// An empty name was not given.
+struct Units {
+  std::string length;
+  std::string force;
+  std::string stress;
+  std::string temperature;
+};
+
 struct Model {
   std::string title;
   std::string description;
+  Units units;
   AnalysisType analysis = AnalysisType::plane_stress;
   double thickness = 1.0;              ///< plane analyses
   double reference_temperature = 0.0;  ///< stress-free temperature

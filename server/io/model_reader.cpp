@@ -214,6 +214,8 @@ ElasticConstants constants_of(const PropertyRow& row) {
 constexpr std::array<std::string_view, 3> analysis_names{"plane_stress", "plane_strain", "axisymmetric"};
 constexpr std::array<std::string_view, 2> elastic_names{"isotropic", "orthotropic"};
 constexpr std::array<std::string_view, 2> convergence_test_names{"report", "strict"};
+constexpr std::array<std::string_view, 2> gap_method_names{"classic", "exact"};
+constexpr std::array<std::string_view, 4> unit_names{"length", "force", "stress", "temperature"};
 
 /// An object of the document (already checked by Reader::object) and its pointer.
 struct Obj {
@@ -318,6 +320,7 @@ class Reader {
 
   // Sections, in document order.
   void read_header(const Obj& root);
+  void read_units(const Obj& root);
   void read_analysis(const Obj& root);
   void read_nodes(const Obj& root);
   void read_materials(const Obj& root);
@@ -675,7 +678,7 @@ std::vector<PlasticityRow> Reader::read_plasticity(const Obj& o) {
 
 Model Reader::read(const json& document) {
   if (object(document, "", {"schema_version", "title", "analysis", "nodes", "materials", "elements", "constraints"},
-             {"description", "gaps", "loads", "solver", "output"})) {
+             {"description", "units", "gaps", "loads", "solver", "output"})) {
     const Obj root{document, ""};
     // Order matters: analysis before nodes (r >= 0), nodes and materials before the elements that
     // use them, every element before pressures and watch lists.
@@ -704,6 +707,28 @@ void Reader::read_header(const Obj& root) {
   }
   model_.title = string_field(root, "title").value_or("");
   model_.description = string_field(root, "description").value_or("");
+  read_units(root);
+}
+
+/// Optional names of the units (length, force, stress, temperature), each an optional non-empty
+/// string; the solver never converts, so these are labels for results, plots and VTU fields.
+void Reader::read_units(const Obj& root) {
+  const json* v = root.find("units");
+  if (v == nullptr) return;
+  const std::string pointer = root.at("units");
+  if (!check_object(*v, pointer, {}, unit_names)) return;
+  const Obj o{*v, pointer};
+  std::array<std::string*, 4> targets{&model_.units.length, &model_.units.force, &model_.units.stress,
+                                      &model_.units.temperature};
+  for (std::size_t i = 0; i < unit_names.size(); ++i) {
+    const auto name = string_field(o, unit_names[i]);
+    if (!name) continue;
+    if (name->empty()) {
+      report(o.at(unit_names[i]), std::string(unit_names[i]) + " must be a non-empty unit name, got \"\"");
+      continue;
+    }
+    *targets[i] = *name;
+  }
 }
 
 /// type is one of three; thickness > 0 and only in plane analyses; reference_temperature a number.
@@ -813,12 +838,13 @@ void Reader::read_gaps(const Obj& root) {
   if (v == nullptr) return;
   const std::string pointer = root.at("gaps");
   if (!object(*v, pointer, {"initial_modulus", "tensile_schedule", "elements"},
-              {"extrapolation_factor", "closure_tolerance", "shear_ratio", "convergence_test"})) {
+              {"method", "extrapolation_factor", "closure_tolerance", "shear_ratio", "convergence_test"})) {
     gaps_complete_ = false;
     return;
   }
   const Obj g{*v, pointer};
   GapSettings& s = model_.gaps.emplace();
+  if (const auto method = choice_field(g, "method", gap_method_names)) s.method = static_cast<GapMethod>(*method);
   s.initial_modulus = number_field(g, "initial_modulus", positive).value_or(s.initial_modulus);
   if (const json* schedule = array_field(g, "tensile_schedule", 1)) {
     for (std::size_t i = 0; i < schedule->size(); ++i) {

@@ -297,6 +297,25 @@ TEST(ModelReader, AbsentOptionalKeysTakeTheirDefaults) {
   EXPECT_DOUBLE_EQ(g.closure_tolerance, 0.05);
   EXPECT_DOUBLE_EQ(g.shear_ratio, 1e-6);
   EXPECT_EQ(g.convergence_test, GapConvergenceTest::report);
+  EXPECT_EQ(g.method, GapMethod::classic);
+  EXPECT_TRUE(read_model(gaps).units.stress.empty());
+}
+
+TEST(ModelReader, ReadsTheGapMethodAndTheUnitNames) {
+  json doc = with(valid_model(), "/gaps/method", "exact");
+  doc["units"] = {{"length", "mm"}, {"force", "N"}, {"stress", "MPa"}, {"temperature", "degC"}};
+  const Model m = read_model(doc);
+  EXPECT_EQ(m.gaps->method, GapMethod::exact);
+  EXPECT_EQ(m.units.length, "mm");
+  EXPECT_EQ(m.units.force, "N");
+  EXPECT_EQ(m.units.stress, "MPa");
+  EXPECT_EQ(m.units.temperature, "degC");
+
+  json some = valid_model();
+  some["units"] = {{"stress", "psi"}};
+  const Model partial = read_model(some);
+  EXPECT_EQ(partial.units.stress, "psi");
+  EXPECT_TRUE(partial.units.length.empty());
 }
 
 TEST(ModelReader, TemperatureDefaultIsTheReferenceTemperatureSoNoLoadMeansNoThermalStrain) {
@@ -659,6 +678,22 @@ TEST(ModelReaderRules, ShearRatioIsPositive) {
 TEST(ModelReaderRules, ConvergenceTestIsReportOrStrict) {
   EXPECT_TRUE(rejects(with(valid_model(), "/gaps/convergence_test", "lenient"), "/gaps/convergence_test",
                       {"\"lenient\"", "report, strict"}));
+}
+
+TEST(ModelReaderRules, GapMethodIsClassicOrExact) {
+  EXPECT_TRUE(rejects(with(valid_model(), "/gaps/method", "penalty"), "/gaps/method", {"\"penalty\"", "classic, exact"}));
+}
+
+TEST(ModelReaderRules, UnitsAreNamedByNonEmptyStrings) {
+  json doc = valid_model();
+  doc["units"] = {{"stress", ""}};
+  EXPECT_TRUE(rejects(doc, "/units/stress", {"non-empty"}));
+  doc["units"] = {{"length", 1}};
+  EXPECT_TRUE(rejects(doc, "/units/length", {"string"}));
+  doc["units"] = {{"time", "s"}};
+  EXPECT_TRUE(rejects(doc, "/units/time", {"time"}));
+  doc["units"] = "psi";
+  EXPECT_TRUE(rejects(doc, "/units", {}));
 }
 
 TEST(ModelReaderRules, GapElementsAreNonEmpty) {

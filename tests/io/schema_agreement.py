@@ -73,6 +73,7 @@ def edits(doc, *changes):
 
 def gap_model(quickstart):
     doc = copy.deepcopy(quickstart)
+    doc["units"] = {"length": "in", "force": "lbf", "stress": "psi", "temperature": "degF"}
     doc["nodes"] += [
         {"id": 10, "r": 0.0, "z": -0.01},
         {"id": 11, "r": 1.0, "z": -0.01},
@@ -85,6 +86,7 @@ def gap_model(quickstart):
         "closure_tolerance": 0.05,
         "shear_ratio": 1e-6,
         "convergence_test": "report",
+        "method": "classic",
         "elements": [
             {"id": 13, "nodes": [10, 11, 2, 1], "angle": 90.0},
             {"id": 14, "nodes": [11, 12, 3, 2], "angle": 90.0},
@@ -166,6 +168,10 @@ def schema_expressible_cases(base):
         ("closure tolerance 0", edits(m, ("/gaps/closure_tolerance", 0)), "/gaps/closure_tolerance"),
         ("shear ratio 0", edits(m, ("/gaps/shear_ratio", 0)), "/gaps/shear_ratio"),
         ("convergence test unknown", edits(m, ("/gaps/convergence_test", "lenient")), "/gaps/convergence_test"),
+        ("gap method unknown", edits(m, ("/gaps/method", "penalty")), "/gaps/method"),
+        ("unit name empty", edits(m, ("/units", {"stress": ""})), "/units/stress"),
+        ("unit name a number", edits(m, ("/units", {"length": 1})), "/units/length"),
+        ("unknown unit kind", edits(m, ("/units", {"time": "s"})), "/units/time"),
         ("gap element without angle", edits(m, ("/gaps/elements/0/angle", None)), "/gaps/elements/0"),
         ("no gap elements", edits(m, ("/gaps/elements", [])), "/gaps/elements"),
         ("no constraints", edits(m, ("/constraints", [])), "/constraints"),
