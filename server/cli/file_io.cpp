@@ -18,27 +18,28 @@ std::string read_file(const std::string& path) {
 }
 
 void write_file_atomically(const std::string& path, const std::string& content) {
+  write_file_atomically(path, [&content](std::ostream& out) { out << content; });
+}
+
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
   // A device or a pipe (/dev/null, /dev/stdout, a FIFO) is written in place: renaming a file over
   // it would replace the device itself.
   std::error_code error;
   const auto status = std::filesystem::status(path, error);
-  if (!error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-    out << content;
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-    return;
-  }
-  const std::string temporary = path + ".tmp";
+  const bool in_place = !error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status);
+  const std::string target = in_place ? path : path + ".tmp";
   {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + temporary + ": " + std::strerror(errno));
-    out << content;
+    std::ofstream out(target, std::ios::binary | (in_place ? std::ios::out : std::ios::trunc));
+    if (!out) throw std::runtime_error("cannot write " + target + ": " + std::strerror(errno));
+    try {
+      write(out);
+    } catch (const std::ios_base::failure&) {
+      out.setstate(std::ios::badbit);  // reported below, naming the file
+    }
     out.flush();
-    if (!out) throw std::runtime_error("cannot write " + temporary + ": " + std::strerror(errno));
+    if (!out) throw std::runtime_error("cannot write " + target + ": " + std::strerror(errno));
   }
-  std::filesystem::rename(temporary, path);
+  if (!in_place) std::filesystem::rename(target, path);
 }
 
 }  // namespace saasgaps::cli

@@ -1,6 +1,8 @@
 #pragma once
 /// Whole-file reads and atomic writes for the command line.
 
+#include <functional>
+#include <ostream>
 #include <string>
 
 namespace saasgaps::cli {
@@ -11,5 +13,9 @@ std::string read_file(const std::string& path);
 /// Writes to a temporary file next to path and renames it over path, so a reader (or a crash)
 /// never sees half a file. Devices and pipes (/dev/null, /dev/stdout) are written in place.
 void write_file_atomically(const std::string& path, const std::string& content);
+
+/// The same, with the content written by `write` to the file's stream as it is produced (a large
+/// document need not exist in memory).
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 }  // namespace saasgaps::cli

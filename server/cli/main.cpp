@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--stop-after", solve.stop_after, "Stop after this many iterations, keeping the state")
       ->check(CLI::PositiveNumber);
   solve_cmd->add_flag("-q,--quiet", solve.quiet, "No progress table");
+  solve_cmd->add_flag("--pretty", solve.pretty, "Indent the result document (default: compact)");
   solve_cmd->add_option("--vtu", solve.vtu_path, "Also write the result as a VTK unstructured grid (.vtu)");
 
   std::string validate_path;

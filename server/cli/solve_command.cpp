@@ -38,21 +38,31 @@ class CommandLineObserver final : public IterationObserver {
   int last_iteration_ = 0;
 };
 
-void write_result(const SolveOptions& options, const nlohmann::json& document) {
-  const std::string text = document.dump(2) + "\n";
+/// Streams a result document (write_result or write_failed_result) to the file or stdout.
+template <class Write>
+void write_result(const SolveOptions& options, const Write& write) {
+  const auto to_stream = [&](std::ostream& out) {
+    io::JsonWriter writer(io::stream_sink(out), options.pretty);
+    write(writer);
+    writer.flush();
+    out << '\n';
+  };
   if (options.result_path.empty()) {
-    std::cout << text;
+    to_stream(std::cout);
+    std::cout.flush();
   } else {
-    write_file_atomically(options.result_path, text);
+    write_file_atomically(options.result_path, to_stream);
   }
 }
 
 }  // namespace
 
 int run_solve(const SolveOptions& options) {
-  const nlohmann::json document = io::parse_document(read_file(options.model_path));
-  const Model model = io::read_model(document);
-  const std::string digest = io::model_digest(document);
+  // The model is read straight from the text (no tree of the document); the digest that restart
+  // states carry is computed on the way, when there is a state to write or read.
+  std::string digest;
+  const bool restarts = !options.state_out.empty() || !options.resume_from.empty();
+  const Model model = io::parse_model(read_file(options.model_path), restarts ? &digest : nullptr);
 
   std::optional<RestartState> resume;
   if (!options.resume_from.empty()) {
@@ -70,22 +80,24 @@ int run_solve(const SolveOptions& options) {
   changes.extrapolation_factor = options.extrapolation_factor;
 
   CommandLineObserver observer(options, digest);
-  nlohmann::json result;
-  int exit_code = 0;
+  std::optional<Solution> solution;
   try {
-    const Solution solution = solve(model, &observer, resume ? &*resume : nullptr, changes);
-    std::cerr << solution.message << '\n';
-    result = io::result_document(model, solution);
-    write_result(options, result);
-    exit_code = solution.status == RunStatus::converged ? 0 : 3;
+    solution = solve(model, &observer, resume ? &*resume : nullptr, changes);
   } catch (const std::exception& e) {
     // The failure is reported by main(); the result document records it too.
-    if (!options.result_path.empty()) write_result(options, io::failed_result_document(e.what()));
+    if (!options.result_path.empty()) {
+      write_result(options, [&](io::JsonWriter& out) { io::write_failed_result(out, e.what()); });
+    }
     throw;
   }
-  // Outside the try: a VTU that cannot be written must not turn a good result into a failed one.
-  if (!options.vtu_path.empty()) write_file_atomically(options.vtu_path, io::result_to_vtu(result));
-  return exit_code;
+  std::cerr << solution->message << '\n';
+  write_result(options, [&](io::JsonWriter& out) { io::write_result(out, model, *solution); });
+  // A VTU that cannot be written must not turn a good result into a failed one. The VTU writer
+  // works from a result tree: only this opt-in export builds one.
+  if (!options.vtu_path.empty()) {
+    write_file_atomically(options.vtu_path, io::result_to_vtu(nlohmann::json::parse(io::result_text(model, *solution))));
+  }
+  return solution->status == RunStatus::converged ? 0 : 3;
 }
 
 }  // namespace saasgaps::cli

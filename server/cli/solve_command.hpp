@@ -1,6 +1,7 @@
 #pragma once
 /// `saasgaps solve MODEL.json [-o RESULT.json]`: runs the solver in-process, one progress line per
-/// iteration on stderr, the result document to a file or stdout.
+/// iteration on stderr, the result document to a file or stdout, written as a stream (never held as
+/// a tree), compact unless --pretty.
 
 #include <optional>
 #include <string>
@@ -18,6 +19,7 @@ struct SolveOptions {
   std::optional<double> extrapolation_factor;
   std::optional<int> stop_after;  ///< stop at the boundary after this iteration
   bool quiet = false;
+  bool pretty = false;   ///< indent the result document (two spaces); compact by default
   std::string vtu_path;  ///< also write the result as a VTU file (io/vtu_writer.hpp)
 };
 

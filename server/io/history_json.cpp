@@ -4,6 +4,52 @@ namespace saasgaps::io {
 
 using nlohmann::json;
 
+void write_history_row(JsonWriter& out, const IterationRecord& r) {
+  out.begin_object()
+      .field("attempt", r.attempt)
+      .field("average_closure", r.average_closure)
+      .field("bimodulus_changes", r.bimodulus_changes)
+      .field("closed_gaps", r.closed_gaps)
+      .field("extrapolated", r.extrapolated)
+      .field("gap_closures", r.gap_closures)
+      .field("iteration", r.iteration)
+      .field("max_closure", r.max_closure)
+      .field("nonconverged_gaps", r.nonconverged_gaps)
+      .field("nonconverged_plastic", r.nonconverged_plastic)
+      .field("seconds", r.seconds)
+      .field("tensile_modulus", r.tensile_modulus);
+  out.key("watch").begin_object().key("elements").begin_array();
+  for (const WatchedElement& e : r.watch_elements) {
+    out.begin_object()
+        .field("effective", e.effective)
+        .field("id", e.id)
+        .field("sigma_r", e.sigma_r)
+        .field("sigma_theta", e.sigma_theta)
+        .field("sigma_z", e.sigma_z)
+        .field("tau_rz", e.tau_rz)
+        .end_object();
+  }
+  out.end_array().key("gaps").begin_array();
+  for (const WatchedGap& g : r.watch_gaps) {
+    out.begin_object()
+        .field("closure", g.closure)
+        .field("id", g.id)
+        .field("modulus", g.modulus)
+        .field("sigma_m", g.sigma_m)
+        .end_object();
+  }
+  out.end_array().end_object();
+  out.field("yielded_elements", r.yielded_elements).end_object();
+}
+
+std::string history_row_text(const IterationRecord& row) {
+  std::string text;
+  JsonWriter out(string_sink(text));
+  write_history_row(out, row);
+  out.flush();
+  return text;
+}
+
 json history_row_json(const IterationRecord& r) {
   json elements = json::array();
   for (const WatchedElement& e : r.watch_elements) {

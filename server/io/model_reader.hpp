@@ -22,8 +22,13 @@
 /// - watch lists may not repeat an id.
 /// - a repeated key in one JSON object is an error (parse_model only: a parsed nlohmann::json has
 ///   already kept just one of the values).
+///
+/// From text (parse_model), the model is read in one streaming pass, without a tree of the whole
+/// document (io/model_stream.hpp); read_model judges a tree held in memory. Both apply the same
+/// rules (io/section_reader.hpp) and report the same issues in the same order.
 /// - a node that no element uses is not an error here (the solver reports the model singular).
 
+#include <string>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
@@ -35,15 +40,15 @@ namespace saasgaps::io {
 /// Checks `document` against every rule and returns the Model. Throws ModelError with all issues.
 Model read_model(const nlohmann::json& document);
 
-/// Parses JSON text into a document, for callers that keep the document itself (e.g. to fingerprint
-/// it). Throws ModelError when the text is not JSON (one issue at ""), when a number is beyond the
+/// Parses JSON text into a document, for callers that need the tree itself. Throws ModelError when the text is not JSON (one issue at ""), when a number is beyond the
 /// range of a double (at the number's pointer) and when an object repeats a key (at that key).
 nlohmann::json parse_document(std::string_view text);
 
-/// Parses JSON text, then read_model. Text that is not JSON gives one issue at pointer "" with the
-/// parser's message and byte position; a number too large for a double is reported at its own
-/// pointer; repeated keys are reported (at the repeated key's pointer) together with the issues of
-/// read_model.
-Model parse_model(std::string_view text);
+/// Reads JSON text straight into a Model, with the checks of read_model. Text that is not JSON gives
+/// one issue at pointer "" with the parser's message and byte position; a number too large for a
+/// double is reported at its own pointer; repeated keys are reported (at the repeated key's
+/// pointer) before the issues of read_model. With `digest`, also sets it to the model_digest
+/// (io/state_codec.hpp) of the document, for restart states.
+Model parse_model(std::string_view text, std::string* digest = nullptr);
 
 }  // namespace saasgaps::io

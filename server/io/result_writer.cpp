@@ -5,8 +5,6 @@
 
 namespace saasgaps::io {
 
-using nlohmann::json;
-
 namespace {
 
 const char* analysis_name(AnalysisType type) {
@@ -19,87 +17,109 @@ const char* analysis_name(AnalysisType type) {
 }
 
 /// User ids of an element's corner nodes.
-json node_ids(const Model& model, const std::array<int, 4>& nodes, int count) {
-  json ids = json::array();
-  for (int a = 0; a < count; ++a) ids.push_back(model.nodes[nodes[a]].id);
-  return ids;
+void write_node_ids(JsonWriter& out, const Model& model, const std::array<int, 4>& nodes, int count) {
+  out.begin_array();
+  for (int a = 0; a < count; ++a) out.value(model.nodes[nodes[a]].id);
+  out.end_array();
 }
 
-json element_json(const Model& model, const Element& el, const ElementResult& e) {
-  return {{"id", e.id},
-          {"nodes", node_ids(model, el.nodes, el.node_count)},
-          {"material", model.materials[el.material].id},
-          {"temperature", element_temperature(model, el.nodes, el.node_count)},
-          {"sigma_r", e.stress[rr]},
-          {"sigma_z", e.stress[zz]},
-          {"tau_rz", e.stress[rz]},
-          {"sigma_theta", e.stress[th]},
-          {"sigma_1", e.principal.s1},
-          {"sigma_2", e.principal.s2},
-          {"angle", e.principal.angle_deg},
-          {"effective", e.effective},
-          {"eps_r", e.strain[rr]},
-          {"eps_z", e.strain[zz]},
-          {"gamma_rz", e.strain[rz]},
-          {"eps_theta", e.strain[th]},
-          {"yield", e.yielded},
-          {"plastic_converged", e.plastic_converged}};
+// Keys in alphabetical order in every object (see the header).
+
+void write_node(JsonWriter& out, const Model& model, const NodeResult& n, std::size_t index) {
+  out.begin_object()
+      .field("T", model.loads.node_temperature[index])
+      .field("id", n.id)
+      .field("r", model.nodes[index].r)
+      .field("u_r", n.u_r)
+      .field("u_z", n.u_z)
+      .field("z", model.nodes[index].z)
+      .end_object();
 }
 
-json gap_json(const Model& model, const GapElement& gap, const GapResult& g) {
-  json j = {{"id", g.id},
-            {"nodes", node_ids(model, gap.nodes, gap.node_count)},
-            {"angle", gap.angle_deg},
-            {"eps_m", g.eps_m},
-            {"closure", g.closure},
-            {"modulus", g.modulus},
-            {"sigma_m", g.sigma_m},
-            {"state", to_string(g.state)},
-            {"converged", g.converged}};
-  if (!g.converged) j["failure"] = describe(g.failure);
-  return j;
+void write_element(JsonWriter& out, const Model& model, const Element& el, const ElementResult& e) {
+  out.begin_object()
+      .field("angle", e.principal.angle_deg)
+      .field("effective", e.effective)
+      .field("eps_r", e.strain[rr])
+      .field("eps_theta", e.strain[th])
+      .field("eps_z", e.strain[zz])
+      .field("gamma_rz", e.strain[rz])
+      .field("id", e.id)
+      .field("material", model.materials[el.material].id);
+  out.key("nodes");
+  write_node_ids(out, model, el.nodes, el.node_count);
+  out.field("plastic_converged", e.plastic_converged)
+      .field("sigma_1", e.principal.s1)
+      .field("sigma_2", e.principal.s2)
+      .field("sigma_r", e.stress[rr])
+      .field("sigma_theta", e.stress[th])
+      .field("sigma_z", e.stress[zz])
+      .field("tau_rz", e.stress[rz])
+      .field("temperature", element_temperature(model, el.nodes, el.node_count))
+      .field("yield", e.yielded)
+      .end_object();
+}
+
+void write_gap(JsonWriter& out, const Model& model, const GapElement& gap, const GapResult& g) {
+  out.begin_object()
+      .field("angle", gap.angle_deg)
+      .field("closure", g.closure)
+      .field("converged", g.converged)
+      .field("eps_m", g.eps_m);
+  if (!g.converged) out.field("failure", describe(g.failure));
+  out.field("id", g.id).field("modulus", g.modulus);
+  out.key("nodes");
+  write_node_ids(out, model, gap.nodes, gap.node_count);
+  out.field("sigma_m", g.sigma_m).field("state", to_string(g.state)).end_object();
 }
 
 }  // namespace
 
-json result_document(const Model& model, const Solution& s) {
-  json history = json::array();
-  for (const IterationRecord& row : s.history) history.push_back(history_row_json(row));
+void write_result(JsonWriter& out, const Model& model, const Solution& s) {
+  out.begin_object().field("analysis", analysis_name(model.analysis));
   // Coordinates, connectivity and temperatures ride along so that a result can be plotted or
   // exported on its own.
-  json nodes = json::array();
-  for (std::size_t n = 0; n < s.nodes.size(); ++n) {
-    nodes.push_back({{"id", s.nodes[n].id},
-                     {"r", model.nodes[n].r},
-                     {"z", model.nodes[n].z},
-                     {"T", model.loads.node_temperature[n]},
-                     {"u_r", s.nodes[n].u_r},
-                     {"u_z", s.nodes[n].u_z}});
-  }
-  json elements = json::array();
-  for (std::size_t e = 0; e < s.elements.size(); ++e) elements.push_back(element_json(model, model.elements[e], s.elements[e]));
-  json gaps = json::array();
-  for (std::size_t g = 0; g < s.gaps.size(); ++g) gaps.push_back(gap_json(model, model.gaps->elements[g], s.gaps[g]));
-  return {{"status", s.status == RunStatus::converged ? "converged" : "not_converged"},
-          {"iterations", s.iterations},
-          {"message", s.message},
-          {"title", model.title},
-          {"analysis", analysis_name(model.analysis)},
-          {"reference_temperature", model.reference_temperature},
-          {"history", history},
-          {"nodes", nodes},
-          {"elements", elements},
-          {"gaps", gaps}};
+  out.key("elements").begin_array();
+  for (std::size_t e = 0; e < s.elements.size(); ++e) write_element(out, model, model.elements[e], s.elements[e]);
+  out.end_array();
+  out.key("gaps").begin_array();
+  for (std::size_t g = 0; g < s.gaps.size(); ++g) write_gap(out, model, model.gaps->elements[g], s.gaps[g]);
+  out.end_array();
+  out.key("history").begin_array();
+  for (const IterationRecord& row : s.history) write_history_row(out, row);
+  out.end_array();
+  out.field("iterations", s.iterations).field("message", s.message);
+  out.key("nodes").begin_array();
+  for (std::size_t n = 0; n < s.nodes.size(); ++n) write_node(out, model, s.nodes[n], n);
+  out.end_array();
+  out.field("reference_temperature", model.reference_temperature)
+      .field("status", s.status == RunStatus::converged ? "converged" : "not_converged")
+      .field("title", model.title)
+      .end_object();
 }
 
-json failed_result_document(const std::string& message) {
-  return {{"status", "failed"},
-          {"iterations", 0},
-          {"message", message},
-          {"history", json::array()},
-          {"nodes", json::array()},
-          {"elements", json::array()},
-          {"gaps", json::array()}};
+void write_failed_result(JsonWriter& out, const std::string& message) {
+  out.begin_object();
+  for (const char* list : {"elements", "gaps", "history"}) out.key(list).begin_array().end_array();
+  out.field("iterations", 0).field("message", message);
+  out.key("nodes").begin_array().end_array();
+  out.field("status", "failed").end_object();
+}
+
+std::string result_text(const Model& model, const Solution& solution) {
+  std::string text;
+  JsonWriter out(string_sink(text));
+  write_result(out, model, solution);
+  out.flush();
+  return text;
+}
+
+std::string failed_result_text(const std::string& message) {
+  std::string text;
+  JsonWriter out(string_sink(text));
+  write_failed_result(out, message);
+  out.flush();
+  return text;
 }
 
 }  // namespace saasgaps::io

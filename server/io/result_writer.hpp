@@ -1,23 +1,32 @@
 #pragma once
-/// The result document of model-format.md: status, history, node displacements, element stresses
-/// and strains, gap states. Additions to the contract, so that a result stands on its own for
-/// plotting and export: node coordinates r, z and temperature T; element corner node ids, material
-/// id and temperature; gap corner node ids and angle (M axis); title, analysis,
-/// reference_temperature; in each history row, gap_closures (every gap's closure, model order).
+/// The result document of model-format.md, written as a stream (io/json_writer.hpp): status,
+/// history, node displacements, element stresses and strains, gap states. Additions to the
+/// contract, so that a result stands on its own for plotting and export: node coordinates r, z and
+/// temperature T; element corner node ids, material id and temperature; gap corner node ids and
+/// angle (M axis); title, analysis, reference_temperature; in each history row, gap_closures
+/// (every gap's closure, model order).
+///
+/// Every object's members are in alphabetical order (byte order: "T" before "id"), as the tree
+/// writer this replaces printed them, so the text is the same: analysis, elements, gaps, history,
+/// iterations, message, nodes, reference_temperature, status, title. Nothing but the writer's
+/// 64 KiB buffer is held: the document never exists as a tree.
 
 #include <string>
 
-#include <nlohmann/json.hpp>
-
+#include "io/json_writer.hpp"
 #include "model.hpp"
 #include "solution.hpp"
 
 namespace saasgaps::io {
 
 /// The result of a finished run. A stopped run reports status not_converged (it can be resumed).
-nlohmann::json result_document(const Model& model, const Solution& solution);
+void write_result(JsonWriter& out, const Model& model, const Solution& solution);
 
 /// The result document of a run that failed (singular model, bad restart state, ...).
-nlohmann::json failed_result_document(const std::string& message);
+void write_failed_result(JsonWriter& out, const std::string& message);
+
+/// The result document as compact text (the service stores it so).
+std::string result_text(const Model& model, const Solution& solution);
+std::string failed_result_text(const std::string& message);
 
 }  // namespace saasgaps::io

@@ -13,16 +13,6 @@ namespace {
 
 constexpr const char* format_name = "saasgaps-restart-state";
 
-/// FNV-1a, 64 bit: a fingerprint against mix-ups, not a security measure.
-std::uint64_t fnv1a(const std::string& text) {
-  std::uint64_t h = 1469598103934665603ULL;
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 1099511628211ULL;
-  }
-  return h;
-}
-
 /// Entries that differ from `usual`, as [index, value] pairs: most elements stay elastic and in
 /// tension, so the material state is stored sparsely.
 template <class T>
@@ -47,6 +37,19 @@ std::vector<T> dense(const json& pairs, std::size_t size, T usual) {
 
 }  // namespace
 
+void Fingerprint::add(std::string_view text) {
+  for (const unsigned char c : text) {
+    hash_ ^= c;
+    hash_ *= 1099511628211ULL;
+  }
+}
+
+std::string Fingerprint::hex() const {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash_));
+  return text;
+}
+
 std::string model_digest(const json& model_document) {
   json significant = model_document;
   if (significant.is_object()) {
@@ -54,9 +57,9 @@ std::string model_digest(const json& model_document) {
     significant.erase("description");
     significant.erase("output");
   }
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(fnv1a(significant.dump())));
-  return text;
+  Fingerprint f;
+  f.add(significant.dump());
+  return f.hex();
 }
 
 json state_to_json(const RestartState& s, const std::string& digest) {

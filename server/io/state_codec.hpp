@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -13,8 +14,21 @@
 
 namespace saasgaps::io {
 
+/// FNV-1a, 64 bit, over text given in pieces: a fingerprint against mix-ups, not a security measure.
+class Fingerprint {
+ public:
+  void add(std::string_view text);
+  /// 16 lower-case hex digits.
+  [[nodiscard]] std::string hex() const;
+
+ private:
+  std::uint64_t hash_ = 1469598103934665603ULL;
+};
+
 /// Digest of the parts of a model document that a restart state depends on (everything except
-/// title, description and output): a resume against another model is refused.
+/// title, description and output): a resume against another model is refused. It is the
+/// Fingerprint of their compact dump, keys sorted; parse_model (io/model_reader.hpp) computes the
+/// same from the text without a tree of the whole document.
 std::string model_digest(const nlohmann::json& model_document);
 
 nlohmann::json state_to_json(const RestartState& state, const std::string& digest);

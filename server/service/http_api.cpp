@@ -1,5 +1,7 @@
 #include "service/http_api.hpp"
 
+#include <algorithm>
+#include <array>
 #include <charconv>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -238,12 +240,26 @@ void HttpApi::install(httplib::Server& server) {
   server.Get(R"(/v1/jobs/(\d+)/events)", [this](const httplib::Request& req, httplib::Response& res) { events(req, res); });
   server.Get(R"(/v1/jobs/(\d+)/result)", [this](const httplib::Request& req, httplib::Response& res) {
     const std::int64_t id = job_id(req);
-    const std::optional<std::string> result = store_.result(id);
+    std::shared_ptr<JobStore::StoredResult> result = store_.open_result(id);
     if (!result) {
       throw HttpError(404, "Not Found", "job " + std::to_string(id) + " has no result yet (" +
                                             to_string(store_.get(id).state) + ")");
     }
-    res.set_content(*result, "application/json");
+    // Streamed from the database in 64 KiB pieces: a result of hundreds of megabytes is never
+    // copied whole, let alone parsed. A job deleted meanwhile ends the response early.
+    const std::size_t size = result->size();
+    res.set_content_provider(
+        size, "application/json",
+        [result](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+          std::array<char, 1 << 16> piece;
+          const std::size_t count = std::min(length, piece.size());
+          try {
+            result->read(offset, piece.data(), count);
+          } catch (const StoreError&) {
+            return false;
+          }
+          return sink.write(piece.data(), count);
+        });
   });
   server.Get(R"(/v1/jobs/(\d+)/model)", [this](const httplib::Request& req, httplib::Response& res) {
     res.set_content(store_.model(job_id(req)), "application/json");
@@ -302,8 +318,7 @@ void HttpApi::install(httplib::Server& server) {
 void HttpApi::submit(const httplib::Request& req, httplib::Response& res) {
   if (!json::accept(req.body)) throw HttpError(400, "Bad Request", "the request body is not JSON");
   // The reader repeats every check of `saasgaps validate`; a bad model never reaches the queue.
-  const json document = io::parse_document(req.body);
-  const Model model = io::read_model(document);
+  const Model model = io::parse_model(req.body);
   std::optional<std::string> key;
   if (req.has_header("Idempotency-Key")) key = req.get_header_value("Idempotency-Key");
   const JobStore::Submitted submitted =
@@ -337,8 +352,7 @@ void HttpApi::resume(const httplib::Request& req, httplib::Response& res) {
   const std::int64_t id = job_id(req);
   RunSettings changes;
   if (!req.body.empty()) {
-    const json document = io::parse_document(store_.model(id));
-    changes = resume_changes(json_body(req), document.contains("gaps"));
+    changes = resume_changes(json_body(req), io::parse_model(store_.model(id)).gaps.has_value());
   }
   send_json(res, 202, job_json(store_.resume(id, changes)));
   hub_.notify();

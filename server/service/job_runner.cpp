@@ -20,7 +20,7 @@ class CommittingObserver final : public IterationObserver {
       : store_(store), hub_(hub), job_(job), digest_(std::move(digest)), stopping_(stopping) {}
 
   void on_iteration(const IterationRecord& row, const RestartState& state) override {
-    store_.record_iteration(job_, row.iteration, io::history_row_json(row).dump(), io::state_to_cbor(state, digest_));
+    store_.record_iteration(job_, row.iteration, io::history_row_text(row), io::state_to_cbor(state, digest_));
     hub_.notify();
   }
 
@@ -81,9 +81,8 @@ void JobRunner::work(const std::string& name) {
 void JobRunner::run(const ClaimedJob& claimed) {
   const std::int64_t id = claimed.job.id;
   try {
-    const nlohmann::json document = io::parse_document(claimed.model);
-    const Model model = io::read_model(document);
-    const std::string digest = io::model_digest(document);
+    std::string digest;
+    const Model model = io::parse_model(claimed.model, &digest);
     std::optional<RestartState> state;
     if (claimed.state) state = io::state_from_cbor(*claimed.state, digest);
 
@@ -100,10 +99,10 @@ void JobRunner::run(const ClaimedJob& claimed) {
                                 "; resumes from there"
                           : "cancelled after iteration " + std::to_string(solution.iterations);
     }
-    store_.finish(id, final_state, io::result_document(model, solution).dump(), message, std::nullopt);
+    store_.finish(id, final_state, io::result_text(model, solution), message, std::nullopt);
   } catch (const std::exception& e) {
     try {
-      store_.finish(id, JobState::failed, io::failed_result_document(e.what()).dump(), std::nullopt, e.what());
+      store_.finish(id, JobState::failed, io::failed_result_text(e.what()), std::nullopt, e.what());
     } catch (const std::exception&) {
       // Even the failure cannot be recorded (database gone): the job stays running in the file and
       // the next server start marks it interrupted.

@@ -208,6 +208,7 @@ std::string utc_now() {
 class JobStore::Pool {
  public:
   explicit Pool(std::string path) : path_(std::move(path)) {}
+  [[nodiscard]] const std::string& path() const { return path_; }
 
   class Lease {
    public:
@@ -349,6 +350,37 @@ std::optional<std::string> JobStore::result(std::int64_t id) {
   q.bind(1, id);
   if (!q.step()) return std::nullopt;
   return q.text(0);
+}
+
+namespace {
+
+/// A result's blob handle on a connection of its own (opened for the purpose: a pool lease cannot
+/// outlive the call that takes it).
+class BlobResult final : public JobStore::StoredResult {
+ public:
+  BlobResult(std::unique_ptr<Connection> connection, std::int64_t id)
+      : connection_(std::move(connection)), blob_(*connection_, "results", "document", id) {}
+  [[nodiscard]] std::size_t size() const override { return blob_.size(); }
+  void read(std::size_t offset, char* out, std::size_t count) override { blob_.read(offset, out, count); }
+
+ private:
+  std::unique_ptr<Connection> connection_;
+  BlobReader blob_;
+};
+
+}  // namespace
+
+std::unique_ptr<JobStore::StoredResult> JobStore::open_result(std::int64_t id) {
+  auto connection = std::make_unique<Connection>(pool_->path());
+  const JobRecord job = require_job(*connection, id);
+  if (job.state == JobState::running) {
+    throw JobConflict("job " + std::to_string(id) + " is running; its result is written when it stops");
+  }
+  // results.job_id is the rowid.
+  Statement q = connection->prepare("SELECT 1 FROM results WHERE job_id = ?");
+  q.bind(1, id);
+  if (!q.step()) return nullptr;
+  return std::make_unique<BlobResult>(std::move(connection), id);
 }
 
 std::vector<JobEvent> JobStore::events(std::int64_t id, std::int64_t after_event, int limit) {

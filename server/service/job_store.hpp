@@ -105,6 +105,18 @@ class JobStore {
   [[nodiscard]] std::string model(std::int64_t id);
   /// The result document; JobConflict while running, JobNotFound (for the result) when none exists.
   [[nodiscard]] std::optional<std::string> result(std::int64_t id);
+
+  /// A stored result document read in pieces, holding its own connection (and a read transaction)
+  /// until destroyed: GET /v1/jobs/{id}/result streams it without a copy of the whole text.
+  class StoredResult {
+   public:
+    virtual ~StoredResult() = default;
+    [[nodiscard]] virtual std::size_t size() const = 0;
+    /// Bytes [offset, offset + count); throws StoreError when the job was deleted meanwhile.
+    virtual void read(std::size_t offset, char* out, std::size_t count) = 0;
+  };
+  /// The same conditions as result(): JobConflict while running, nullptr when there is none.
+  [[nodiscard]] std::unique_ptr<StoredResult> open_result(std::int64_t id);
   [[nodiscard]] std::vector<JobEvent> events(std::int64_t id, std::int64_t after_event, int limit);
   [[nodiscard]] int queue_length();
   [[nodiscard]] int running_count();

@@ -113,6 +113,27 @@ std::vector<std::uint8_t> Statement::blob(int column) const {
   return p != nullptr ? std::vector<std::uint8_t>(p, p + n) : std::vector<std::uint8_t>();
 }
 
+BlobReader::BlobReader(Connection& connection, const char* table, const char* column, std::int64_t rowid)
+    : db_(connection.handle()) {
+  if (sqlite3_blob_open(db_, "main", table, column, rowid, 0, &blob_) != SQLITE_OK) {
+    const std::string message = sqlite3_errmsg(db_);
+    sqlite3_blob_close(blob_);  // a failed open may still allocate a handle; closing null is a no-op
+    blob_ = nullptr;
+    throw StoreError(std::string("cannot read ") + table + "." + column + " of row " + std::to_string(rowid) + ": " +
+                     message);
+  }
+  size_ = static_cast<std::size_t>(sqlite3_blob_bytes(blob_));
+}
+
+BlobReader::~BlobReader() { sqlite3_blob_close(blob_); }
+
+void BlobReader::read(std::size_t offset, char* out, std::size_t count) {
+  if (offset > size_ || count > size_ - offset) throw StoreError("read past the end of a stored value");
+  if (sqlite3_blob_read(blob_, out, static_cast<int>(count), static_cast<int>(offset)) != SQLITE_OK) {
+    throw StoreError(std::string("reading a stored value failed: ") + sqlite3_errmsg(db_));
+  }
+}
+
 WriteTransaction::WriteTransaction(Connection& connection) : connection_(connection) {
   connection_.execute("BEGIN IMMEDIATE");
 }

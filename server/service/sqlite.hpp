@@ -82,6 +82,28 @@ class Statement {
   sqlite3_stmt* stmt_ = nullptr;
 };
 
+/// One BLOB or TEXT value read in pieces (sqlite3_blob_open, read-only), so that a large value (a
+/// result document of hundreds of megabytes) is never copied whole. The handle holds a read
+/// transaction until destroyed; a row changed or deleted meanwhile makes read() throw.
+class BlobReader {
+ public:
+  /// Throws StoreError when the row or value does not exist.
+  BlobReader(Connection& connection, const char* table, const char* column, std::int64_t rowid);
+  ~BlobReader();
+  BlobReader(const BlobReader&) = delete;
+  BlobReader& operator=(const BlobReader&) = delete;
+
+  [[nodiscard]] std::size_t size() const { return size_; }
+  /// Copies bytes [offset, offset + count) into out; throws StoreError past the end or when the
+  /// row has changed since the handle was opened.
+  void read(std::size_t offset, char* out, std::size_t count);
+
+ private:
+  sqlite3* db_;
+  sqlite3_blob* blob_ = nullptr;
+  std::size_t size_ = 0;
+};
+
 /// BEGIN IMMEDIATE ... COMMIT; rolls back when destroyed uncommitted (an exception on the way).
 class WriteTransaction {
  public:

@@ -1,0 +1,263 @@
+#pragma once
+/// The model reader's rules, section by section (internal to io/). A SectionReader judges the
+/// values of one document, accumulating issues, and builds the Model. It is driven either by a
+/// document tree (read_model) or by the streaming pass over the text (model_stream.cpp), which hands
+/// it each item of nodes, elements and constraints as a small tree of its own and every other
+/// section whole; both give the same issues in the same order.
+///
+/// Files: section_reader.cpp (the sections, in document order), section_checks.cpp (generic
+/// value checks and temperature tables), section_references.cpp (ids, references and element
+/// shapes), value_quote.cpp (how values are quoted in messages).
+
+#include <algorithm>
+#include <array>
+#include <initializer_list>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "errors.hpp"
+#include "io/json_pointer.hpp"
+#include "model.hpp"
+
+namespace saasgaps::io {
+
+using nlohmann::json;
+
+/// Ranges of numbers, with the wording of the rule they state.
+struct Bound {
+  double value = 0.0;
+  bool inclusive = false;
+};
+
+struct Range {
+  std::optional<Bound> lower;
+  std::optional<Bound> upper;
+  const char* reason = nullptr;  ///< why the range holds, when it is not obvious
+};
+
+constexpr Range any_number{};
+constexpr Range positive{Bound{0.0, false}, std::nullopt};
+constexpr Range non_negative{Bound{0.0, true}, std::nullopt};
+constexpr Range poisson_ratio{Bound{-1.0, false}, Bound{0.5, false},
+                              "an isotropic material is stable only for -1 < nu < 0.5"};
+constexpr Range hardening{Bound{0.0, true}, Bound{1.0, false}, "the secondary slope is a fraction of E"};
+constexpr Range extrapolation{Bound{0.0, true}, Bound{1.0, false}};
+constexpr Range tolerance_fraction{Bound{0.0, false}, Bound{1.0, false}};
+constexpr Range axisymmetric_radius{Bound{0.0, true}, std::nullopt,
+                                    "an axisymmetric model lies in the half plane r >= 0"};
+
+bool contains(const Range& range, double v);
+
+/// "E > 0", "0 <= hardening_ratio < 1": the rule a value broke.
+std::string requirement(const Range& range, std::string_view name);
+
+template <class Row>
+struct Field {
+  std::string_view key;
+  double Row::*member;
+  const Range* range;
+};
+
+constexpr std::array<std::string_view, 3> analysis_names{"plane_stress", "plane_strain", "axisymmetric"};
+constexpr std::array<std::string_view, 2> elastic_names{"isotropic", "orthotropic"};
+constexpr std::array<std::string_view, 2> convergence_test_names{"report", "strict"};
+constexpr std::array<std::string_view, 2> gap_method_names{"classic", "exact"};
+constexpr std::array<std::string_view, 4> unit_names{"length", "force", "stress", "temperature"};
+
+/// An object of the document (already checked by SectionReader::object) and its pointer; or a
+/// view of the document's root that holds one member only (a section read on its own).
+struct Obj {
+  const json* value;          ///< the object; in a one-member view, that member's value (nullptr: absent)
+  std::string pointer;
+  std::string_view member{};  ///< non-empty: a one-member view of the root
+
+  [[nodiscard]] const json* find(std::string_view key) const {
+    if (!member.empty()) return key == member ? value : nullptr;
+    const auto it = value->find(key);
+    return it == value->end() ? nullptr : &*it;
+  }
+  [[nodiscard]] std::string at(std::string_view key) const { return pointer_append(pointer, key); }
+};
+
+/// Where an id was defined, so a repeated id can name the first definition.
+struct Entry {
+  int index = 0;     ///< into Model::nodes, Model::materials, Model::elements or GapSettings::elements
+  bool gap = false;  ///< element ids: a gap element
+  std::string pointer;
+};
+
+/// Ids of one kind (solid and gap elements share one kind).
+using Registry = std::unordered_map<int, Entry>;
+
+/// Up to four node indices of an element, a gap element or a pressure edge; -1 where an id did not
+/// resolve (the rest still serve, e.g. as edges that a pressure may name).
+struct NodeList {
+  std::array<int, 4> nodes{-1, -1, -1, -1};
+  int count = 0;
+  [[nodiscard]] bool complete() const {
+    return std::none_of(nodes.begin(), nodes.begin() + count, [](int n) { return n < 0; });
+  }
+};
+
+inline int as_index(std::size_t i) { return static_cast<int>(i); }
+
+/// The top-level members of a model document, in the order the reader judges them.
+enum class Section {
+  schema_version, title, description, units, analysis, nodes, materials, elements, gaps, constraints, loads,
+  solver, output
+};
+constexpr std::size_t section_count = 13;
+
+/// The member name of a section.
+std::string_view section_key(Section s);
+/// The section of a member name; nullopt for a key the document may not have.
+std::optional<Section> section_of(std::string_view key);
+/// The sections that must be read before this one (analysis before nodes, nodes and materials
+/// before elements, ...). A streaming reader reads a section when these are done, else later.
+std::span<const Section> dependencies(Section s);
+/// nodes, elements and constraints: arrays that may be read item by item.
+bool streams_items(Section s);
+
+/// Reads one document, accumulating issues; one function per section of the document. Every
+/// check reports its own issue and returns nullopt / nullptr / false, and the caller carries on, so
+/// one pass finds every independent problem.
+class SectionReader {
+ public:
+  /// The tree driver: the whole document; the Model or ModelError with every issue.
+  Model read(const json& document);
+
+  // The streaming driver (model_stream.cpp). Calls may come in any order that respects
+  // dependencies(); finish() orders the issues as read() would.
+  /// The document is an object with this key, which it may not have.
+  void unknown_root_key(std::string_view key);
+  /// The document object has ended: present[s] tells which sections it had.
+  void check_required_root_keys(const std::array<bool, section_count>& present);
+  /// A key repeated in one object of the text (listed before every other issue).
+  void repeated_key(std::string pointer, std::string detail);
+  /// A section read whole; value nullptr when the document does not have it.
+  void read_section(Section s, const json* value);
+  /// A streamed array (streams_items(s)): begin, each item in order, end with their count.
+  void begin_items(Section s);
+  void read_item(Section s, const json& item, std::size_t index);
+  void end_items(Section s, std::size_t count);
+  /// The Model, or ModelError with every issue.
+  Model finish();
+
+ private:
+  // Generic checks.
+  void report(std::string pointer, std::string detail) {
+    issues_.push_back(RankedIssue{rank_, InputIssue{std::move(pointer), std::move(detail)}});
+  }
+  /// True when value is an object; reports each unknown key at its own pointer and each missing
+  /// required key at the object's pointer (the object is still read).
+  bool check_object(const json& value, const std::string& pointer, std::span<const std::string_view> required,
+                    std::span<const std::string_view> optional);
+  bool object(const json& value, const std::string& pointer, std::initializer_list<std::string_view> required,
+              std::initializer_list<std::string_view> optional = {}) {
+    return check_object(value, pointer, {required.begin(), required.size()}, {optional.begin(), optional.size()});
+  }
+  bool object(const json& value, const std::string& pointer, std::span<const std::string_view> required,
+              std::span<const std::string_view> optional) {
+    return check_object(value, pointer, required, optional);
+  }
+  /// The array, or nullptr (reported) when value is not an array or has fewer than min_items.
+  const json* array(const json& value, const std::string& pointer, std::string_view name, std::size_t min_items);
+  /// A finite number inside range (booleans are not numbers).
+  std::optional<double> number(const json& value, const std::string& pointer, std::string_view name,
+                               const Range& range);
+  /// A JSON integer (1.0 is not one) from minimum to INT_MAX.
+  std::optional<int> integer(const json& value, const std::string& pointer, std::string_view name, int minimum);
+
+  // Optional fields of a checked object: absent gives nullopt silently (object() has already
+  // reported a missing required key).
+  std::optional<double> number_field(const Obj& o, std::string_view key, const Range& range = any_number);
+  std::optional<int> integer_field(const Obj& o, std::string_view key, int minimum);
+  std::optional<std::string> string_field(const Obj& o, std::string_view key);
+  std::optional<std::size_t> choice_field(const Obj& o, std::string_view key,
+                                          std::span<const std::string_view> choices);
+  const json* array_field(const Obj& o, std::string_view key, std::size_t min_items);
+
+  // Ids and references.
+  /// False (reported) when id is already in the registry.
+  bool is_new(const Registry& registry, int id, const std::string& pointer, std::string_view what);
+  /// The entry a reference names; nullptr when the value is no id or names nothing (reported
+  /// unless the registry is incomplete).
+  const Entry* resolve(const Registry& registry, bool complete, const json& value, const std::string& pointer,
+                       std::string_view what, std::string_view where);
+  const Entry* resolve_node(const json& value, const std::string& pointer) {
+    return resolve(nodes_, nodes_complete_, value, pointer, "node", "/nodes");
+  }
+  std::optional<int> new_element_id(const Obj& o);
+  /// o["nodes"]: min_count..max_count distinct node ids that resolve.
+  std::optional<NodeList> read_node_list(const Obj& o, std::size_t min_count, std::size_t max_count,
+                                         std::string_view expectation);
+  /// An element's 3 or 4 corners, with their shape checked when all are placed.
+  std::optional<NodeList> read_corners(const Obj& o);
+  /// Counter-clockwise with positive area; for a quadrilateral, each triangle around the centre.
+  void check_shape(const NodeList& corners, const json& ids, const std::string& pointer);
+
+  // Tables.
+  /// An object with exactly the keys of fields, each a number in its range.
+  template <class Row>
+  std::optional<Row> read_row(const json& value, const std::string& pointer, std::span<const Field<Row>> fields);
+  template <class Row, class Finish>
+  std::vector<Row> read_table(const json& rows, const std::string& pointer, std::span<const Field<Row>> fields,
+                              Finish finish);
+  std::vector<PropertyRow> read_property_table(const Obj& o, std::string_view key, bool isotropic,
+                                               std::size_t min_rows);
+  std::vector<PlasticityRow> read_plasticity(const Obj& o);
+
+  // Sections, in document order. Each reads its own member of `root`.
+  void read_schema_version(const Obj& root);
+  void read_units(const Obj& root);
+  void read_analysis(const Obj& root);
+  void read_item_section(Section s, const Obj& root);
+  void incomplete(Section s);
+  void read_node(const json& item, const std::string& pointer);
+  void read_materials(const Obj& root);
+  void read_element(const json& item, const std::string& pointer);
+  void read_gaps(const Obj& root);
+  void read_constraint(const json& item, const std::string& pointer);
+  void read_loads(const Obj& root);
+  void read_nodal_forces(const Obj& loads);
+  void read_pressures(const Obj& loads);
+  void read_temperatures(const Obj& loads);
+  void read_body_force(const Obj& loads);
+  void read_solver(const Obj& root);
+  void read_output(const Obj& root);
+  std::vector<int> read_watch_list(const Obj& output, std::string_view key, bool gaps);
+
+  struct RankedIssue {
+    int rank = 0;  ///< -1 repeated keys, 0 the root object, 1 + Section: found reading that section
+    InputIssue issue;
+  };
+  std::vector<RankedIssue> issues_;
+  int rank_ = 0;
+  Model model_;
+  std::optional<AnalysisType> analysis_;  ///< empty when analysis.type is missing or invalid
+  Registry nodes_;
+  Registry materials_;
+  Registry elements_;              ///< solid and gap elements share one id space
+  std::vector<bool> node_placed_;  ///< per node index: both coordinates valid (else skip shape checks)
+  // False when a list that defines ids is missing or not an array: a reference into it cannot be
+  // judged, and reporting every one as undefined would bury the real issue.
+  bool nodes_complete_ = true;
+  bool materials_complete_ = true;
+  bool solids_complete_ = true;
+  bool gaps_complete_ = true;
+  [[nodiscard]] bool elements_complete() const { return solids_complete_ && gaps_complete_; }
+  // State of a streamed array between begin_items and end_items.
+  const Range* radius_ = &any_number;  ///< nodes: the range of r
+  std::map<std::pair<int, char>, std::string> prescribed_;  ///< constraints: (node index, component) -> pointer
+};
+
+}  // namespace saasgaps::io
+

@@ -1,0 +1,253 @@
+/// The streamed result document (io/result_writer.hpp) against the tree writer it replaced
+/// (result_tree_reference.hpp): for the report problems and for a random solution, the compact text
+/// read back keeping its key order prints exactly as the tree does (same keys, same order, same
+/// doubles to the last bit), and --pretty is the same document indented. Also the writer's number
+/// and string formats on their own.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis.hpp"
+#include "io/history_json.hpp"
+#include "io/json_writer.hpp"
+#include "io/result_tree_reference.hpp"
+#include "io/result_writer.hpp"
+#include "support/examples.hpp"
+
+namespace saasgaps::io {
+namespace {
+
+using nlohmann::json;
+using nlohmann::ordered_json;
+
+std::string streamed(const Model& model, const Solution& solution, bool pretty) {
+  std::string text;
+  JsonWriter out(string_sink(text), pretty);
+  write_result(out, model, solution);
+  out.flush();
+  return text;
+}
+
+/// The text without the whitespace between tokens (string literals kept as they are).
+std::string without_layout(const std::string& text) {
+  std::string out;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      out += c;
+      if (c == '\\') {
+        out += text[++i];
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+      out += c;
+    } else if (c != ' ' && c != '\n') {
+      out += c;
+    }
+  }
+  return out;
+}
+
+/// The streamed text, read back with its key order kept and printed by nlohmann, equals the tree
+/// printed by nlohmann: keys, key order and values all agree (nlohmann's own digits on both sides:
+/// its Grisu2 is not always the shortest, the streamed text is). Compact has no layout; pretty is
+/// the same text with line breaks and indentation only, laid out as nlohmann's dump(2).
+void expect_same_document(const Model& model, const Solution& solution) {
+  const std::string expected = reference::result_document(model, solution).dump();
+  const std::string compact = streamed(model, solution, false);
+  EXPECT_EQ(ordered_json::parse(compact).dump(), expected);
+  EXPECT_EQ(without_layout(compact), compact);
+  const std::string pretty = streamed(model, solution, true);
+  EXPECT_EQ(without_layout(pretty), compact);
+  EXPECT_EQ(pretty.substr(0, 16), "{\n  \"analysis\": ");
+  EXPECT_EQ(result_text(model, solution), compact);
+}
+
+class ReportProblem : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ReportProblem, StreamedResultIsTheTreeWritersDocument) {
+  const Model model = testing::example_model(GetParam());
+  const Solution solution = solve(model);
+  ASSERT_FALSE(solution.history.empty());
+  expect_same_document(model, solution);
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, ReportProblem,
+                         ::testing::Values("report-problem1.json", "report-problem2.json",
+                                           "report-problem3-case1.json", "report-problem3-case3.json",
+                                           "report-beam-model-a.json"));
+
+/// Doubles of every magnitude and sign, from random bit patterns (never nan or inf here).
+double random_double(std::mt19937_64& rng) {
+  for (;;) {
+    const std::uint64_t bits = rng();
+    double v = 0.0;
+    std::memcpy(&v, &bits, sizeof v);
+    if (std::isfinite(v)) return v;
+  }
+}
+
+/// A value of the kinds a result holds: round numbers, decimals, tiny and huge, -0.0, subnormals.
+double random_value(std::mt19937_64& rng) {
+  switch (rng() % 6) {
+    case 0: return static_cast<double>(static_cast<int>(rng() % 2001) - 1000);
+    case 1: return std::uniform_real_distribution<double>(-1e4, 1e4)(rng);
+    case 2: return random_double(rng);
+    case 3: return std::ldexp(std::uniform_real_distribution<double>(-1.0, 1.0)(rng), static_cast<int>(rng() % 120) - 60);
+    case 4: return -0.0;
+    default: return std::numeric_limits<double>::denorm_min() * static_cast<double>(rng() % 1000);
+  }
+}
+
+IterationRecord random_row(std::mt19937_64& rng, int iteration, std::size_t gaps) {
+  IterationRecord r;
+  r.iteration = iteration;
+  r.tensile_modulus = random_value(rng);
+  r.closed_gaps = static_cast<int>(rng() % 50);
+  r.nonconverged_gaps = static_cast<int>(rng() % 50);
+  r.average_closure = random_value(rng);
+  r.max_closure = random_value(rng);
+  r.yielded_elements = static_cast<int>(rng() % 7);
+  r.nonconverged_plastic = static_cast<int>(rng() % 7);
+  r.bimodulus_changes = static_cast<int>(rng() % 3);
+  r.extrapolated = rng() % 2 == 0;
+  for (int k = 0; k < 2; ++k) {
+    r.watch_elements.push_back({k + 1, random_value(rng), random_value(rng), random_value(rng), random_value(rng),
+                                random_value(rng)});
+    r.watch_gaps.push_back({k + 7, random_value(rng), random_value(rng), random_value(rng)});
+  }
+  for (std::size_t g = 0; g < gaps; ++g) r.gap_closures.push_back(random_value(rng));
+  r.seconds = random_value(rng);
+  r.attempt = 1 + static_cast<int>(rng() % 3);
+  return r;
+}
+
+TEST(ResultWriter, RandomSolutionIsTheTreeWritersDocument) {
+  Model model = testing::example_model("report-problem3-case1.json");
+  // Text that needs escaping: quotes, backslashes, control characters, non-ASCII.
+  model.title = "tab\there \"quoted\" back\\slash \x01\x1f new\nline \xc3\xa9t\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80";
+  std::mt19937_64 rng(20261123);
+  Solution s;
+  s.status = RunStatus::not_converged;
+  s.iterations = 3;
+  s.message = "stopped: \"3\" iterations\r\n";
+  for (int i = 1; i <= 3; ++i) s.history.push_back(random_row(rng, i, model.gap_count()));
+  for (const Node& n : model.nodes) s.nodes.push_back({n.id, random_value(rng), random_value(rng)});
+  for (const Element& e : model.elements) {
+    ElementResult r;
+    r.id = e.id;
+    for (int c = 0; c < 4; ++c) {
+      r.stress[c] = random_value(rng);
+      r.strain[c] = random_value(rng);
+    }
+    r.principal = {random_value(rng), random_value(rng), random_value(rng)};
+    r.effective = random_value(rng);
+    r.yielded = rng() % 2 == 0;
+    r.plastic_converged = rng() % 2 == 0;
+    s.elements.push_back(r);
+  }
+  for (const GapElement& g : model.gaps->elements) {
+    GapResult r;
+    r.id = g.id;
+    r.eps_m = random_value(rng);
+    r.closure = random_value(rng);
+    r.modulus = random_value(rng);
+    r.sigma_m = random_value(rng);
+    r.state = static_cast<GapState>(rng() % 4);
+    r.converged = rng() % 2 == 0;
+    r.failure = r.converged ? GapFailure::none : GapFailure::overclosed;
+    s.gaps.push_back(r);
+  }
+  expect_same_document(model, s);
+  // A nan or inf (which JSON cannot hold) is null in both.
+  s.nodes[0].u_r = std::nan("");
+  s.elements[0].effective = std::numeric_limits<double>::infinity();
+  expect_same_document(model, s);
+}
+
+TEST(ResultWriter, FailedDocumentAndHistoryRowsMatchTheirTrees) {
+  std::string text;
+  JsonWriter out(string_sink(text));
+  write_failed_result(out, "the model is singular at node 4");
+  out.flush();
+  EXPECT_EQ(ordered_json::parse(text).dump(), reference::failed_result_document("the model is singular at node 4").dump());
+  EXPECT_EQ(failed_result_text("x"), reference::failed_result_document("x").dump());
+
+  std::mt19937_64 rng(7);
+  for (int i = 0; i < 50; ++i) {
+    const IterationRecord row = random_row(rng, i + 1, static_cast<std::size_t>(i));
+    EXPECT_EQ(ordered_json::parse(history_row_text(row)).dump(), history_row_json(row).dump());
+  }
+}
+
+TEST(JsonWriter, DoublesReadBackExactlyInNlohmannsLayout) {
+  // The layout: a '.' or an exponent always, fixed notation for decimal exponents -4 < n <= 15.
+  for (const double v : {1.0, -1.0, 0.0, 0.1, 1e-4, 1e-5, 123.456, 1e15, 1e16, 1.5e16, 1e100, 1e-100, 5e-324,
+                         std::numeric_limits<double>::max(), 999999999999999.9, 0.30000000000000004}) {
+    EXPECT_EQ(format_double(v), json(v).dump()) << v;
+  }
+  EXPECT_EQ(format_double(-0.0), "-0.0");
+  EXPECT_EQ(format_double(std::nan("")), "null");
+  EXPECT_EQ(format_double(-std::numeric_limits<double>::infinity()), "null");
+  // Every double reads back to itself; the text is nlohmann's wherever its Grisu2 digits are the
+  // shortest (nearly always).
+  std::mt19937_64 rng(42);
+  int same_text = 0;
+  constexpr int count = 100000;
+  for (int i = 0; i < count; ++i) {
+    const double v = random_double(rng);
+    const std::string text = format_double(v);
+    ASSERT_EQ(json::parse(text).get<double>(), v) << text;
+    same_text += text == json(v).dump() ? 1 : 0;
+  }
+  EXPECT_GT(same_text, count * 99 / 100);
+}
+
+TEST(JsonWriter, StringsAreEscapedAndInvalidUtf8IsReplaced) {
+  std::string text;
+  JsonWriter out(string_sink(text));
+  out.begin_array()
+      .value("a\"b\\c\b\f\n\r\t\x01\x7f")
+      .value(std::string_view("nul\0byte", 8))
+      .value("bad \xff\xfe, cut \xe2\x82, overlong \xc0\xaf, surrogate \xed\xa0\x80, ok \xe2\x82\xac")
+      .end_array();
+  out.flush();
+  EXPECT_EQ(text,
+            "[\"a\\\"b\\\\c\\b\\f\\n\\r\\t\\u0001\x7f\",\"nul\\u0000byte\","
+            "\"bad \xef\xbf\xbd\xef\xbf\xbd, cut \xef\xbf\xbd\xef\xbf\xbd, overlong \xef\xbf\xbd\xef\xbf\xbd, "
+            "surrogate \xef\xbf\xbd\xef\xbf\xbd\xef\xbf\xbd, ok \xe2\x82\xac\"]");
+  const json parsed = json::parse(text);  // valid UTF-8 JSON
+  EXPECT_EQ(parsed[0], "a\"b\\c\b\f\n\r\t\x01\x7f");
+}
+
+TEST(JsonWriter, LargeDocumentsGoOutInPiecesThroughTheSink) {
+  std::vector<std::size_t> pieces;
+  std::string text;
+  JsonWriter out([&](std::string_view piece) {
+    pieces.push_back(piece.size());
+    text.append(piece);
+  });
+  out.begin_array();
+  for (int i = 0; i < 100000; ++i) out.value(i * 0.5);
+  out.end_array();
+  out.flush();
+  EXPECT_GT(pieces.size(), 5U);
+  for (const std::size_t size : pieces) EXPECT_LE(size, (1U << 16) + 64);
+  EXPECT_EQ(out.bytes(), text.size());
+  EXPECT_EQ(json::parse(text).size(), 100000U);
+}
+
+}  // namespace
+}  // namespace saasgaps::io
