@@ -125,6 +125,7 @@ void SectionReader::begin_items(Section s) {
 
 void SectionReader::read_item(Section s, const json& item, std::size_t index) {
   rank_ = 1 + static_cast<int>(s);
+  item_ = index;
   const std::string pointer = pointer_append(pointer_append("", section_key(s)), index);
   if (s == Section::nodes) read_node(item, pointer);
   if (s == Section::elements) read_element(item, pointer);
@@ -215,7 +216,7 @@ void SectionReader::read_node(const json& item, const std::string& pointer) {
   const auto r = number_field(o, "r", *radius_);
   const auto z = number_field(o, "z");
   if (!id || !is_new(nodes_, *id, o.at("id"), "node")) return;
-  nodes_.emplace(*id, Entry{as_index(model_.nodes.size()), false, pointer});
+  nodes_.emplace(*id, Entry{as_index(model_.nodes.size()), false, as_index(item_)});
   model_.nodes.push_back(Node{*id, r.value_or(0.0), z.value_or(0.0)});
   node_placed_.push_back(r && z);
 }
@@ -245,7 +246,7 @@ void SectionReader::read_materials(const Obj& root) {
     m.plasticity = read_plasticity(o);
     if (!id || !is_new(materials_, *id, o.at("id"), "material")) continue;
     m.id = *id;
-    materials_.emplace(*id, Entry{as_index(model_.materials.size()), false, pointer});
+    materials_.emplace(*id, Entry{as_index(model_.materials.size()), false, as_index(i)});
     model_.materials.push_back(std::move(m));
   }
 }
@@ -269,7 +270,7 @@ void SectionReader::read_element(const json& item, const std::string& pointer) {
     e.node_count = corners->count;
   }
   if (m != nullptr) e.material = m->index;
-  elements_.emplace(*id, Entry{as_index(model_.elements.size()), false, pointer});
+  elements_.emplace(*id, Entry{as_index(model_.elements.size()), false, as_index(item_)});
   model_.elements.push_back(e);
 }
 
@@ -319,7 +320,7 @@ void SectionReader::read_gaps(const Obj& root) {
       e.nodes = corners->nodes;
       e.node_count = corners->count;
     }
-    elements_.emplace(*id, Entry{as_index(s.elements.size()), true, item});
+    elements_.emplace(*id, Entry{as_index(s.elements.size()), true, as_index(i)});
     s.elements.push_back(e);
   }
 }

@@ -87,11 +87,12 @@ struct Obj {
   [[nodiscard]] std::string at(std::string_view key) const { return pointer_append(pointer, key); }
 };
 
-/// Where an id was defined, so a repeated id can name the first definition.
+/// Where an id was defined, so a repeated id can name the first definition. (The item's index,
+/// not its pointer text: a registry holds an entry per node and element, 10^6 of them.)
 struct Entry {
   int index = 0;     ///< into Model::nodes, Model::materials, Model::elements or GapSettings::elements
   bool gap = false;  ///< element ids: a gap element
-  std::string pointer;
+  int item = 0;      ///< index in the document's array (/nodes/item, /gaps/elements/item, ...)
 };
 
 /// Ids of one kind (solid and gap elements share one kind).
@@ -256,6 +257,7 @@ class SectionReader {
   [[nodiscard]] bool elements_complete() const { return solids_complete_ && gaps_complete_; }
   // State of a streamed array between begin_items and end_items.
   const Range* radius_ = &any_number;  ///< nodes: the range of r
+  std::size_t item_ = 0;               ///< index of the item being read
   std::map<std::pair<int, char>, std::string> prescribed_;  ///< constraints: (node index, component) -> pointer
 };
 

@@ -8,7 +8,13 @@ namespace saasgaps::io {
 bool SectionReader::is_new(const Registry& registry, int id, const std::string& pointer, std::string_view what) {
   const auto found = registry.find(id);
   if (found == registry.end()) return true;
-  report(pointer, std::string(what) + " id " + std::to_string(id) + " is already used by " + found->second.pointer +
+  const Entry& first = found->second;
+  const std::string list = what == "node"       ? "/nodes"
+                           : what == "material" ? "/materials"
+                           : first.gap          ? "/gaps/elements"
+                                                : "/elements";
+  report(pointer, std::string(what) + " id " + std::to_string(id) + " is already used by " +
+                      pointer_append(list, static_cast<std::size_t>(first.item)) +
                       "; ids must be unique");
   return false;
 }

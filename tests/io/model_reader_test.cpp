@@ -468,6 +468,8 @@ TEST(ModelReaderRules, ElementIdsAreUniqueAcrossElementsAndGapElements) {
   EXPECT_TRUE(rejects(with(valid_model(), "/elements/1/id", 1), "/elements/1/id", {"element id 1", "/elements/0"}));
   EXPECT_TRUE(rejects(with(valid_model(), "/gaps/elements/0/id", 3), "/gaps/elements/0/id",
                       {"element id 3", "/elements/2"}));
+  EXPECT_TRUE(rejects(with(valid_model(), "/gaps/elements/1/id", 11), "/gaps/elements/1/id",
+                      {"element id 11", "/gaps/elements/0"}));
 }
 
 TEST(ModelReaderRules, MaterialIdsAreUnique) {
