@@ -2,6 +2,8 @@
 """Writes the shrink-fit ring example: two concentric steel rings, the inner one heated into the outer.
 
     /usr/bin/python3 schemas/examples/make_ring_model.py   # rewrites schemas/examples/ring-shrink-fit-plane-strain.json
+    /usr/bin/python3 schemas/examples/make_ring_model.py --radial 160 --hoop 1600 -o /tmp/annulus-1e6.json
+                                                           # a large one for benchmarks (1,031,288 unknowns)
 
 A quarter annulus in plane strain, (r, z) = (x, y). Inner ring a1 = 1.0 .. b1 = 1.5 in, heated by 400 degF;
 outer ring a2 = 1.502 .. b2 = 2.2 in, cold; 8 radial x 24 hoop elements each. 24 gap elements bridge the
@@ -12,6 +14,7 @@ Node ids: inner ring 1 + i + 9 j, outer ring 1001 + i + 9 j (i = 0..8 outward, j
 from the x axis). Element ids: inner 1 + i + 8 j, outer 201 + i + 8 j, gaps 401 + j.
 """
 
+import argparse
 import json
 import math
 import pathlib
@@ -111,8 +114,23 @@ def model():
 
 
 def main():
-    path = HERE / "ring-shrink-fit-plane-strain.json"
-    path.write_text(json.dumps(model(), indent=1) + "\n")
+    global RADIAL, HOOP, OUTER_NODE, OUTER_ELEMENT, GAP_ELEMENT
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--radial", type=int, default=RADIAL, help="elements through each ring's thickness")
+    parser.add_argument("--hoop", type=int, default=HOOP, help="elements round the quarter (= gap elements)")
+    parser.add_argument("-o", "--output", type=pathlib.Path, help="write here, compact (default: the example)")
+    args = parser.parse_args()
+    if args.output is None:
+        path = HERE / "ring-shrink-fit-plane-strain.json"
+        path.write_text(json.dumps(model(), indent=1) + "\n")
+    else:
+        # Ids must not collide: the outer ring and the gaps are numbered past the inner ring.
+        RADIAL, HOOP = args.radial, args.hoop
+        OUTER_NODE = 1 + (RADIAL + 1) * (HOOP + 1)
+        OUTER_ELEMENT = 1 + RADIAL * HOOP
+        GAP_ELEMENT = 1 + 2 * RADIAL * HOOP
+        path = args.output
+        path.write_text(json.dumps(model(), separators=(",", ":")) + "\n")
     print("wrote", path, f"(Lame contact pressure {lame_contact_pressure():.1f} psi)")
 
 

@@ -1,0 +1,189 @@
+// saasgaps_io_bench: model read and result write rates, the tree way (the old code path) against
+// the streaming way, on one model document.
+//
+//   /usr/bin/python3 schemas/examples/make_ring_model.py --radial 160 --hoop 1600 -o /tmp/annulus-1e6.json
+//   build/tests/bench/saasgaps_io_bench /tmp/annulus-1e6.json
+//
+// Each stage runs in a child process of its own (fork), so its peak RSS (the child's ru_maxrss) is
+// that stage's true peak for the whole process: what the parent held when it forked (the text, or
+// the model and a solution) plus what the stage added. Rates are MB (10^6 bytes) of JSON text per
+// second, of wall time and of the child's CPU time (user + system; on a shared machine the wall
+// time includes waiting for a core). The result is that of a solve's shape (every node, element and gap, a
+// history of 4 rows with every gap's closure), with pseudo-random values of full precision: the
+// writers do not solve, they print.
+//
+// Stages:
+//   read, tree     parse_document (a tree of the whole text) + read_model + model_digest: what
+//                  `saasgaps solve` did before
+//   read, stream   parse_model(text, &digest): one SAX pass, no tree of the document
+//   write, tree    the tree writer (kept in tests/io) + dump(2): what `saasgaps solve -o` wrote before
+//   write, stream  io::write_result, compact (the default) and --pretty, through a 64 KiB buffer
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "io/json_writer.hpp"
+#include "io/model_reader.hpp"
+#include "io/result_tree_reference.hpp"
+#include "io/result_writer.hpp"
+#include "io/state_codec.hpp"
+
+using namespace saasgaps;
+
+namespace {
+
+struct Measured {
+  double seconds = 0.0;
+  double cpu_seconds = 0.0;  ///< user + system time of the child
+  double bytes = 0.0;
+  double peak_mib = 0.0;
+};
+
+double peak_rss_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+/// Runs stage() in a child process; it returns the bytes it read or wrote. The child reports its
+/// wall time and byte count through a pipe; its peak RSS comes from wait4.
+Measured in_child(const std::function<double()>& stage) {
+  int fds[2];
+  if (pipe(fds) != 0) std::abort();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fds[0]);
+    const auto start = std::chrono::steady_clock::now();
+    const double bytes = stage();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double report[2] = {seconds, bytes};
+    if (write(fds[1], report, sizeof report) != static_cast<ssize_t>(sizeof report)) _exit(1);
+    _exit(0);
+  }
+  close(fds[1]);
+  double report[2] = {0.0, 0.0};
+  const ssize_t got = read(fds[0], report, sizeof report);
+  close(fds[0]);
+  int status = 0;
+  rusage usage{};
+  wait4(pid, &status, 0, &usage);
+  if (got != static_cast<ssize_t>(sizeof report) || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::fprintf(stderr, "a stage failed\n");
+    std::exit(1);
+  }
+  const auto cpu = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  return {report[0], cpu(usage.ru_utime) + cpu(usage.ru_stime), report[1], static_cast<double>(usage.ru_maxrss) / 1024.0};
+}
+
+void print(const char* name, const Measured& m) {
+  std::printf("%-31s %7.2f s wall %7.2f s CPU %7.1f MB/s %7.1f MB/s CPU %6.0f MiB peak RSS (%.1f MB)\n", name,
+              m.seconds, m.cpu_seconds, m.bytes / 1e6 / m.seconds, m.bytes / 1e6 / m.cpu_seconds, m.peak_mib,
+              m.bytes / 1e6);
+}
+
+/// A solution of the model's shape with values of full precision.
+Solution synthetic_solution(const Model& model) {
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> value(-1e4, 1e4);
+  Solution s;
+  s.status = RunStatus::converged;
+  s.iterations = 4;
+  s.message = "converged in 4 iterations";
+  for (int i = 1; i <= 4; ++i) {
+    IterationRecord r;
+    r.iteration = i;
+    r.tensile_modulus = 20.0;
+    r.seconds = value(rng);
+    for (std::size_t g = 0; g < model.gap_count(); ++g) r.gap_closures.push_back(value(rng));
+    s.history.push_back(r);
+  }
+  for (const Node& n : model.nodes) s.nodes.push_back({n.id, value(rng) * 1e-7, value(rng) * 1e-7});
+  for (const Element& e : model.elements) {
+    ElementResult r;
+    r.id = e.id;
+    for (int c = 0; c < 4; ++c) {
+      r.stress[c] = value(rng);
+      r.strain[c] = value(rng) * 1e-8;
+    }
+    r.principal = {value(rng), value(rng), value(rng) * 1e-2};
+    r.effective = value(rng);
+    s.elements.push_back(r);
+  }
+  if (model.gaps) {
+    for (const GapElement& g : model.gaps->elements) {
+      GapResult r;
+      r.id = g.id;
+      r.eps_m = value(rng) * 1e-4;
+      r.closure = value(rng) * 1e-2;
+      r.modulus = value(rng);
+      r.sigma_m = value(rng);
+      r.state = GapState::closed;
+      r.converged = true;
+      s.gaps.push_back(r);
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: %s MODEL.json\n", argv[0]);
+    return 2;
+  }
+  std::string text;
+  {
+    std::ifstream in(argv[1], std::ios::binary);
+    std::ostringstream all;
+    all << in.rdbuf();
+    text = all.str();
+  }
+  const auto size = static_cast<double>(text.size());
+  std::printf("model %s: %.1f MB of text; this process holds %.0f MiB\n", argv[1], size / 1e6, peak_rss_mib());
+
+  print("read, tree (before)", in_child([&] {
+          const nlohmann::json document = io::parse_document(text);
+          const Model model = io::read_model(document);
+          const std::string digest = io::model_digest(document);
+          return size;
+        }));
+  print("read, stream", in_child([&] {
+          std::string digest;
+          const Model model = io::parse_model(text, &digest);
+          return size;
+        }));
+
+  const Model model = io::parse_model(text);
+  text = std::string();  // a solve no longer holds the text when it writes
+  const Solution solution = synthetic_solution(model);
+  std::printf("model: %zu nodes, %zu elements, %zu gaps (%zu unknowns)\n", model.nodes.size(),
+              model.elements.size(), model.gap_count(), 2 * model.nodes.size());
+
+  print("write, tree + dump(2) (before)", in_child([&] {
+          std::ofstream out("/dev/null", std::ios::binary);
+          const std::string dumped = io::reference::result_document(model, solution).dump(2) + "\n";
+          out << dumped;
+          return static_cast<double>(dumped.size());
+        }));
+  for (const bool pretty : {false, true}) {
+    print(pretty ? "write, stream --pretty" : "write, stream (compact)", in_child([&] {
+            std::ofstream out("/dev/null", std::ios::binary);
+            io::JsonWriter writer(io::stream_sink(out), pretty);
+            io::write_result(writer, model, solution);
+            writer.flush();
+            return static_cast<double>(writer.bytes());
+          }));
+  }
+  return 0;
+}
