@@ -78,6 +78,21 @@ TEST_F(SolveCommand, ConvergedRunPrintsTheTableAndExitsZero) {
   EXPECT_EQ(result["gaps"].size(), 11U);
 }
 
+TEST_F(SolveCommand, ResultIsCompactUnlessPrettyAndTheSameEitherWay) {
+  ASSERT_EQ(saasgaps("solve " + example("report-problem1.json") + " -q -o " + path("compact.json")).exit_code, 0);
+  ASSERT_EQ(saasgaps("solve " + example("report-problem1.json") + " -q --pretty -o " + path("pretty.json")).exit_code, 0);
+  ASSERT_EQ(saasgaps("solve " + example("report-problem1.json") + " -q --pretty").exit_code, 0);  // to stdout
+  const std::string compact = read(path("compact.json"));
+  const std::string pretty = read(path("pretty.json"));
+  EXPECT_EQ(compact.find('\n'), compact.size() - 1) << "one line";
+  EXPECT_EQ(compact.substr(0, 13), "{\"analysis\":\"");
+  EXPECT_EQ(pretty.substr(0, 16), "{\n  \"analysis\": ");
+  const std::string to_stdout = read(path("stdout.txt"));
+  EXPECT_EQ(to_stdout.substr(0, 16), pretty.substr(0, 16));
+  EXPECT_TRUE(numbers(nlohmann::json::parse(to_stdout)) == numbers(nlohmann::json::parse(pretty)));
+  EXPECT_TRUE(numbers(nlohmann::json::parse(compact)) == numbers(nlohmann::json::parse(pretty)));
+}
+
 TEST_F(SolveCommand, StoppedThenResumedEqualsTheUninterruptedRun) {
   ASSERT_EQ(saasgaps("solve " + example("report-problem3-case3.json") + " -q -o " + path("full.json")).exit_code, 0);
   const Outcome stopped = saasgaps("solve " + example("report-problem3-case3.json") + " -q --stop-after 4 --state-out " +
