@@ -211,7 +211,8 @@ JsonWriter& JsonWriter::value(double v) {
   return *this;
 }
 
-JsonWriter& JsonWriter::value(std::int64_t v) {
+template <class Integer>
+JsonWriter& JsonWriter::integer(Integer v) {
   separate();
   char text[24];
   const auto [end, ec] = std::to_chars(text, text + sizeof text, v);
@@ -219,13 +220,8 @@ JsonWriter& JsonWriter::value(std::int64_t v) {
   return *this;
 }
 
-JsonWriter& JsonWriter::value(std::uint64_t v) {
-  separate();
-  char text[24];
-  const auto [end, ec] = std::to_chars(text, text + sizeof text, v);
-  put(std::string_view(text, static_cast<std::size_t>(end - text)));
-  return *this;
-}
+JsonWriter& JsonWriter::value(std::int64_t v) { return integer(v); }
+JsonWriter& JsonWriter::value(std::uint64_t v) { return integer(v); }
 
 JsonWriter& JsonWriter::value(bool v) {
   separate();

@@ -80,6 +80,8 @@ class JsonWriter {
     if (buffer_.size() >= buffer_limit) flush();
   }
   void put_string(std::string_view text);
+  template <class Integer>
+  JsonWriter& integer(Integer v);
   void newline_and_indent();
 
   static constexpr std::size_t buffer_limit = 1 << 16;
