@@ -119,7 +119,7 @@ const json* SectionReader::array(const json& value, const std::string& pointer, 
   return &value;
 }
 
-std::optional<double> SectionReader::number(const json& value, const std::string& pointer, std::string_view name,
+std::optional<double> SectionReader::number(const json& value, const Where& pointer, std::string_view name,
                                      const Range& range) {
   // is_number() is false for booleans, so true is not silently 1.
   if (!value.is_number()) {
@@ -138,7 +138,7 @@ std::optional<double> SectionReader::number(const json& value, const std::string
   return v;
 }
 
-std::optional<int> SectionReader::integer(const json& value, const std::string& pointer, std::string_view name,
+std::optional<int> SectionReader::integer(const json& value, const Where& pointer, std::string_view name,
                                    int minimum) {
   constexpr auto maximum = std::numeric_limits<int>::max();
   if (!value.is_number_integer()) {
@@ -167,13 +167,13 @@ std::optional<int> SectionReader::integer(const json& value, const std::string& 
 std::optional<double> SectionReader::number_field(const Obj& o, std::string_view key, const Range& range) {
   const json* v = o.find(key);
   if (v == nullptr) return std::nullopt;
-  return number(*v, o.at(key), key, range);
+  return number(*v, Where(o.pointer, key), key, range);
 }
 
 std::optional<int> SectionReader::integer_field(const Obj& o, std::string_view key, int minimum) {
   const json* v = o.find(key);
   if (v == nullptr) return std::nullopt;
-  return integer(*v, o.at(key), key, minimum);
+  return integer(*v, Where(o.pointer, key), key, minimum);
 }
 
 std::optional<std::string> SectionReader::string_field(const Obj& o, std::string_view key) {

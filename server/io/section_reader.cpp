@@ -126,7 +126,10 @@ void SectionReader::begin_items(Section s) {
 void SectionReader::read_item(Section s, const json& item, std::size_t index) {
   rank_ = 1 + static_cast<int>(s);
   item_ = index;
-  const std::string pointer = pointer_append(pointer_append("", section_key(s)), index);
+  std::string pointer = "/";
+  pointer += section_key(s);
+  pointer += '/';
+  pointer += std::to_string(index);
   if (s == Section::nodes) read_node(item, pointer);
   if (s == Section::elements) read_element(item, pointer);
   if (s == Section::constraints) read_constraint(item, pointer);
@@ -215,7 +218,7 @@ void SectionReader::read_node(const json& item, const std::string& pointer) {
   const auto id = integer_field(o, "id", 1);
   const auto r = number_field(o, "r", *radius_);
   const auto z = number_field(o, "z");
-  if (!id || !is_new(nodes_, *id, o.at("id"), "node")) return;
+  if (!id || !is_new(nodes_, *id, Where(o.pointer, "id"), "node")) return;
   nodes_.emplace(*id, Entry{as_index(model_.nodes.size()), false, as_index(item_)});
   model_.nodes.push_back(Node{*id, r.value_or(0.0), z.value_or(0.0)});
   node_placed_.push_back(r && z);
@@ -260,7 +263,7 @@ void SectionReader::read_element(const json& item, const std::string& pointer) {
   const auto corners = read_corners(o);
   const json* material = o.find("material");
   const Entry* m = material == nullptr ? nullptr
-                                       : resolve(materials_, materials_complete_, *material, o.at("material"),
+                                       : resolve(materials_, materials_complete_, *material, Where(o.pointer, "material"),
                                                  "material", "/materials");
   e.angle_deg = number_field(o, "angle").value_or(0.0);
   if (!id) return;
@@ -330,7 +333,7 @@ void SectionReader::read_constraint(const json& item, const std::string& pointer
   if (!object(item, pointer, {"node"}, {"r", "z"})) return;
   const Obj o{&item, pointer};
   const json* node_id = o.find("node");
-  const Entry* node = node_id == nullptr ? nullptr : resolve_node(*node_id, o.at("node"));
+  const Entry* node = node_id == nullptr ? nullptr : resolve_node(*node_id, Where(o.pointer, "node"));
   Constraint c;
   c.u_r = number_field(o, "r");
   c.u_z = number_field(o, "z");
@@ -375,7 +378,7 @@ void SectionReader::read_nodal_forces(const Obj& loads) {
     if (!object((*list)[i], pointer, {"node"}, {"fr", "fz"})) continue;
     const Obj o{&(*list)[i], pointer};
     const json* node_id = o.find("node");
-    const Entry* node = node_id == nullptr ? nullptr : resolve_node(*node_id, o.at("node"));
+    const Entry* node = node_id == nullptr ? nullptr : resolve_node(*node_id, Where(o.pointer, "node"));
     NodalForce f;
     f.f_r = number_field(o, "fr").value_or(0.0);
     f.f_z = number_field(o, "fz").value_or(0.0);
@@ -450,7 +453,7 @@ void SectionReader::read_temperatures(const Obj& loads) {
     if (!object((*list)[i], pointer, {"node", "T"})) continue;
     const Obj o{&(*list)[i], pointer};
     const json* node_id = o.find("node");
-    const Entry* node = node_id == nullptr ? nullptr : resolve_node(*node_id, o.at("node"));
+    const Entry* node = node_id == nullptr ? nullptr : resolve_node(*node_id, Where(o.pointer, "node"));
     const auto T = number_field(o, "T");
     if (node == nullptr) continue;
     const auto [first, fresh] = given.emplace(node->index, pointer);

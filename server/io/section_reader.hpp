@@ -87,6 +87,27 @@ struct Obj {
   [[nodiscard]] std::string at(std::string_view key) const { return pointer_append(pointer, key); }
 };
 
+/// A JSON Pointer spelled only when an issue needs it: a pointer, or a pointer and one more token
+/// (a member's key or an item's index). The checks of a valid value build no text at all.
+class Where {
+ public:
+  Where(const std::string& pointer) : base_(pointer) {}  // NOLINT: a spelled pointer is a Where
+  Where(const std::string& base, std::string_view key) : base_(base), key_(key), kind_(Kind::key) {}
+  Where(const std::string& base, std::size_t index) : base_(base), index_(index), kind_(Kind::index) {}
+  [[nodiscard]] std::string str() const {
+    if (kind_ == Kind::key) return pointer_append(base_, key_);
+    if (kind_ == Kind::index) return pointer_append(base_, index_);
+    return base_;
+  }
+
+ private:
+  enum class Kind { whole, key, index };
+  const std::string& base_;  // outlives the Where: the Where lives for one call
+  std::string_view key_{};
+  std::size_t index_ = 0;
+  Kind kind_ = Kind::whole;
+};
+
 /// Where an id was defined, so a repeated id can name the first definition. (The item's index,
 /// not its pointer text: a registry holds an entry per node and element, 10^6 of them.)
 struct Entry {
@@ -157,6 +178,7 @@ class SectionReader {
   void report(std::string pointer, std::string detail) {
     issues_.push_back(RankedIssue{rank_, InputIssue{std::move(pointer), std::move(detail)}});
   }
+  void report(const Where& where, std::string detail) { report(where.str(), std::move(detail)); }
   /// True when value is an object; reports each unknown key at its own pointer and each missing
   /// required key at the object's pointer (the object is still read).
   bool check_object(const json& value, const std::string& pointer, std::span<const std::string_view> required,
@@ -172,10 +194,10 @@ class SectionReader {
   /// The array, or nullptr (reported) when value is not an array or has fewer than min_items.
   const json* array(const json& value, const std::string& pointer, std::string_view name, std::size_t min_items);
   /// A finite number inside range (booleans are not numbers).
-  std::optional<double> number(const json& value, const std::string& pointer, std::string_view name,
+  std::optional<double> number(const json& value, const Where& pointer, std::string_view name,
                                const Range& range);
   /// A JSON integer (1.0 is not one) from minimum to INT_MAX.
-  std::optional<int> integer(const json& value, const std::string& pointer, std::string_view name, int minimum);
+  std::optional<int> integer(const json& value, const Where& pointer, std::string_view name, int minimum);
 
   // Optional fields of a checked object: absent gives nullopt silently (object() has already
   // reported a missing required key).
@@ -188,12 +210,12 @@ class SectionReader {
 
   // Ids and references.
   /// False (reported) when id is already in the registry.
-  bool is_new(const Registry& registry, int id, const std::string& pointer, std::string_view what);
+  bool is_new(const Registry& registry, int id, const Where& pointer, std::string_view what);
   /// The entry a reference names; nullptr when the value is no id or names nothing (reported
   /// unless the registry is incomplete).
-  const Entry* resolve(const Registry& registry, bool complete, const json& value, const std::string& pointer,
+  const Entry* resolve(const Registry& registry, bool complete, const json& value, const Where& pointer,
                        std::string_view what, std::string_view where);
-  const Entry* resolve_node(const json& value, const std::string& pointer) {
+  const Entry* resolve_node(const json& value, const Where& pointer) {
     return resolve(nodes_, nodes_complete_, value, pointer, "node", "/nodes");
   }
   std::optional<int> new_element_id(const Obj& o);
@@ -203,7 +225,7 @@ class SectionReader {
   /// An element's 3 or 4 corners, with their shape checked when all are placed.
   std::optional<NodeList> read_corners(const Obj& o);
   /// Counter-clockwise with positive area; for a quadrilateral, each triangle around the centre.
-  void check_shape(const NodeList& corners, const json& ids, const std::string& pointer);
+  void check_shape(const NodeList& corners, const json& ids, const Where& pointer);
 
   // Tables.
   /// An object with exactly the keys of fields, each a number in its range.

@@ -5,7 +5,7 @@
 
 namespace saasgaps::io {
 
-bool SectionReader::is_new(const Registry& registry, int id, const std::string& pointer, std::string_view what) {
+bool SectionReader::is_new(const Registry& registry, int id, const Where& pointer, std::string_view what) {
   const auto found = registry.find(id);
   if (found == registry.end()) return true;
   const Entry& first = found->second;
@@ -20,7 +20,7 @@ bool SectionReader::is_new(const Registry& registry, int id, const std::string& 
 }
 
 const Entry* SectionReader::resolve(const Registry& registry, bool complete, const json& value,
-                             const std::string& pointer, std::string_view what, std::string_view where) {
+                             const Where& pointer, std::string_view what, std::string_view where) {
   const auto id = integer(value, pointer, what, 1);
   if (!id) return nullptr;
   const auto found = registry.find(*id);
@@ -34,7 +34,7 @@ const Entry* SectionReader::resolve(const Registry& registry, bool complete, con
 
 std::optional<int> SectionReader::new_element_id(const Obj& o) {
   const auto id = integer_field(o, "id", 1);
-  if (!id || !is_new(elements_, *id, o.at("id"), "element")) return std::nullopt;
+  if (!id || !is_new(elements_, *id, Where(o.pointer, "id"), "element")) return std::nullopt;
   return id;
 }
 
@@ -55,7 +55,7 @@ std::optional<NodeList> SectionReader::read_node_list(const Obj& o, std::size_t 
   NodeList list;
   list.count = as_index(ids->size());
   for (std::size_t k = 0; k < ids->size(); ++k) {
-    const std::string item = pointer_append(pointer, k);
+    const Where item(pointer, k);
     const Entry* node = resolve_node((*ids)[k], item);
     if (node == nullptr) continue;
     const auto end = list.nodes.begin() + static_cast<std::ptrdiff_t>(k);
@@ -73,11 +73,11 @@ std::optional<NodeList> SectionReader::read_corners(const Obj& o) {
   if (!corners || !corners->complete()) return corners;
   const bool placed = std::all_of(corners->nodes.begin(), corners->nodes.begin() + corners->count,
                                   [&](int n) { return node_placed_[static_cast<std::size_t>(n)]; });
-  if (placed) check_shape(*corners, *o.find("nodes"), o.at("nodes"));
+  if (placed) check_shape(*corners, *o.find("nodes"), Where(o.pointer, "nodes"));
   return corners;
 }
 
-void SectionReader::check_shape(const NodeList& corners, const json& ids, const std::string& pointer) {
+void SectionReader::check_shape(const NodeList& corners, const json& ids, const Where& pointer) {
   const auto n = static_cast<std::size_t>(corners.count);
   // Eigen leaves default-constructed vectors uninitialised; the unused corner of a triangle too.
   std::array<Vec2, 4> x;
