@@ -188,9 +188,8 @@ class ModelStream final : public json::json_sax_t {
         if (digest_) dumps_[k] = kept_trees_[k].dump();
         reader_->read_section(s, &kept_trees_[k]);
       } else if (kept_[k].second > kept_[k].first) {
+        // Every section it depends on is done by now (they come earlier in Section order).
         ModelStream again(Mode::model, reader_, digest_);
-        again.present_ = present_;
-        again.done_ = done_;
         const bool parsed = again.run(text.substr(kept_[k].first, kept_[k].second - kept_[k].first), s);
         assert(parsed && "a span that parsed once parses again");
         (void)parsed;
