@@ -97,6 +97,12 @@ TEST_F(Service, ReportProblem3GivesTheSameResultAsSolve) {
   EXPECT_EQ(done["iteration"], done["last_row"]["iteration"]);
   const json result = get_json(client, "/v1/jobs/" + std::to_string(job) + "/result");
   EXPECT_EQ(result_numbers(result), result_numbers(solve_locally(body)));
+  // Streamed from the database (64 KiB pieces), its length known up front; compact text.
+  const httplib::Result raw = client.Get("/v1/jobs/" + std::to_string(job) + "/result");
+  ASSERT_TRUE(raw);
+  EXPECT_EQ(raw->get_header_value("Content-Length"), std::to_string(raw->body.size()));
+  EXPECT_GT(raw->body.size(), std::size_t{50000});
+  EXPECT_EQ(raw->body.find('\n'), std::string::npos);
   EXPECT_EQ(json::parse(client.Get("/v1/jobs/" + std::to_string(job) + "/model")->body), json::parse(body));
   const json rows = get_json(client, "/v1/jobs/" + std::to_string(job) + "/iterations?after=10")["iterations"];
   ASSERT_FALSE(rows.empty());
