@@ -3,11 +3,12 @@
 /// nothing of the document is kept. Used for result documents, which at 10^6 unknowns are hundreds
 /// of megabytes as text and several times that as a tree.
 ///
-/// The text is what nlohmann::json::dump() writes for the same values, so documents written either
-/// way read back the same:
-/// - doubles as the shortest decimal that reads back to the same double, laid out like
-///   nlohmann's dump (1.0 keeps its ".0"; fixed notation for decimal exponents -4 < n <= 15, else
-///   1e-05, 1.5e+16), non-finite doubles as null (JSON has no inf or nan);
+/// The text is laid out as nlohmann::json::dump() lays out the same values, so documents written
+/// either way read back the same:
+/// - doubles as the shortest decimal that reads back to the same double (std::to_chars; nlohmann's
+///   Grisu2 sometimes prints a longer one of the same double), laid out like nlohmann's dump (1.0
+///   keeps its ".0"; fixed notation for decimal exponents -4 < n <= 15, else 1e-05, 1.5e+16),
+///   non-finite doubles as null (JSON has no inf or nan);
 /// - strings with '"', '\\' and control characters escaped; invalid UTF-8 replaced by U+FFFD;
 /// - compact (no whitespace) by default; pretty: nlohmann's dump(2) layout, two spaces per level,
 ///   "key": value, empty arrays and objects as [] and {}.
