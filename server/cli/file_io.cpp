@@ -53,4 +53,13 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   if (!in_place) std::filesystem::rename(target, path);
 }
 
+std::string read_token_file(const std::string& path) {
+  std::string token = read_file(path);
+  const auto last = token.find_last_not_of(" \t\r\n");
+  token.erase(last == std::string::npos ? 0 : last + 1);
+  token.erase(0, token.find_first_not_of(" \t\r\n"));
+  if (token.empty()) throw std::runtime_error("the token file " + path + " is empty");
+  return token;
+}
+
 }  // namespace saasgaps::cli

@@ -18,4 +18,7 @@ void write_file_atomically(const std::string& path, const std::string& content);
 /// document need not exist in memory).
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
+/// A bearer token from a file: its content without surrounding white space; throws when empty.
+std::string read_token_file(const std::string& path);
+
 }  // namespace saasgaps::cli

@@ -1,5 +1,5 @@
 /// saasgaps: thermal stress analysis of plane and axisymmetric bodies in contact across gaps.
-/// Subcommands: solve, validate, serve, plot, export-vtu. Exit codes (service.md): 0 converged or valid,
+/// Subcommands: solve, validate, serve, worker, plot, export-vtu. Exit codes (service.md): 0 converged or valid,
 /// 3 not converged, 2 bad model, 1 any other failure. Exceptions become exit codes here only.
 
 #include <CLI/CLI.hpp>
@@ -13,6 +13,7 @@
 #include "cli/solve_command.hpp"
 #include "thread_environment.hpp"
 #include "cli/validate_command.hpp"
+#include "cli/worker_command.hpp"
 
 namespace {
 
@@ -78,6 +79,38 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 100))
       ->capture_default_str();
 
+  serve_cmd->add_option("--executor", serve.executor, "Where jobs are solved: local (this process) or slurm (sbatch of workers)")
+      ->check(CLI::IsMember({"local", "slurm"}))
+      ->capture_default_str();
+  serve_cmd->add_option("--slurm-partition", serve.slurm_partition, "sbatch --partition for workers");
+  serve_cmd->add_option("--slurm-account", serve.slurm_account, "sbatch --account for workers");
+  serve_cmd->add_option("--slurm-time-limit", serve.slurm_time_limit, "sbatch --time for workers (e.g. 4:00:00)");
+  serve_cmd->add_option("--slurm-extra", serve.slurm_extra, "Further sbatch arguments, separated by spaces");
+  serve_cmd->add_option("--slurm-worker-url", serve.slurm_worker_url,
+                        "This server's URL as workers reach it (default http://HOST:PORT)");
+  serve_cmd->add_option("--slurm-worker-binary", serve.slurm_worker_binary,
+                        "The saasgaps binary on the compute nodes (default: this one)");
+  serve_cmd->add_option("--slurm-token-file", serve.slurm_token_file,
+                        "The token file as workers see it (default: --token-file)");
+  serve_cmd->add_option("--slurm-log-dir", serve.slurm_log_dir, "Directory for worker logs (default: sbatch's)");
+  serve_cmd->add_option("--slurm-poll", serve.slurm_poll, "Seconds between squeue polls")
+      ->check(CLI::Range(0.05, 3600.0))
+      ->capture_default_str();
+  serve_cmd->add_option("--slurm-cancel-grace", serve.slurm_cancel_grace,
+                        "Seconds a cancelled worker has to stop at an iteration boundary before scancel")
+      ->check(CLI::Range(0.0, 86400.0))
+      ->capture_default_str();
+
+  saasgaps::cli::WorkerCommandOptions worker;
+  CLI::App* worker_cmd = app.add_subcommand("worker", "Run one job of a service here, reporting each iteration over HTTP");
+  worker_cmd->add_option("--server", worker.server, "The service's URL, http://HOST:PORT")->required();
+  worker_cmd->add_option("--job", worker.job, "Job id")->required()->check(CLI::PositiveNumber);
+  worker_cmd->add_option("--lease", worker.lease, "ATTEMPT:SECRET (default: $SAASGAPS_LEASE, else take the job)");
+  worker_cmd->add_option("--token-file", worker.token_file, "File holding the service's bearer token");
+  worker_cmd->add_option("--retry-for", worker.retry_for, "Seconds a request is retried before the worker gives up")
+      ->check(CLI::Range(0.0, 86400.0))
+      ->capture_default_str();
+
   saasgaps::cli::PlotOptions plot;
   CLI::App* plot_cmd = app.add_subcommand("plot", "Draw a contour, closure or convergence plot of a result (PNG or SVG)");
   plot_cmd->add_option("result", plot.result_path, "Result document (JSON) written by solve")->required();
@@ -109,6 +142,7 @@ int main(int argc, char** argv) {
     if (validate_cmd->parsed()) return saasgaps::cli::run_validate(validate_path);
     if (serve_cmd->parsed()) return saasgaps::cli::run_serve(serve);
     if (plot_cmd->parsed()) return saasgaps::cli::run_plot(plot);
+    if (worker_cmd->parsed()) return saasgaps::cli::run_worker_command(worker);
     if (vtu_cmd->parsed()) return saasgaps::cli::run_export_vtu(vtu);
   } catch (const saasgaps::ModelError& e) {
     return report_model_error(e);

@@ -8,6 +8,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <filesystem>
+#include <optional>
 #include <csignal>
 #include <iostream>
 #include <stdexcept>
@@ -19,6 +21,7 @@
 #include "service/http_api.hpp"
 #include "service/job_runner.hpp"
 #include "service/job_store.hpp"
+#include "service/slurm_executor.hpp"
 
 namespace saasgaps::cli {
 
@@ -26,15 +29,6 @@ namespace {
 
 bool is_loopback(const std::string& host) {
   return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
-}
-
-std::string read_token(const std::string& path) {
-  std::string token = read_file(path);
-  const auto last = token.find_last_not_of(" \t\r\n");
-  token.erase(last == std::string::npos ? 0 : last + 1);
-  token.erase(0, token.find_first_not_of(" \t\r\n"));
-  if (token.empty()) throw std::runtime_error("the token file " + path + " is empty");
-  return token;
 }
 
 /// The write end of the self-pipe that turns SIGINT / SIGTERM into a shutdown. A handler, not a
@@ -54,11 +48,32 @@ void exclusive_port(socket_t sock) {
   setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
 }
 
+std::string absolute(const std::string& path) {
+  return path.empty() ? path : std::filesystem::absolute(path).lexically_normal().string();
+}
+
+service::SlurmOptions slurm_options(const ServeOptions& options, int port) {
+  service::SlurmOptions slurm;
+  slurm.partition = options.slurm_partition;
+  slurm.account = options.slurm_account;
+  slurm.time_limit = options.slurm_time_limit;
+  slurm.extra = service::split_words(options.slurm_extra);
+  slurm.worker_url = options.slurm_worker_url.empty() ? "http://" + options.host + ":" + std::to_string(port)
+                                                      : options.slurm_worker_url;
+  slurm.token_file = absolute(options.slurm_token_file.empty() ? options.token_file : options.slurm_token_file);
+  slurm.worker_binary = options.slurm_worker_binary.empty() ? std::filesystem::read_symlink("/proc/self/exe").string()
+                                                            : options.slurm_worker_binary;
+  slurm.log_dir = absolute(options.slurm_log_dir);
+  slurm.poll = std::chrono::milliseconds(static_cast<long long>(options.slurm_poll * 1000.0));
+  slurm.cancel_grace = std::chrono::milliseconds(static_cast<long long>(options.slurm_cancel_grace * 1000.0));
+  return slurm;
+}
+
 }  // namespace
 
 int run_serve(const ServeOptions& options) {
   std::optional<std::string> token;
-  if (!options.token_file.empty()) token = read_token(options.token_file);
+  if (!options.token_file.empty()) token = read_token_file(options.token_file);
   if (!is_loopback(options.host) && !token) {
     throw std::runtime_error("refusing to listen on " + options.host +
                              " without authentication: give --token-file, or listen on 127.0.0.1");
@@ -77,9 +92,14 @@ int run_serve(const ServeOptions& options) {
   // Jobs solved side by side share the cores: each factorization then runs its BLAS on one thread.
   if (options.workers > 1) SparseCholesky::set_max_blas_threads(1);
 
+  const bool slurm = options.executor == "slurm";
+  if (slurm && options.slurm_worker_url.empty() && (options.host == "0.0.0.0" || options.host == "::")) {
+    throw std::runtime_error("with --host " + options.host + ", give --slurm-worker-url: the URL workers use");
+  }
   service::DatabaseLock lock(options.database);
   service::JobStore store(options.database, options.max_interruptions);
-  const int recovered = store.recover_interrupted();
+  // Runs handed to Slurm outlive the server: the monitor checks whether their Slurm jobs still run.
+  const int recovered = store.recover_interrupted(slurm);
   service::EventHub hub;
 
   httplib::Server server;
@@ -98,7 +118,13 @@ int run_serve(const ServeOptions& options) {
                              " (is another server using it?)");
   }
 
-  service::JobRunner runner(store, hub, options.workers);
+  std::optional<service::JobRunner> runner;
+  std::optional<service::SlurmExecutor> slurm_executor;
+  if (slurm) {
+    slurm_executor.emplace(store, hub, slurm_options(options, port));
+  } else {
+    runner.emplace(store, hub, options.workers);
+  }
   std::thread signal_waiter([&server, read_end = shutdown_pipe[0]] {
     char byte = 0;
     while (read(read_end, &byte, 1) < 0 && errno == EINTR) {
@@ -106,7 +132,12 @@ int run_serve(const ServeOptions& options) {
     server.stop();
   });
   std::cout << "saasgaps serve: listening on http://" << options.host << ":" << port << " (database "
-            << options.database << ", " << options.workers << (options.workers == 1 ? " worker" : " workers");
+            << options.database << ", ";
+  if (slurm) {
+    std::cout << "executor slurm";
+  } else {
+    std::cout << options.workers << (options.workers == 1 ? " worker" : " workers");
+  }
   if (recovered > 0) std::cout << ", " << recovered << " interrupted jobs to resume";
   std::cout << ")" << std::endl;
 

@@ -15,6 +15,17 @@ struct ServeOptions {
   std::string token_file;       ///< bearer-token authentication when set
   int max_streams = 4;
   int max_interruptions = 3;
+  std::string executor = "local";  ///< local: the in-process pool; slurm: sbatch of workers
+  std::string slurm_partition;
+  std::string slurm_account;
+  std::string slurm_time_limit;
+  std::string slurm_extra;         ///< further sbatch arguments, split at white space
+  std::string slurm_worker_url;    ///< empty: http://HOST:PORT of this server
+  std::string slurm_worker_binary; ///< empty: this binary
+  std::string slurm_token_file;    ///< empty: --token-file
+  std::string slurm_log_dir;
+  double slurm_poll = 2.0;          ///< seconds between squeue polls
+  double slurm_cancel_grace = 30.0; ///< seconds a cancelled running worker has to stop
 };
 
 /// Runs until SIGINT or SIGTERM; returns the exit code. Throws when it cannot start.

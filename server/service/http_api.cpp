@@ -12,6 +12,7 @@
 #include "io/vtu_writer.hpp"
 #include "plot/plot_request.hpp"
 #include "service/problem.hpp"
+#include "service/worker_api.hpp"
 #include "web/web_assets.hpp"
 
 namespace saasgaps::service {
@@ -73,6 +74,7 @@ json job_json(const JobRecord& j) {
           {"message", j.message ? json(*j.message) : json(nullptr)},
           {"error", j.error ? json(*j.error) : json(nullptr)},
           {"resume_settings", settings},
+          {"slurm", j.slurm_job_id ? json{{"job_id", *j.slurm_job_id}, {"state", j.slurm_state.value_or("")}} : json(nullptr)},
           {"links",
            {{"self", self},
             {"iterations", self + "/iterations"},
@@ -305,6 +307,7 @@ void HttpApi::install(httplib::Server& server) {
       res.set_content(std::string(asset.body), std::string(asset.content_type));
     });
   }
+  install_worker_api(server, store_, hub_);
   server.Get("/healthz", [this](const httplib::Request&, httplib::Response& res) {
     send_json(res, 200, {{"status", "ok"},
                          {"queue_length", store_.queue_length()},

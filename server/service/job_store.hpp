@@ -62,6 +62,22 @@ struct JobRecord {
   std::optional<std::string> message;
   std::optional<std::string> last_row;  ///< JSON of the last history row
   RunSettings settings;
+  std::optional<std::string> slurm_job_id;  ///< the Slurm job running it (executor slurm)
+  std::optional<std::string> slurm_state;   ///< that Slurm job's state as squeue last showed it
+};
+
+/// The right to write a job's iterations and result: the run's attempt number and a secret the
+/// service drew when the run started. A later run draws a new one, so a worker presumed dead can
+/// never overwrite a newer run's rows.
+struct Lease {
+  int attempt = 0;
+  std::string secret;
+};
+
+/// A write from a run that no longer holds the job (stale attempt, wrong secret, job not running).
+class LeaseConflict : public JobConflict {
+ public:
+  using JobConflict::JobConflict;
 };
 
 /// What a worker needs to run a job.
@@ -69,6 +85,17 @@ struct ClaimedJob {
   JobRecord job;
   std::string model;                             ///< the submitted document
   std::optional<std::vector<std::uint8_t>> state;  ///< the latest restart state, when resuming
+  Lease lease;                                     ///< this run's lease
+};
+
+/// A running Slurm-executed job as the monitor sees it.
+struct SlurmRun {
+  std::int64_t job = 0;
+  int attempt = 0;
+  std::string slurm_job_id;
+  std::string slurm_state;
+  bool cancel_requested = false;
+  std::string updated_at;  ///< last change (cancel request, iteration, state)
 };
 
 struct JobEvent {
@@ -121,16 +148,20 @@ class JobStore {
   [[nodiscard]] int queue_length();
   [[nodiscard]] int running_count();
 
-  /// The oldest queued or interrupted job, now running (attempts + 1), or nothing.
+  /// The oldest queued or interrupted job, now running (attempts + 1, a new lease), or nothing.
   std::optional<ClaimedJob> claim(const std::string& worker);
   /// One finished iteration: its history row, its restart state (only the latest two are kept) and
-  /// its event, in one transaction.
+  /// its event, in one transaction. With a lease (a remote worker), LeaseConflict unless the lease
+  /// still holds the running job; an iteration this lease already committed with the same row is
+  /// accepted again unchanged (a retried request whose answer was lost).
   void record_iteration(std::int64_t id, int iteration, const std::string& row,
-                        const std::vector<std::uint8_t>& state);
+                        const std::vector<std::uint8_t>& state, const Lease* lease = nullptr);
   [[nodiscard]] bool cancel_requested(std::int64_t id);
-  /// A run ended: its final state, result document and message.
+  /// A run ended: its final state, result document and message. With a lease, LeaseConflict unless
+  /// it holds the running job; a repeat by the same lease of a finish already recorded is ignored.
   void finish(std::int64_t id, JobState state, const std::optional<std::string>& result,
-              const std::optional<std::string>& message, const std::optional<std::string>& error);
+              const std::optional<std::string>& message, const std::optional<std::string>& error,
+              const Lease* lease = nullptr);
 
   /// Cancels a queued or interrupted job at once, or asks a running one to stop at its next
   /// iteration boundary. JobConflict for a finished job.
@@ -143,7 +174,30 @@ class JobStore {
 
   /// Start-up: jobs left running by a dead server become interrupted (to be resumed by the
   /// workers), or failed once interrupted more than max_interruptions times. Returns how many.
-  int recover_interrupted();
+  /// keep_slurm_jobs: jobs handed to a Slurm job stay running; the Slurm monitor decides.
+  int recover_interrupted(bool keep_slurm_jobs = false);
+
+  // Remote workers and the Slurm executor (job_store.cpp, last section).
+
+  /// A queued or interrupted job claimed by a worker started by hand; JobConflict otherwise.
+  ClaimedJob claim_job(std::int64_t id, const std::string& worker);
+  /// What the lease holder needs to run: the model, the latest state, the settings. LeaseConflict
+  /// unless the lease holds the running job.
+  ClaimedJob work(std::int64_t id, const Lease& lease);
+  /// Records the Slurm job that runs this attempt; false when the attempt no longer holds the job.
+  bool set_slurm_job(std::int64_t id, int attempt, const std::string& slurm_job_id, const std::string& slurm_state);
+  /// Running jobs handed to Slurm, oldest first.
+  [[nodiscard]] std::vector<SlurmRun> slurm_runs();
+  /// The Slurm job's state as squeue shows it now (shown on the job resource).
+  void set_slurm_state(std::int64_t id, int attempt, const std::string& slurm_state);
+  /// The Slurm job of this attempt ended while the job was still running: a requested cancel becomes
+  /// cancelled; anything else is an interruption (interrupted, or failed beyond max_interruptions),
+  /// exactly as a server crash. Nothing when the attempt no longer holds the job.
+  void slurm_run_ended(std::int64_t id, int attempt, const std::string& slurm_state);
+  /// A run that never got going (sbatch failed): an interruption, counted like any other.
+  void interrupt_run(std::int64_t id, int attempt, const std::string& what);
+  /// Cancel a running job whose Slurm job was scancelled by the service: the lease is revoked.
+  void slurm_run_cancelled(std::int64_t id, int attempt, const std::string& why);
 
  private:
   class Pool;
@@ -163,6 +217,10 @@ class DatabaseLock {
  private:
   int fd_ = -1;
 };
+
+/// Run settings as the store keeps them (JSON text), for sending them to a remote worker.
+std::string settings_to_text(const RunSettings& settings);
+RunSettings settings_from_text(const std::string& text);
 
 /// Current UTC time, ISO 8601 with milliseconds.
 std::string utc_now();

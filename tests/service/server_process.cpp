@@ -29,7 +29,7 @@ pid_t spawn(const std::vector<std::string>& arguments, int& read_end, bool merge
   for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   pid_t pid = -1;
-  const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  const int rc = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   close(pipe_fds[1]);
   if (rc != 0) {
@@ -43,7 +43,11 @@ pid_t spawn(const std::vector<std::string>& arguments, int& read_end, bool merge
 }  // namespace
 
 ServerProcess::ServerProcess(const std::filesystem::path& database, const std::vector<std::string>& arguments) {
-  std::vector<std::string> command = {SAASGAPS_BINARY, "serve", "--port", "0", "--db", database.string()};
+  std::vector<std::string> command = {SAASGAPS_BINARY, "serve", "--db", database.string()};
+  // A caller that needs the same port across a restart gives --port itself.
+  if (std::find(arguments.begin(), arguments.end(), "--port") == arguments.end()) {
+    command.insert(command.end(), {"--port", "0"});
+  }
   command.insert(command.end(), arguments.begin(), arguments.end());
   int out = -1;
   pid_ = spawn(command, out, true);

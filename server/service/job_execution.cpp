@@ -1,0 +1,77 @@
+#include "service/job_execution.hpp"
+
+#include "analysis.hpp"
+#include "io/history_json.hpp"
+#include "io/model_reader.hpp"
+#include "io/result_writer.hpp"
+#include "io/state_codec.hpp"
+
+namespace saasgaps::service {
+
+namespace {
+
+/// Hands every iteration to the sink and tells the solver when to stop.
+class SinkObserver final : public IterationObserver {
+ public:
+  SinkObserver(RunSink& sink, std::string digest, const std::atomic<bool>& shutting_down)
+      : sink_(sink), digest_(std::move(digest)), shutting_down_(shutting_down) {}
+
+  void on_iteration(const IterationRecord& row, const RestartState& state) override {
+    sink_.iteration(row.iteration, io::history_row_text(row), io::state_to_cbor(state, digest_));
+  }
+
+  bool stop_requested() override { return shutting_down_ || sink_.stop_requested(); }
+
+ private:
+  RunSink& sink_;
+  std::string digest_;
+  const std::atomic<bool>& shutting_down_;
+};
+
+ResumeOptions resume_options(const RunSettings& settings) {
+  ResumeOptions options;
+  options.tensile_schedule = settings.tensile_schedule;
+  options.max_iterations = settings.max_iterations;
+  options.extrapolation_factor = settings.extrapolation_factor;
+  options.restart_schedule = settings.restart_schedule;
+  return options;
+}
+
+}  // namespace
+
+void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& shutting_down) {
+  try {
+    std::string digest;
+    const Model model = io::parse_model(input.model, &digest);
+    std::optional<RestartState> state;
+    if (input.state) state = io::state_from_cbor(*input.state, digest);
+
+    SinkObserver observer(sink, digest, shutting_down);
+    const Solution solution = solve(model, &observer, state ? &*state : nullptr, resume_options(input.settings));
+
+    JobState final_state = JobState::converged;
+    std::string message = solution.message;
+    if (solution.status == RunStatus::not_converged) final_state = JobState::not_converged;
+    if (solution.status == RunStatus::stopped) {
+      // A shutdown hands the job to the next server; a user's cancel keeps it cancelled.
+      final_state = shutting_down ? JobState::interrupted : JobState::cancelled;
+      message = shutting_down ? "the server shut down after iteration " + std::to_string(solution.iterations) +
+                                    "; resumes from there"
+                              : "cancelled after iteration " + std::to_string(solution.iterations);
+    }
+    sink.finish(final_state, io::result_text(model, solution), message, std::nullopt);
+  } catch (const RunAbandoned&) {
+    throw;
+  } catch (const std::exception& e) {
+    try {
+      sink.finish(JobState::failed, io::failed_result_text(e.what()), std::nullopt, e.what());
+    } catch (const RunAbandoned&) {
+      throw;
+    } catch (const std::exception&) {
+      // Even the failure cannot be recorded (database gone): the job stays running in the file and
+      // the next server start marks it interrupted.
+    }
+  }
+}
+
+}  // namespace saasgaps::service

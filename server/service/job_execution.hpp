@@ -1,0 +1,51 @@
+#pragma once
+/// One run of a job, wherever it happens: in the service's own worker pool (executor local) or in a
+/// `saasgaps worker` process that reports over HTTP (executor slurm, or a worker started by hand).
+/// Both run the same function and hand the same bytes (history row JSON, restart state CBOR, result
+/// document) to a sink; the service commits them with the same JobStore calls. That is what makes a
+/// remote run's result identical, to the last digit, to a local one.
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "service/job_store.hpp"
+
+namespace saasgaps::service {
+
+/// What a run starts from.
+struct RunInput {
+  std::string model;                               ///< the submitted document
+  std::optional<std::vector<std::uint8_t>> state;  ///< the latest committed restart state (CBOR)
+  RunSettings settings;                            ///< resume changes in force
+};
+
+/// Where a run's iterations and its end go.
+class RunSink {
+ public:
+  virtual ~RunSink() = default;
+  /// A finished iteration: committed (row and state in one transaction) when this returns.
+  virtual void iteration(int iteration, const std::string& row, const std::vector<std::uint8_t>& state) = 0;
+  /// A cancel was asked for: stop at this iteration boundary.
+  virtual bool stop_requested() = 0;
+  /// The run ended with this job state, result document, message and error.
+  virtual void finish(JobState state, const std::optional<std::string>& result,
+                      const std::optional<std::string>& message, const std::optional<std::string>& error) = 0;
+};
+
+/// The sink can no longer speak for this run (its lease was revoked, the service is unreachable):
+/// the run stops without finishing; the service decides what becomes of the job.
+class RunAbandoned : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Solves the job from `input` and reports every iteration and the end to `sink`. A stop while
+/// `shutting_down` hands the job on (interrupted); a stop the sink asked for is a cancel. Solver
+/// failures end the run as failed; RunAbandoned from the sink propagates.
+void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& shutting_down);
+
+}  // namespace saasgaps::service

@@ -1,0 +1,138 @@
+#include "service/worker_client.hpp"
+
+#include <httplib.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <thread>
+
+#include "service/worker_protocol.hpp"
+
+namespace saasgaps::service {
+
+namespace {
+
+namespace protocol = worker_protocol;
+using nlohmann::json;
+
+/// The service, with bounded retries: connection failures and 5xx answers are tried again after a
+/// growing pause (doubling, at most 5 s) until options.retry_for has passed.
+class ServiceConnection {
+ public:
+  explicit ServiceConnection(const WorkerOptions& options) : options_(options), client_(options.server) {
+    if (!client_.is_valid()) throw std::runtime_error("--server " + options.server + " is not an http:// URL");
+    client_.set_connection_timeout(std::chrono::seconds(5));
+    client_.set_read_timeout(std::chrono::minutes(2));
+    client_.set_write_timeout(std::chrono::minutes(2));
+    if (options.token) client_.set_bearer_token_auth(*options.token);
+  }
+
+  void set_lease(const Lease& lease) { headers_ = {{protocol::lease_header, protocol::format_lease(lease)}}; }
+
+  /// The successful answer's body. LeaseLost on 409, ServiceUnreachable when retries run out,
+  /// std::runtime_error for any other refusal (a bug or a misconfiguration: do not retry).
+  std::string send(const std::string& method, const std::string& path, const std::string& body = {},
+                   const char* content_type = protocol::cbor_type) {
+    const auto deadline = std::chrono::steady_clock::now() + options_.retry_for;
+    auto pause = options_.first_backoff;
+    for (int attempt = 1;; ++attempt) {
+      const httplib::Result r = method == "GET" ? client_.Get(path, headers_)
+                                                : client_.Post(path, headers_, body, content_type);
+      std::string why;
+      if (!r) {
+        why = httplib::to_string(r.error());
+      } else if (r->status / 100 == 2) {
+        return r->body;
+      } else if (r->status == 409) {
+        throw LeaseLost(method + " " + path + ": " + problem_detail(r->body));
+      } else if (r->status < 500) {
+        throw std::runtime_error(method + " " + path + " answered " + std::to_string(r->status) + ": " +
+                                 problem_detail(r->body));
+      } else {
+        why = "status " + std::to_string(r->status) + ": " + problem_detail(r->body);
+      }
+      if (std::chrono::steady_clock::now() + pause > deadline) {
+        throw ServiceUnreachable(method + " " + path + " failed " + std::to_string(attempt) + " times (last: " + why +
+                                 "); giving up");
+      }
+      log(method + " " + path + " failed (" + why + "); retrying in " + std::to_string(pause.count()) + " ms");
+      std::this_thread::sleep_for(pause);
+      pause = std::min(pause * 2, std::chrono::milliseconds(5000));
+    }
+  }
+
+  void log(const std::string& line) const {
+    if (options_.log) options_.log(line);
+  }
+
+ private:
+  static std::string problem_detail(const std::string& body) {
+    const json j = json::parse(body, nullptr, false);
+    if (j.is_object() && j.contains("detail") && j["detail"].is_string()) return j["detail"];
+    return body.substr(0, 200);
+  }
+
+  const WorkerOptions& options_;
+  httplib::Client client_;
+  httplib::Headers headers_;
+};
+
+/// The remote sink: each call is one request, committed by the service before it answers.
+class HttpSink final : public RunSink {
+ public:
+  HttpSink(ServiceConnection& service, std::string job_path) : service_(service), path_(std::move(job_path)) {}
+
+  void iteration(int iteration, const std::string& row, const std::vector<std::uint8_t>& state) override {
+    const json answer = json::parse(service_.send("POST", path_ + "/work/iterations",
+                                                  protocol::encode_iteration(iteration, row, state)));
+    stop_ = answer.value("stop", false);
+    service_.log("iteration " + std::to_string(iteration) + " committed" + (stop_ ? "; a stop was requested" : ""));
+  }
+
+  bool stop_requested() override { return stop_; }
+
+  void finish(JobState state, const std::optional<std::string>& result, const std::optional<std::string>& message,
+              const std::optional<std::string>& error) override {
+    service_.send("POST", path_ + "/work/finish", protocol::encode_finish({state, result, message, error}));
+    service_.log(std::string("finished: ") + to_string(state) + (message ? " (" + *message + ")" : "") +
+                 (error ? " error: " + *error : ""));
+  }
+
+ private:
+  ServiceConnection& service_;
+  std::string path_;
+  bool stop_ = false;
+};
+
+}  // namespace
+
+int run_worker(const WorkerOptions& options) {
+  ServiceConnection service(options);
+  const std::string path = "/v1/jobs/" + std::to_string(options.job);
+  try {
+    Lease lease;
+    if (options.lease) {
+      lease = *options.lease;
+    } else {
+      const json granted = json::parse(service.send("POST", path + "/lease", "", "application/json"));
+      lease = {granted.at("attempt").get<int>(), granted.at("secret").get<std::string>()};
+    }
+    service.set_lease(lease);
+    const protocol::Work work = protocol::decode_work(service.send("GET", path + "/work"));
+    service.log("job " + std::to_string(work.job) + ", attempt " + std::to_string(work.attempt) +
+                (work.input.state ? ": resuming" : ": starting"));
+    HttpSink sink(service, path);
+    const std::atomic<bool> never{false};
+    execute_run(work.input, sink, never);
+    return 0;
+  } catch (const LeaseLost& e) {
+    service.log(std::string("the service refused this run: ") + e.what());
+    return worker_exit_lease_lost;
+  } catch (const ServiceUnreachable& e) {
+    service.log(e.what());
+    return worker_exit_unreachable;
+  }
+}
+
+}  // namespace saasgaps::service

@@ -1,0 +1,116 @@
+#include "service/worker_protocol.hpp"
+
+#include <charconv>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace saasgaps::service::worker_protocol {
+
+using nlohmann::json;
+
+namespace {
+
+json decode(const std::string& body) {
+  json j = json::from_cbor(body, true, false);
+  if (j.is_discarded() || !j.is_object()) throw std::invalid_argument("the body is not a CBOR map");
+  return j;
+}
+
+template <class T>
+T field(const json& j, const char* name) {
+  if (!j.contains(name)) throw std::invalid_argument(std::string("the body has no \"") + name + "\"");
+  try {
+    return j.at(name).get<T>();
+  } catch (const json::exception&) {
+    throw std::invalid_argument(std::string("the body's \"") + name + "\" has the wrong type");
+  }
+}
+
+std::optional<std::string> optional_text(const json& j, const char* name) {
+  if (!j.contains(name) || j.at(name).is_null()) return std::nullopt;
+  return field<std::string>(j, name);
+}
+
+std::vector<std::uint8_t> bytes(const json& j, const char* name) {
+  if (!j.contains(name) || !j.at(name).is_binary()) {
+    throw std::invalid_argument(std::string("the body's \"") + name + "\" must be a byte string");
+  }
+  return j.at(name).get_binary();
+}
+
+}  // namespace
+
+std::string format_lease(const Lease& lease) { return std::to_string(lease.attempt) + ":" + lease.secret; }
+
+std::optional<Lease> parse_lease(std::string_view text) {
+  const auto colon = text.find(':');
+  if (colon == std::string_view::npos || colon + 1 == text.size()) return std::nullopt;
+  Lease lease;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + colon, lease.attempt);
+  if (error != std::errc() || end != text.data() + colon || lease.attempt < 1) return std::nullopt;
+  lease.secret = std::string(text.substr(colon + 1));
+  return lease;
+}
+
+std::string encode_work(const ClaimedJob& claimed) {
+  json j = {{"job", claimed.job.id},
+            {"attempt", claimed.lease.attempt},
+            {"model", claimed.model},
+            {"state", claimed.state ? json::binary(*claimed.state) : json(nullptr)},
+            {"settings", settings_to_text(claimed.job.settings)}};
+  const std::vector<std::uint8_t> cbor = json::to_cbor(j);
+  return {cbor.begin(), cbor.end()};
+}
+
+Work decode_work(const std::string& body) {
+  const json j = decode(body);
+  Work work;
+  work.job = field<std::int64_t>(j, "job");
+  work.attempt = field<int>(j, "attempt");
+  work.input.model = field<std::string>(j, "model");
+  if (!j.at("state").is_null()) work.input.state = bytes(j, "state");
+  work.input.settings = settings_from_text(field<std::string>(j, "settings"));
+  return work;
+}
+
+std::string encode_iteration(int iteration, const std::string& row, const std::vector<std::uint8_t>& state) {
+  const std::vector<std::uint8_t> cbor = json::to_cbor(json{{"iteration", iteration}, {"row", row}, {"state", json::binary(state)}});
+  return {cbor.begin(), cbor.end()};
+}
+
+Iteration decode_iteration(const std::string& body) {
+  const json j = decode(body);
+  Iteration it{field<int>(j, "iteration"), field<std::string>(j, "row"), bytes(j, "state")};
+  if (it.iteration < 1) throw std::invalid_argument("the body's \"iteration\" must be >= 1");
+  // The row is stored and served as JSON text: it must be JSON.
+  if (!json::accept(it.row)) throw std::invalid_argument("the body's \"row\" is not JSON");
+  return it;
+}
+
+std::string encode_finish(const Finish& finish) {
+  json j = {{"state", to_string(finish.state)}};
+  if (finish.result) j["result"] = *finish.result;
+  if (finish.message) j["message"] = *finish.message;
+  if (finish.error) j["error"] = *finish.error;
+  const std::vector<std::uint8_t> cbor = json::to_cbor(j);
+  return {cbor.begin(), cbor.end()};
+}
+
+Finish decode_finish(const std::string& body) {
+  const json j = decode(body);
+  Finish finish;
+  const std::optional<JobState> state = parse_job_state(field<std::string>(j, "state"));
+  // A run ends converged, not_converged, failed or cancelled; interrupted is for the service to decide,
+  // so that every interruption is counted.
+  if (!state || !is_finished(*state)) {
+    throw std::invalid_argument("the body's \"state\" must be a state a run ends in");
+  }
+  finish.state = *state;
+  finish.result = optional_text(j, "result");
+  finish.message = optional_text(j, "message");
+  finish.error = optional_text(j, "error");
+  if (finish.result && !json::accept(*finish.result)) throw std::invalid_argument("the body's \"result\" is not JSON");
+  return finish;
+}
+
+}  // namespace saasgaps::service::worker_protocol

@@ -1,0 +1,53 @@
+#pragma once
+/// What a worker and the service say to each other (docs/cluster.md, "Worker protocol"). Bodies are
+/// CBOR maps, so restart states travel as the bytes the store keeps, not as base64 or JSON numbers:
+///   GET  /v1/jobs/{id}/work              -> {job, attempt, model, state: bytes|null, settings}
+///   POST /v1/jobs/{id}/work/iterations   <- {iteration, row, state: bytes}   -> JSON {stop}
+///   POST /v1/jobs/{id}/work/finish       <- {state, result?, message?, error?}
+///   POST /v1/jobs/{id}/lease             -> JSON {attempt, secret} (a worker started by hand)
+/// Every request but the last carries the run's lease in the Saasgaps-Lease header, "ATTEMPT:SECRET".
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "service/job_execution.hpp"
+#include "service/job_store.hpp"
+
+namespace saasgaps::service::worker_protocol {
+
+inline constexpr const char* lease_header = "Saasgaps-Lease";
+inline constexpr const char* cbor_type = "application/cbor";
+
+std::string format_lease(const Lease& lease);
+/// "ATTEMPT:SECRET" with ATTEMPT >= 1 and a non-empty secret; nothing otherwise.
+std::optional<Lease> parse_lease(std::string_view text);
+
+struct Work {
+  std::int64_t job = 0;
+  int attempt = 0;
+  RunInput input;
+};
+std::string encode_work(const ClaimedJob& claimed);
+Work decode_work(const std::string& body);
+
+struct Iteration {
+  int iteration = 0;
+  std::string row;
+  std::vector<std::uint8_t> state;
+};
+std::string encode_iteration(int iteration, const std::string& row, const std::vector<std::uint8_t>& state);
+Iteration decode_iteration(const std::string& body);
+
+struct Finish {
+  JobState state = JobState::failed;
+  std::optional<std::string> result, message, error;
+};
+std::string encode_finish(const Finish& finish);
+Finish decode_finish(const std::string& body);
+
+/// A body that does not decode: std::invalid_argument naming the field.
+
+}  // namespace saasgaps::service::worker_protocol
