@@ -14,7 +14,8 @@ BUILD_PACKAGES=(
   libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev libcli11-dev libcairo2-dev
 )
 # What the tests need on top.
-TEST_PACKAGES=(googletest libgtest-dev python3 python3-jsonschema python3-pil python3-meshio chromium chromium-driver)
+TEST_PACKAGES=(googletest libgtest-dev python3 python3-jsonschema python3-pil python3-meshio chromium chromium-driver
+  slurm-wlm munge)
 
 # install_packages PKG...: apt-get installs the ones dpkg does not report as installed.
 install_packages() {

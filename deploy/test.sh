@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds everything, and runs every test (unit, verification, service).
+# Installs what is missing, builds everything, and runs every test (unit, verification, service, and
+# slurm: a private one-node Slurm cluster started by tests/slurm/slurm_cluster.sh).
 #   ./deploy/test.sh            all tests
 #   ./deploy/test.sh -L unit    extra arguments go to ctest
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
