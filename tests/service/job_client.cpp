@@ -55,4 +55,30 @@ json solve_locally(const std::filesystem::path& dir, const std::string& body) {
   return json::parse(in);
 }
 
+void cancel_then_resume_with_a_new_schedule(httplib::Client& client, std::int64_t job) {
+  const std::string path = "/v1/jobs/" + std::to_string(job);
+  wait_for_running_iteration(client, job, 2);
+  ASSERT_EQ(client.Post(path + "/cancel", "", "application/json")->status, 202);
+  const json cancelled = wait_for_state(client, job, {"cancelled"});
+  const int stopped_at = cancelled["iteration"].get<int>();
+  EXPECT_GE(stopped_at, 2);
+  // The stopped run's result is there to look at, and says it did not converge.
+  EXPECT_EQ(get_json(client, path + "/result")["status"], "not_converged");
+
+  const httplib::Result resumed =
+      client.Post(path + "/resume", R"({"tensile_schedule": [3, 1], "max_iterations": 60})", "application/json");
+  ASSERT_EQ(resumed->status, 202) << resumed->body;
+  EXPECT_EQ(json::parse(resumed->body)["state"], "queued");
+  const json done = wait_for_state(client, job, {"converged", "not_converged", "failed"});
+  EXPECT_EQ(done["state"], "converged") << done.dump();
+  EXPECT_EQ(done["max_iterations"], 60);
+  const json rows = get_json(client, path + "/iterations")["iterations"];
+  ASSERT_GT(static_cast<int>(rows.size()), stopped_at + 2);
+  // The new schedule starts afresh after the stop, and the rows record the second attempt.
+  EXPECT_EQ(rows[stopped_at]["tensile_modulus"], 3.0);
+  EXPECT_EQ(rows[stopped_at + 1]["tensile_modulus"], 1.0);
+  EXPECT_EQ(rows[stopped_at]["attempt"], 2);
+  EXPECT_EQ(rows[stopped_at - 1]["attempt"], 1);
+}
+
 }  // namespace saasgaps::testing

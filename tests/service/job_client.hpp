@@ -27,4 +27,9 @@ std::vector<int> iteration_numbers(httplib::Client& client, std::int64_t job);
 /// `saasgaps solve` of the document, in `dir`: the reference every service result must equal.
 nlohmann::json solve_locally(const std::filesystem::path& dir, const std::string& body);
 
+/// Cancels the running job after its second iteration, checks the stopped run's result, resumes it
+/// with the tensile schedule [3, 1] and 60 iterations, and checks that the new schedule starts afresh
+/// after the stop and the run converges. The job must be a tilted block (long_job_model.hpp).
+void cancel_then_resume_with_a_new_schedule(httplib::Client& client, std::int64_t job);
+
 }  // namespace saasgaps::testing

@@ -9,6 +9,7 @@
 #include <set>
 #include <thread>
 
+#include "service/job_client.hpp"
 #include "service/long_job_model.hpp"
 #include "service/server_process.hpp"
 
@@ -30,11 +31,6 @@ class Service : public ::testing::Test {
 
   [[nodiscard]] fs::path database() const { return dir_ / "jobs.db"; }
 
-  static std::string example_text(const std::string& name) {
-    std::ifstream in(std::string(SAASGAPS_EXAMPLES_DIR) + "/" + name);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }
-
   /// POST a model; returns the job id (asserting 202).
   static std::int64_t submit(httplib::Client& client, const std::string& body, const httplib::Headers& headers = {}) {
     const httplib::Result r = client.Post("/v1/jobs", headers, body, "application/json");
@@ -45,42 +41,13 @@ class Service : public ::testing::Test {
   }
 
   /// `saasgaps solve` of the same document: the reference every service result must equal.
-  [[nodiscard]] json solve_locally(const std::string& body) const {
-    const fs::path model = dir_ / "reference-model.json", result = dir_ / "reference-result.json";
-    std::ofstream(model) << body;
-    const CommandResult run = run_command({SAASGAPS_BINARY, "solve", model.string(), "-q", "-o", result.string()});
-    EXPECT_LE(run.exit_code, 3) << run.output;
-    std::ifstream in(result);
-    return json::parse(in);
-  }
+  [[nodiscard]] json solve_locally(const std::string& body) const { return testing::solve_locally(dir_, body); }
 
   static json problem(const httplib::Result& r, int status) {
     EXPECT_TRUE(r);
     EXPECT_EQ(r->status, status) << r->body;
     EXPECT_EQ(r->get_header_value("Content-Type"), "application/problem+json") << r->body;
     return json::parse(r->body);
-  }
-
-  /// Waits until the job has finished iteration k while still running; fails if it stops first.
-  static void wait_for_iteration(httplib::Client& client, std::int64_t job, int k) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    for (;;) {
-      const json j = get_json(client, "/v1/jobs/" + std::to_string(job));
-      const std::string state = j["state"];
-      if (state == "running" && j["iteration"].get<int>() >= k) return;
-      ASSERT_TRUE(state == "queued" || state == "running") << "the job stopped before iteration " << k << ": " << j.dump();
-      ASSERT_LT(std::chrono::steady_clock::now(), deadline) << "iteration " << k << " never came";
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-  }
-
-  static std::vector<int> iteration_numbers(httplib::Client& client, std::int64_t job) {
-    std::vector<int> numbers;
-    const json rows = get_json(client, "/v1/jobs/" + std::to_string(job) + "/iterations");
-    for (const json& row : rows["iterations"]) {
-      numbers.push_back(row["iteration"].get<int>());
-    }
-    return numbers;
   }
 
   fs::path dir_;
@@ -203,7 +170,7 @@ TEST_F(Service, KillNineMidJobThenRestartResumesToTheUninterruptedResult) {
     httplib::Client client = server.client();
     job = submit(client, body);
     // Kill while iteration 3 or later is committed and the job still runs.
-    wait_for_iteration(client, job, 3);
+    wait_for_running_iteration(client, job, 3);
     server.kill_hard();
   }
   ServerProcess restarted(database());
@@ -226,30 +193,7 @@ TEST_F(Service, KillNineMidJobThenRestartResumesToTheUninterruptedResult) {
 TEST_F(Service, CancelThenResumeWithANewSchedule) {
   ServerProcess server(database());
   httplib::Client client = server.client();
-  const std::int64_t job = submit(client, tilted_block_document(120).dump());
-  const std::string path = "/v1/jobs/" + std::to_string(job);
-  wait_for_iteration(client, job, 2);
-  ASSERT_EQ(client.Post(path + "/cancel", "", "application/json")->status, 202);
-  const json cancelled = wait_for_state(client, job, {"cancelled"});
-  const int stopped_at = cancelled["iteration"].get<int>();
-  EXPECT_GE(stopped_at, 2);
-  // The stopped run's result is there to look at, and says it did not converge.
-  EXPECT_EQ(get_json(client, path + "/result")["status"], "not_converged");
-
-  const httplib::Result resumed =
-      client.Post(path + "/resume", R"({"tensile_schedule": [3, 1], "max_iterations": 60})", "application/json");
-  ASSERT_EQ(resumed->status, 202) << resumed->body;
-  EXPECT_EQ(json::parse(resumed->body)["state"], "queued");
-  const json done = wait_for_state(client, job, {"converged", "not_converged", "failed"});
-  EXPECT_EQ(done["state"], "converged") << done.dump();
-  EXPECT_EQ(done["max_iterations"], 60);
-  const json rows = get_json(client, path + "/iterations")["iterations"];
-  ASSERT_GT(static_cast<int>(rows.size()), stopped_at + 2);
-  // The new schedule starts afresh after the stop, and the rows record the second attempt.
-  EXPECT_EQ(rows[stopped_at]["tensile_modulus"], 3.0);
-  EXPECT_EQ(rows[stopped_at + 1]["tensile_modulus"], 1.0);
-  EXPECT_EQ(rows[stopped_at]["attempt"], 2);
-  EXPECT_EQ(rows[stopped_at - 1]["attempt"], 1);
+  cancel_then_resume_with_a_new_schedule(client, submit(client, tilted_block_document(120).dump()));
 }
 
 TEST_F(Service, SeveralJobsQueuedAtOnce) {
@@ -379,7 +323,7 @@ TEST_F(Service, GracefulStopInterruptsAndTheNextServerResumes) {
     ServerProcess server(database());
     httplib::Client client = server.client();
     job = submit(client, body);
-    wait_for_iteration(client, job, 2);
+    wait_for_running_iteration(client, job, 2);
     EXPECT_EQ(server.stop(), 0);
   }
   ServerProcess restarted(database());

@@ -242,28 +242,8 @@ TEST_F(Slurm, ASlurmJobThatEndedWhileTheServiceWasDownIsResubmitted) {
 TEST_F(Slurm, CancelThenResumeWithANewSchedule) {
   ServerProcess server(database(), serve_arguments());
   httplib::Client client = client_of(server);
-  const std::int64_t job = submit_job(client, tilted_block_document(120).dump());
-  const std::string path = "/v1/jobs/" + std::to_string(job);
-  wait_for_running_iteration(client, job, 2);
-  ASSERT_EQ(client.Post(path + "/cancel", "", "application/json")->status, 202);
-  const json cancelled = wait_for_state(client, job, {"cancelled"});
-  const int stopped_at = cancelled["iteration"].get<int>();
-  EXPECT_GE(stopped_at, 2);
-  // The worker stopped at an iteration boundary and reported: the stopped run's result is there.
-  EXPECT_EQ(get_json(client, path + "/result")["status"], "not_converged");
-
-  const httplib::Result resumed =
-      client.Post(path + "/resume", R"({"tensile_schedule": [3, 1], "max_iterations": 60})", "application/json");
-  ASSERT_EQ(resumed->status, 202) << resumed->body;
-  const json done = wait_for_state(client, job, {"converged", "not_converged", "failed"});
-  EXPECT_EQ(done["state"], "converged") << done.dump();
-  EXPECT_EQ(done["max_iterations"], 60);
-  const json rows = get_json(client, path + "/iterations")["iterations"];
-  ASSERT_GT(static_cast<int>(rows.size()), stopped_at + 2);
-  EXPECT_EQ(rows[stopped_at]["tensile_modulus"], 3.0);
-  EXPECT_EQ(rows[stopped_at + 1]["tensile_modulus"], 1.0);
-  EXPECT_EQ(rows[stopped_at]["attempt"], 2);
-  EXPECT_EQ(rows[stopped_at - 1]["attempt"], 1);
+  // The worker stops at an iteration boundary and reports; the resume is a new Slurm job.
+  cancel_then_resume_with_a_new_schedule(client, submit_job(client, tilted_block_document(120).dump()));
 }
 
 TEST_F(Slurm, CancelOfAPendingSlurmJobScancelsIt) {
