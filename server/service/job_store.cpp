@@ -184,6 +184,18 @@ std::string new_lease_secret() {
   return secret;
 }
 
+/// The model and the latest restart state of claimed.job.
+void load_run_input(Connection& db, ClaimedJob& claimed) {
+  const std::int64_t id = claimed.job.id;
+  Statement model = db.prepare("SELECT document FROM models WHERE job_id = ?");
+  model.bind(1, id);
+  if (!model.step()) throw StoreError("job " + std::to_string(id) + " has no model");
+  claimed.model = model.text(0);
+  Statement state = db.prepare("SELECT state FROM states WHERE job_id = ? ORDER BY iteration DESC LIMIT 1");
+  state.bind(1, id);
+  if (state.step()) claimed.state = state.blob(0);
+}
+
 /// Starts a run of a queued or interrupted job: running, attempts + 1, a new lease; returns what the
 /// run needs (model, latest restart state, settings, lease).
 ClaimedJob start_run(Connection& db, std::int64_t id, const std::string& worker) {
@@ -203,13 +215,7 @@ ClaimedJob start_run(Connection& db, std::int64_t id, const std::string& worker)
   ClaimedJob claimed;
   claimed.job = require_job(db, id);
   claimed.lease = {claimed.job.attempts, secret};
-  Statement model = db.prepare("SELECT document FROM models WHERE job_id = ?");
-  model.bind(1, id);
-  if (!model.step()) throw StoreError("job " + std::to_string(id) + " has no model");
-  claimed.model = model.text(0);
-  Statement state = db.prepare("SELECT state FROM states WHERE job_id = ? ORDER BY iteration DESC LIMIT 1");
-  state.bind(1, id);
-  if (state.step()) claimed.state = state.blob(0);
+  load_run_input(db, claimed);
   return claimed;
 }
 
@@ -248,6 +254,13 @@ bool check_lease(Connection& db, std::int64_t id, const Lease& lease, std::optio
   }
   throw LeaseConflict(job + ": iteration " + std::to_string(*iteration) + " does not follow the last committed one (" +
                       std::to_string(committed) + ")");
+}
+
+/// A running job cancelled without its run's say (its Slurm job ended or was scancelled): the lease
+/// is revoked, so the run can write nothing more.
+void cancel_revoked(Connection& db, const JobRecord& job, const std::string& why) {
+  db.prepare("UPDATE jobs SET lease_owner = NULL, lease_secret = NULL, cancel_requested = 0 WHERE id = ?").bind(1, job.id).run();
+  change_state(db, job.id, JobState::cancelled, "cancelled after iteration " + std::to_string(job.iteration) + "; " + why);
 }
 
 /// A run ended without finishing (the server died, its Slurm job ended): the job becomes interrupted,
@@ -670,13 +683,7 @@ ClaimedJob JobStore::work(std::int64_t id, const Lease& lease) {
   ClaimedJob claimed;
   claimed.job = job;
   claimed.lease = lease;
-  Statement model = db->prepare("SELECT document FROM models WHERE job_id = ?");
-  model.bind(1, id);
-  if (!model.step()) throw StoreError("job " + std::to_string(id) + " has no model");
-  claimed.model = model.text(0);
-  Statement state = db->prepare("SELECT state FROM states WHERE job_id = ? ORDER BY iteration DESC LIMIT 1");
-  state.bind(1, id);
-  if (state.step()) claimed.state = state.blob(0);
+  load_run_input(*db, claimed);
   tx.commit();
   return claimed;
 }
@@ -729,8 +736,7 @@ void JobStore::slurm_run_ended(std::int64_t id, int attempt, const std::string& 
   db->prepare("UPDATE jobs SET slurm_state = ? WHERE id = ?").bind(1, slurm_state).bind(2, id).run();
   const std::string what = "Slurm job " + *job.slurm_job_id + " ended (" + slurm_state + ") before its worker finished";
   if (job.cancel_requested) {
-    db->prepare("UPDATE jobs SET lease_owner = NULL, lease_secret = NULL, cancel_requested = 0 WHERE id = ?").bind(1, id).run();
-    change_state(*db, id, JobState::cancelled, "cancelled after iteration " + std::to_string(job.iteration) + "; " + what);
+    cancel_revoked(*db, job, what);
   } else {
     interrupt(*db, id, what, max_interruptions_);
   }
@@ -751,11 +757,8 @@ void JobStore::slurm_run_cancelled(std::int64_t id, int attempt, const std::stri
   WriteTransaction tx(*db);
   const JobRecord job = require_job(*db, id);
   if (job.state != JobState::running || job.attempts != attempt) return;
-  db->prepare("UPDATE jobs SET lease_owner = NULL, lease_secret = NULL, cancel_requested = 0, slurm_state = ? WHERE id = ?")
-      .bind(1, "CANCELLED")
-      .bind(2, id)
-      .run();
-  change_state(*db, id, JobState::cancelled, "cancelled after iteration " + std::to_string(job.iteration) + "; " + why);
+  db->prepare("UPDATE jobs SET slurm_state = 'CANCELLED' WHERE id = ?").bind(1, id).run();
+  cancel_revoked(*db, job, why);
   tx.commit();
 }
 

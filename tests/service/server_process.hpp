@@ -31,6 +31,10 @@ class ServerProcess {
   int port_ = 0;
 };
 
+/// A free loopback port, for a program that cannot report one it picked itself (chromedriver) or a
+/// server that must come back on the same port after a restart.
+int free_port();
+
 /// Runs a command with its arguments and returns its exit status and standard error.
 struct CommandResult {
   int exit_code = -1;

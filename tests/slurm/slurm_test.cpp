@@ -3,9 +3,7 @@
 // iteration over HTTP. The results must equal `saasgaps solve` to the last digit, whatever happens
 // to the Slurm job or to the service on the way.
 #include <gtest/gtest.h>
-#include <netinet/in.h>
 #include <sqlite3.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -33,19 +31,6 @@ std::map<std::string, std::string> cluster_environment() {
     if (eq != std::string::npos) values[line.substr(0, eq)] = line.substr(eq + 1);
   }
   return values;
-}
-
-/// A free loopback port, for a server that must come back on the same one.
-int free_port() {
-  const int s = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ::bind(s, reinterpret_cast<sockaddr*>(&a), sizeof a);
-  socklen_t n = sizeof a;
-  ::getsockname(s, reinterpret_cast<sockaddr*>(&a), &n);
-  ::close(s);
-  return ntohs(a.sin_port);
 }
 
 /// `saasgaps solve` of a document, once per document for the whole test program.

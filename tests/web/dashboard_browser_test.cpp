@@ -24,19 +24,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-/// A free loopback port for chromedriver (which cannot report one it picked itself).
-int free_port() {
-  const int s = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ::bind(s, reinterpret_cast<sockaddr*>(&address), sizeof address);
-  socklen_t length = sizeof address;
-  ::getsockname(s, reinterpret_cast<sockaddr*>(&address), &length);
-  ::close(s);
-  return ntohs(address.sin_port);
-}
-
 /// chromedriver and one headless Chromium session.
 class Browser {
  public:
