@@ -1,0 +1,84 @@
+#pragma once
+/// Inside the job store: the connection pool and the row helpers that job_store.cpp (jobs, their
+/// rows and states) and run_leases.cpp (runs, leases, remote workers, Slurm) share. Not for use
+/// outside those two files.
+
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "service/job_store.hpp"
+
+namespace saasgaps::service {
+
+/// Connections handed out one per caller at a time: SQLite connections are not shared across threads,
+/// and separate connections let WAL readers run beside the writer.
+class JobStore::Pool {
+ public:
+  explicit Pool(std::string path) : path_(std::move(path)) {}
+  [[nodiscard]] const std::string& path() const { return path_; }
+
+  class Lease {
+   public:
+    Lease(Pool& pool, std::unique_ptr<Connection> c) : pool_(pool), connection_(std::move(c)) {}
+    ~Lease() { pool_.give_back(std::move(connection_)); }
+    Lease(const Lease&) = delete;
+    Lease& operator=(const Lease&) = delete;
+    Connection& operator*() { return *connection_; }
+    Connection* operator->() { return connection_.get(); }
+
+   private:
+    Pool& pool_;
+    std::unique_ptr<Connection> connection_;
+  };
+
+  Lease lease() {
+    {
+      std::lock_guard lock(mutex_);
+      if (!idle_.empty()) {
+        std::unique_ptr<Connection> c = std::move(idle_.back());
+        idle_.pop_back();
+        return Lease(*this, std::move(c));
+      }
+    }
+    return Lease(*this, std::make_unique<Connection>(path_));
+  }
+
+ private:
+  void give_back(std::unique_ptr<Connection> c) {
+    std::lock_guard lock(mutex_);
+    if (idle_.size() < 16) idle_.push_back(std::move(c));
+  }
+
+  std::string path_;
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<Connection>> idle_;
+};
+
+namespace detail {
+
+nlohmann::json settings_json(const RunSettings& s);
+RunSettings parse_settings(const std::string& text);
+JobRecord require_job(Connection& db, std::int64_t id);
+/// Sets a job's state (and optional message / error) and records the state event.
+void change_state(Connection& db, std::int64_t job, JobState state, const std::optional<std::string>& message = {},
+                  const std::optional<std::string>& error = {});
+
+/// Starts a run of a queued or interrupted job: running, attempts + 1, a new lease; returns what the
+/// run needs (model, latest restart state, settings, lease).
+ClaimedJob start_run(Connection& db, std::int64_t id, const std::string& worker);
+/// A run ended without finishing (the server died, its Slurm job ended): the job becomes interrupted,
+/// to be resumed from its last committed iteration, or failed beyond max_interruptions. The lease is
+/// revoked either way.
+void interrupt(Connection& db, std::int64_t id, const std::string& what, int max_interruptions);
+/// A write by a lease holder may go ahead (true), was already made by the same lease (false: a
+/// retried request), or is refused (LeaseConflict). `iteration` and `row` for an iteration; without
+/// them, a finish.
+bool check_lease(Connection& db, std::int64_t id, const Lease& lease, std::optional<int> iteration,
+                 const std::string& row);
+
+}  // namespace detail
+}  // namespace saasgaps::service

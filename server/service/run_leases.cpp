@@ -1,0 +1,227 @@
+/// Runs of jobs and their leases: starting a run, checking a lease on every write, interrupting a
+/// run that ended without finishing; the operations of remote workers and the Slurm executor.
+#include <cstdio>
+#include <random>
+
+#include "service/job_store.hpp"
+#include "service/job_store_detail.hpp"
+
+namespace saasgaps::service {
+
+using namespace detail;
+
+namespace {
+
+/// 128 random bits in hex: the secret half of a run's lease.
+std::string new_lease_secret() {
+  std::random_device device;
+  std::string secret;
+  for (int k = 0; k < 4; ++k) {
+    char word[9];
+    std::snprintf(word, sizeof word, "%08x", static_cast<unsigned>(device()));
+    secret += word;
+  }
+  return secret;
+}
+
+/// The model and the latest restart state of claimed.job.
+void load_run_input(Connection& db, ClaimedJob& claimed) {
+  const std::int64_t id = claimed.job.id;
+  Statement model = db.prepare("SELECT document FROM models WHERE job_id = ?");
+  model.bind(1, id);
+  if (!model.step()) throw StoreError("job " + std::to_string(id) + " has no model");
+  claimed.model = model.text(0);
+  Statement state = db.prepare("SELECT state FROM states WHERE job_id = ? ORDER BY iteration DESC LIMIT 1");
+  state.bind(1, id);
+  if (state.step()) claimed.state = state.blob(0);
+}
+
+/// A running job cancelled without its run's say (its Slurm job ended or was scancelled): the lease
+/// is revoked, so the run can write nothing more.
+void cancel_revoked(Connection& db, const JobRecord& job, const std::string& why) {
+  db.prepare("UPDATE jobs SET lease_owner = NULL, lease_secret = NULL, cancel_requested = 0 WHERE id = ?").bind(1, job.id).run();
+  change_state(db, job.id, JobState::cancelled, "cancelled after iteration " + std::to_string(job.iteration) + "; " + why);
+}
+
+}  // namespace
+
+namespace detail {
+
+ClaimedJob start_run(Connection& db, std::int64_t id, const std::string& worker) {
+  const std::string now = utc_now();
+  const std::string secret = new_lease_secret();
+  db.prepare(
+        "UPDATE jobs SET attempts = attempts + 1, started_at = COALESCE(started_at, ?), lease_owner = ?,"
+        " heartbeat_at = ?, cancel_requested = 0, finished_at = NULL, error = NULL, lease_secret = ?,"
+        " slurm_job_id = NULL, slurm_state = NULL WHERE id = ?")
+      .bind(1, now)
+      .bind(2, worker)
+      .bind(3, now)
+      .bind(4, secret)
+      .bind(5, id)
+      .run();
+  change_state(db, id, JobState::running);
+  ClaimedJob claimed;
+  claimed.job = require_job(db, id);
+  claimed.lease = {claimed.job.attempts, secret};
+  load_run_input(db, claimed);
+  return claimed;
+}
+
+bool check_lease(Connection& db, std::int64_t id, const Lease& lease, std::optional<int> iteration,
+                 const std::string& row) {
+  Statement q = db.prepare("SELECT state, attempts, lease_secret, iteration FROM jobs WHERE id = ?");
+  q.bind(1, id);
+  if (!q.step()) throw JobNotFound(id);
+  const JobState state = parse_job_state(q.text(0)).value_or(JobState::failed);
+  const auto attempts = static_cast<int>(q.integer(1));
+  const std::optional<std::string> secret = q.optional_text(2);
+  const auto committed = static_cast<int>(q.integer(3));
+  const std::string job = "job " + std::to_string(id);
+  if (lease.attempt != attempts || !secret || *secret != lease.secret) {
+    throw LeaseConflict(job + ": the lease of attempt " + std::to_string(lease.attempt) +
+                        " is no longer valid (the job is " + to_string(state) + ", attempt " +
+                        std::to_string(attempts) + "); this run must stop");
+  }
+  if (!iteration) {
+    if (state == JobState::running) return true;
+    if (is_finished(state)) return false;
+    throw LeaseConflict(job + " is " + to_string(state) + "; attempt " + std::to_string(attempts) + " cannot finish it");
+  }
+  if (state != JobState::running) {
+    throw LeaseConflict(job + " is " + to_string(state) + "; attempt " + std::to_string(attempts) +
+                        " cannot record iteration " + std::to_string(*iteration));
+  }
+  if (*iteration == committed + 1) return true;
+  if (*iteration <= committed) {
+    Statement old = db.prepare("SELECT row FROM iterations WHERE job_id = ? AND iteration = ?");
+    old.bind(1, id).bind(2, *iteration);
+    if (old.step() && old.text(0) == row) return false;
+  }
+  throw LeaseConflict(job + ": iteration " + std::to_string(*iteration) + " does not follow the last committed one (" +
+                      std::to_string(committed) + ")");
+}
+
+void interrupt(Connection& db, std::int64_t id, const std::string& what, int max_interruptions) {
+  db.prepare("UPDATE jobs SET interruptions = interruptions + 1, lease_owner = NULL, lease_secret = NULL WHERE id = ?")
+      .bind(1, id)
+      .run();
+  const JobRecord job = require_job(db, id);
+  if (job.interruptions > max_interruptions) {
+    change_state(db, id, JobState::failed, std::nullopt,
+                 what + "; interrupted " + std::to_string(job.interruptions) +
+                     " times, it is not resumed again automatically (resume it by hand to try once more)");
+  } else {
+    change_state(db, id, JobState::interrupted, what + "; resumes from iteration " + std::to_string(job.iteration));
+  }
+}
+
+}  // namespace detail
+
+// Remote workers and the Slurm executor.
+
+std::string settings_to_text(const RunSettings& settings) { return settings_json(settings).dump(); }
+RunSettings settings_from_text(const std::string& text) { return parse_settings(text); }
+
+ClaimedJob JobStore::claim_job(std::int64_t id, const std::string& worker) {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  const JobRecord job = require_job(*db, id);
+  if (job.state != JobState::queued && job.state != JobState::interrupted) {
+    throw JobConflict("job " + std::to_string(id) + " is " + to_string(job.state) +
+                      "; a worker can take only a queued or interrupted job");
+  }
+  ClaimedJob claimed = start_run(*db, id, worker);
+  tx.commit();
+  return claimed;
+}
+
+ClaimedJob JobStore::work(std::int64_t id, const Lease& lease) {
+  auto db = pool_->lease();
+  // A read that must agree with the lease check: one snapshot.
+  WriteTransaction tx(*db);
+  const JobRecord job = require_job(*db, id);
+  check_lease(*db, id, lease, job.iteration + 1, {});  // refuses a stale lease, or a job not running
+  ClaimedJob claimed;
+  claimed.job = job;
+  claimed.lease = lease;
+  load_run_input(*db, claimed);
+  tx.commit();
+  return claimed;
+}
+
+bool JobStore::set_slurm_job(std::int64_t id, int attempt, const std::string& slurm_job_id,
+                             const std::string& slurm_state) {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  db->prepare(
+        "UPDATE jobs SET slurm_job_id = ?, slurm_state = ?, lease_owner = ?, updated_at = ?"
+        " WHERE id = ? AND attempts = ? AND state = 'running'")
+      .bind(1, slurm_job_id)
+      .bind(2, slurm_state)
+      .bind(3, "slurm job " + slurm_job_id)
+      .bind(4, utc_now())
+      .bind(5, id)
+      .bind(6, attempt)
+      .run();
+  const bool held = db->changes() == 1;
+  tx.commit();
+  return held;
+}
+
+std::vector<SlurmRun> JobStore::slurm_runs() {
+  auto db = pool_->lease();
+  Statement q = db->prepare(
+      "SELECT id, attempts, slurm_job_id, COALESCE(slurm_state, ''), cancel_requested, updated_at FROM jobs"
+      " WHERE state = 'running' AND slurm_job_id IS NOT NULL ORDER BY id");
+  std::vector<SlurmRun> runs;
+  while (q.step()) {
+    runs.push_back({q.integer(0), static_cast<int>(q.integer(1)), q.text(2), q.text(3), q.integer(4) != 0, q.text(5)});
+  }
+  return runs;
+}
+
+void JobStore::set_slurm_state(std::int64_t id, int attempt, const std::string& slurm_state) {
+  auto db = pool_->lease();
+  db->prepare("UPDATE jobs SET slurm_state = ? WHERE id = ? AND attempts = ? AND slurm_job_id IS NOT NULL")
+      .bind(1, slurm_state)
+      .bind(2, id)
+      .bind(3, attempt)
+      .run();
+}
+
+void JobStore::slurm_run_ended(std::int64_t id, int attempt, const std::string& slurm_state) {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  const JobRecord job = require_job(*db, id);
+  if (job.state != JobState::running || job.attempts != attempt || !job.slurm_job_id) return;
+  db->prepare("UPDATE jobs SET slurm_state = ? WHERE id = ?").bind(1, slurm_state).bind(2, id).run();
+  const std::string what = "Slurm job " + *job.slurm_job_id + " ended (" + slurm_state + ") before its worker finished";
+  if (job.cancel_requested) {
+    cancel_revoked(*db, job, what);
+  } else {
+    interrupt(*db, id, what, max_interruptions_);
+  }
+  tx.commit();
+}
+
+void JobStore::interrupt_run(std::int64_t id, int attempt, const std::string& what) {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  const JobRecord job = require_job(*db, id);
+  if (job.state != JobState::running || job.attempts != attempt) return;
+  interrupt(*db, id, what, max_interruptions_);
+  tx.commit();
+}
+
+void JobStore::slurm_run_cancelled(std::int64_t id, int attempt, const std::string& why) {
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  const JobRecord job = require_job(*db, id);
+  if (job.state != JobState::running || job.attempts != attempt) return;
+  db->prepare("UPDATE jobs SET slurm_state = 'CANCELLED' WHERE id = ?").bind(1, id).run();
+  cancel_revoked(*db, job, why);
+  tx.commit();
+}
+
+}  // namespace saasgaps::service
