@@ -60,10 +60,10 @@ SlurmExecutor::~SlurmExecutor() {
   thread_.join();
 }
 
-std::string SlurmExecutor::batch_script(std::int64_t job) const {
-  std::string command = "exec " + shell_quote(options_.worker_binary) + " worker --server " +
-                        shell_quote(options_.worker_url) + " --job " + std::to_string(job);
-  if (!options_.token_file.empty()) command += " --token-file " + shell_quote(options_.token_file);
+std::string batch_script(const SlurmOptions& options, std::int64_t job) {
+  std::string command = "exec " + shell_quote(options.worker_binary) + " worker --server " +
+                        shell_quote(options.worker_url) + " --job " + std::to_string(job);
+  if (!options.token_file.empty()) command += " --token-file " + shell_quote(options.token_file);
   // The lease travels in the environment (SAASGAPS_LEASE, exported by sbatch), not in the script.
   return "#!/bin/sh\n# saasgaps job " + std::to_string(job) + "\n" + command + "\n";
 }
@@ -108,7 +108,7 @@ bool SlurmExecutor::dispatch() {
     if (!options_.time_limit.empty()) argv.push_back("--time=" + options_.time_limit);
     if (!options_.log_dir.empty()) argv.push_back("--output=" + options_.log_dir + "/saasgaps-job-" + std::to_string(id) + "-%j.out");
     argv.insert(argv.end(), options_.extra.begin(), options_.extra.end());
-    const ProcessResult r = run_process(argv, batch_script(id),
+    const ProcessResult r = run_process(argv, batch_script(options_, id),
                                         {"SAASGAPS_LEASE=" + worker_protocol::format_lease(claimed->lease)}, command_limit);
     const std::string slurm_id = trimmed(r.out.substr(0, r.out.find(';')));
     if (r.exit_code != 0 || slurm_id.empty() || slurm_id.find_first_not_of("0123456789_") != std::string::npos) {

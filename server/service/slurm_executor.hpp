@@ -44,9 +44,6 @@ class SlurmExecutor {
   SlurmExecutor(const SlurmExecutor&) = delete;
   SlurmExecutor& operator=(const SlurmExecutor&) = delete;
 
-  /// The batch script that runs one job's worker (exposed for tests and docs).
-  [[nodiscard]] std::string batch_script(std::int64_t job) const;
-
  private:
   void loop();
   /// Submits every claimable job; false when sbatch failed (then dispatching pauses).
@@ -69,6 +66,10 @@ class SlurmExecutor {
   std::atomic<bool> stopping_{false};
   std::thread thread_;
 };
+
+/// The batch script that runs one job's worker: `exec BINARY worker --server URL --job ID
+/// [--token-file F]`, every word quoted. The lease is not in it (it travels in the environment).
+std::string batch_script(const SlurmOptions& options, std::int64_t job);
 
 /// Quotes a word for a POSIX shell: '...' with every ' written as '\''.
 std::string shell_quote(const std::string& word);

@@ -72,10 +72,15 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
   err.close_end(1);
   if (rc != 0) throw std::runtime_error("cannot run " + argv[0] + ": " + std::strerror(rc));
 
-  // Feed the input and drain both outputs together, so a full pipe never blocks either side.
+  // Feed the input and drain both outputs together, so a full pipe never blocks either side: the
+  // input end is non-blocking, so a write takes only what the pipe has room for.
   ProcessResult result;
   std::size_t written = 0;
-  if (input.empty()) in.close_end(1);
+  if (input.empty()) {
+    in.close_end(1);
+  } else {
+    ::fcntl(in.fd[1], F_SETFL, ::fcntl(in.fd[1], F_GETFL) | O_NONBLOCK);
+  }
   const auto deadline = std::chrono::steady_clock::now() + limit;
   bool killed = false;
   while (out.fd[0] >= 0 || err.fd[0] >= 0) {
@@ -96,7 +101,8 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
       if (fds[k].fd == in.fd[1]) {
         const ssize_t w = ::write(in.fd[1], input.data() + written, input.size() - written);
         if (w > 0) written += static_cast<std::size_t>(w);
-        if (w < 0 || written == input.size()) in.close_end(1);
+        // EPIPE: the program stopped reading (SIGPIPE is ignored by the service).
+        if ((w < 0 && errno != EAGAIN && errno != EINTR) || written == input.size()) in.close_end(1);
         continue;
       }
       char buffer[4096];

@@ -1,0 +1,90 @@
+// The worker protocol's pieces on their own: leases as text, bodies that round-trip the exact bytes,
+// bodies that are refused, and the batch script the Slurm executor submits (run by a real shell).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "service/server_process.hpp"
+#include "service/slurm_executor.hpp"
+#include "service/subprocess.hpp"
+#include "service/worker_protocol.hpp"
+
+namespace saasgaps::service {
+namespace {
+
+namespace protocol = worker_protocol;
+
+TEST(WorkerProtocol, LeasesParseOnlyWhenWellFormed) {
+  const std::optional<Lease> lease = protocol::parse_lease("3:abc:def");
+  ASSERT_TRUE(lease);
+  EXPECT_EQ(lease->attempt, 3);
+  EXPECT_EQ(lease->secret, "abc:def");
+  EXPECT_EQ(protocol::format_lease(*lease), "3:abc:def");
+  for (const char* bad : {"", "3", "3:", ":abc", "0:abc", "-1:abc", "x:abc", "3x:abc"}) {
+    EXPECT_FALSE(protocol::parse_lease(bad)) << bad;
+  }
+}
+
+TEST(WorkerProtocol, IterationsAndFinishesRoundTripTheirBytes) {
+  std::vector<std::uint8_t> state(1000);
+  for (std::size_t k = 0; k < state.size(); ++k) state[k] = static_cast<std::uint8_t>(k * 7);
+  const protocol::Iteration it = protocol::decode_iteration(protocol::encode_iteration(12, R"({"iteration":12})", state));
+  EXPECT_EQ(it.iteration, 12);
+  EXPECT_EQ(it.row, R"({"iteration":12})");
+  EXPECT_EQ(it.state, state);
+
+  const protocol::Finish f = protocol::decode_finish(protocol::encode_finish({JobState::cancelled, "{}", "stopped", std::nullopt}));
+  EXPECT_EQ(f.state, JobState::cancelled);
+  EXPECT_EQ(f.result, "{}");
+  EXPECT_EQ(f.message, "stopped");
+  EXPECT_FALSE(f.error);
+  // A run cannot declare itself interrupted (that is the service's call, and counted), nor running.
+  EXPECT_THROW(protocol::decode_finish(protocol::encode_finish({JobState::interrupted, {}, {}, {}})), std::invalid_argument);
+  EXPECT_THROW(protocol::decode_finish(protocol::encode_finish({JobState::running, {}, {}, {}})), std::invalid_argument);
+  EXPECT_THROW(protocol::decode_iteration(protocol::encode_iteration(0, "{}", state)), std::invalid_argument);
+  EXPECT_THROW(protocol::decode_iteration(protocol::encode_iteration(1, "{not json", state)), std::invalid_argument);
+  EXPECT_THROW(protocol::decode_iteration("\xa0"), std::invalid_argument);  // an empty CBOR map
+}
+
+TEST(SlurmBatchScript, EveryWordSurvivesTheShellIntact) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("saasgaps-batch-script-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  // A stand-in for the worker binary, at a path with a space and a quote, that prints its arguments.
+  const std::filesystem::path binary = dir / "it's a worker";
+  std::ofstream(binary) << "#!/bin/sh\nfor a in \"$@\"; do printf '[%s]\\n' \"$a\"; done\n";
+  std::filesystem::permissions(binary, std::filesystem::perms::owner_all);
+  SlurmOptions options;
+  options.worker_binary = binary.string();
+  options.worker_url = "http://host:8080/?a=$(reboot)&b='c'";
+  options.token_file = "/secrets/my token";
+  const std::filesystem::path script = dir / "script.sh";
+  std::ofstream(script) << batch_script(options, 42);
+  const testing::CommandResult run = testing::run_command({"/bin/sh", script.string()});
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_EQ(run.output, "[worker]\n[--server]\n[http://host:8080/?a=$(reboot)&b='c']\n[--job]\n[42]\n"
+                        "[--token-file]\n[/secrets/my token]\n");
+  EXPECT_EQ(split_words("  --mem=8G\t--qos=low \n"), (std::vector<std::string>{"--mem=8G", "--qos=low"}));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Subprocess, FeedsInputSetsTheEnvironmentAndKeepsItsTimeLimit) {
+  const std::string big(1 << 20, 'x');  // more than a pipe holds: input and output must flow together
+  const ProcessResult cat = run_process({"cat"}, big, {}, std::chrono::seconds(20));
+  EXPECT_EQ(cat.exit_code, 0);
+  EXPECT_EQ(cat.out, big);
+  const ProcessResult env = run_process({"sh", "-c", "echo \"$SAASGAPS_PROBE\" >&2; exit 3"}, "", {"SAASGAPS_PROBE=a b"},
+                                        std::chrono::seconds(20));
+  EXPECT_EQ(env.exit_code, 3);
+  EXPECT_EQ(env.err, "a b\n");
+  const auto start = std::chrono::steady_clock::now();
+  const ProcessResult slow = run_process({"sleep", "30"}, "", {}, std::chrono::milliseconds(200));
+  EXPECT_EQ(slow.exit_code, -1);
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
+  EXPECT_THROW(run_process({"saasgaps-no-such-program"}, "", {}, std::chrono::seconds(5)), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace saasgaps::service
