@@ -47,7 +47,7 @@ class Recorder final : public IterationObserver {
  public:
   explicit Recorder(std::string digest) : digest_(std::move(digest)) {}
   void on_iteration(const IterationRecord& row, const RestartState& state) override {
-    iterations.push_back({io::history_row_json(row).dump(), io::state_to_cbor(state, digest_), row.seconds});
+    iterations.push_back({io::history_row_text(row), io::state_to_cbor(state, digest_), row.seconds});
   }
   bool stop_requested() override { return false; }
   std::vector<Recorded> iterations;
@@ -66,8 +66,10 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 void measure(const std::string& name, const json& document, int repeat, service::JobStore& store, int port) {
-  const Model model = io::read_model(document);
-  Recorder recorder(io::model_digest(document));
+  const std::string text = document.dump();
+  std::string digest;
+  const Model model = io::parse_model(text, &digest);
+  Recorder recorder(digest);
   solve(model, &recorder);
   const std::vector<Recorded>& its = recorder.iterations;
   std::vector<double> solve_times;
@@ -76,7 +78,6 @@ void measure(const std::string& name, const json& document, int repeat, service:
     solve_times.push_back(r.solve_seconds);
     state_bytes = std::max(state_bytes, r.state.size());
   }
-  const std::string text = document.dump();
   std::vector<double> local, remote;
   httplib::Client client("127.0.0.1", port);
   client.set_read_timeout(std::chrono::minutes(5));
