@@ -1,5 +1,5 @@
 /// saasgaps: thermal stress analysis of plane and axisymmetric bodies in contact across gaps.
-/// Subcommands: solve, validate, serve, plot, export-vtu. Exit codes (service.md): 0 converged or valid,
+/// Subcommands: solve, validate, import, serve, plot, export-vtu. Exit codes (service.md): 0 converged or valid,
 /// 3 not converged, 2 bad model, 1 any other failure. Exceptions become exit codes here only.
 
 #include <CLI/CLI.hpp>
@@ -8,6 +8,7 @@
 
 #include "errors.hpp"
 #include "cli/export_vtu_command.hpp"
+#include "cli/import_command.hpp"
 #include "cli/plot_command.hpp"
 #include "cli/serve_command.hpp"
 #include "cli/solve_command.hpp"
@@ -56,6 +57,12 @@ int main(int argc, char** argv) {
   std::string validate_path;
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check a model and print every error with its JSON Pointer");
   validate_cmd->add_option("model", validate_path, "Model document (JSON)")->required();
+
+  saasgaps::cli::ImportOptions import;
+  CLI::App* import_cmd = app.add_subcommand(
+      "import", "Build a model from an assembly: a Gmsh mesh and its physical groups (docs/import.md)");
+  import_cmd->add_option("assembly", import.assembly_path, "Assembly document (JSON)")->required();
+  import_cmd->add_option("-o,--output", import.model_path, "Model document to write (default: stdout)");
 
   saasgaps::cli::ServeOptions serve;
   CLI::App* serve_cmd = app.add_subcommand("serve", "Run the HTTP job service on an SQLite database file");
@@ -107,6 +114,7 @@ int main(int argc, char** argv) {
   try {
     if (solve_cmd->parsed()) return saasgaps::cli::run_solve(solve);
     if (validate_cmd->parsed()) return saasgaps::cli::run_validate(validate_path);
+    if (import_cmd->parsed()) return saasgaps::cli::run_import(import);
     if (serve_cmd->parsed()) return saasgaps::cli::run_serve(serve);
     if (plot_cmd->parsed()) return saasgaps::cli::run_plot(plot);
     if (vtu_cmd->parsed()) return saasgaps::cli::run_export_vtu(vtu);
