@@ -34,11 +34,16 @@ class GmshSession {
     // No configuration files: the result must not depend on the user's ~/.gmshrc.
     gmsh::initialize(0, nullptr, false);
     gmsh::option::setNumber("General.Terminal", 0);
+    // Errors are logged, not thrown: an exception thrown from inside Gmsh's .geo parser leaves the
+    // parser's input buffer behind, and the next file parsed in this process starts with its rest.
+    gmsh::option::setNumber("General.AbortOnError", 0);
+    gmsh::logger::start();
   }
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
   ~GmshSession() {
     try {
+      gmsh::logger::stop();
       gmsh::finalize();
     } catch (...) {  // NOLINT(bugprone-empty-catch): nothing is left to clean up if finalize fails
     }
@@ -76,7 +81,17 @@ double twice_signed_area(const GmshMesh& m, const MeshFace& f) {
   return twice;
 }
 
+/// Throws the first error Gmsh logged (file syntax, meshing), if any.
+void throw_logged_error(const fs::path& path) {
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  for (const std::string& line : log) {
+    if (line.starts_with("Error: ")) throw MeshError("Gmsh cannot read " + path.string() + ": " + line.substr(7));
+  }
+}
+
 GmshMesh read_open_model(const fs::path& path) {
+  throw_logged_error(path);
   GmshMesh mesh;
   std::vector<int> types;
   gmsh::model::mesh::getElementTypes(types, 3);
@@ -87,6 +102,7 @@ GmshMesh read_open_model(const fs::path& path) {
   gmsh::model::mesh::getElementTypes(types, 2);
   if (types.empty() && path.extension() == ".geo") {
     gmsh::model::mesh::generate(2);
+    throw_logged_error(path);
     gmsh::model::mesh::getElementTypes(types, 2);
   }
   if (types.empty()) {
@@ -113,8 +129,14 @@ GmshMesh read_open_model(const fs::path& path) {
   std::vector<std::size_t> position(max_tag + 1, 0);  // tag -> position in all_tags
   for (std::size_t i = 0; i < all_tags.size(); ++i) position[all_tags[i]] = i;
 
-  NodeIndex index(max_tag);
-  std::vector<int> surfaces_of_faces;
+  // Surface elements first (node tags), then their nodes indexed in increasing tag order, so the
+  // model lists nodes as Gmsh numbers them.
+  struct RawFace {
+    MeshFace face;
+    std::array<std::size_t, 4> tags{};
+  };
+  std::vector<RawFace> raw;
+  std::vector<char> used(max_tag + 1, 0);
   gmsh::vectorpair surfaces;
   gmsh::model::getEntities(surfaces, 2);
   for (const auto& [dim, surface] : surfaces) {
@@ -124,24 +146,30 @@ GmshMesh read_open_model(const fs::path& path) {
     for (std::size_t t = 0; t < element_types.size(); ++t) {
       const int count = element_types[t] == gmsh_triangle ? 3 : 4;
       for (std::size_t e = 0; e < element_tags[t].size(); ++e) {
-        MeshFace face;
-        face.tag = element_tags[t][e];
-        face.surface = surface;
-        face.count = count;
-        for (int k = 0; k < count; ++k) {
-          const std::size_t tag = node_tags[t][e * static_cast<std::size_t>(count) + static_cast<std::size_t>(k)];
-          int& i = index[tag];
-          if (i < 0) {
-            i = static_cast<int>(mesh.node_tags.size());
-            mesh.node_tags.push_back(tag);
-            mesh.r.push_back(xyz[3 * position[tag]]);
-            mesh.z.push_back(xyz[3 * position[tag] + 1]);
-          }
-          face.nodes[static_cast<std::size_t>(k)] = i;
+        RawFace f;
+        f.face.tag = element_tags[t][e];
+        f.face.surface = surface;
+        f.face.count = count;
+        for (std::size_t k = 0; k < static_cast<std::size_t>(count); ++k) {
+          f.tags[k] = node_tags[t][e * static_cast<std::size_t>(count) + k];
+          used[f.tags[k]] = 1;
         }
-        mesh.faces.push_back(face);
+        raw.push_back(f);
       }
     }
+  }
+  NodeIndex index(max_tag);
+  for (std::size_t tag = 0; tag <= max_tag; ++tag) {
+    if (!used[tag]) continue;
+    index[tag] = static_cast<int>(mesh.node_tags.size());
+    mesh.node_tags.push_back(tag);
+    mesh.r.push_back(xyz[3 * position[tag]]);
+    mesh.z.push_back(xyz[3 * position[tag] + 1]);
+  }
+  mesh.faces.reserve(raw.size());
+  for (RawFace& f : raw) {
+    for (std::size_t k = 0; k < static_cast<std::size_t>(f.face.count); ++k) f.face.nodes[k] = index[f.tags[k]];
+    mesh.faces.push_back(f.face);
   }
 
   // The plane z = 0, to round-off of the mesh's own size.
