@@ -320,9 +320,13 @@ void Importer::regions(json& model) {
     if (!object(o, p, {"group", "material"}, {"angle"})) continue;
     const PhysicalGroup* g = group(o, p, {{2}, "a region", "a surface (dimension 2)"});
     const double angle = number(o, p, "angle").value_or(0.0);
-    const json& m = o["material"];
-    if (!m.is_number_integer() || !material_ids_.contains(m.get<int>())) {
-      report(pointer_append(p, "material"), "material " + shown(m) + " is not the id of an entry of /materials");
+    const auto m = o.find("material");
+    if (m == o.end()) {
+      complete = false;  // reported by object()
+      continue;
+    }
+    if (!m->is_number_integer() || !material_ids_.contains(m->get<int>())) {
+      report(pointer_append(p, "material"), "material " + shown(*m) + " is not the id of an entry of /materials");
       complete = false;
       continue;
     }
@@ -338,7 +342,7 @@ void Importer::regions(json& model) {
                                                "; give each surface one region");
         continue;
       }
-      surface_material[surface] = {m.get<int>(), angle};
+      surface_material[surface] = {m->get<int>(), angle};
     }
   }
   if (!complete) return;
