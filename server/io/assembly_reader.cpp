@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <tuple>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -102,8 +103,8 @@ class Importer {
   std::optional<FaceChain> face(const json& name, const std::string& p);
   void validate(const json& model);
 
-  /// Owners of each edge (min node, max node): solid element positions in mesh_.faces.
-  const std::map<std::pair<int, int>, std::vector<int>>& edge_owners();
+  /// The solid elements (positions in mesh_.faces) that have the edge a-b.
+  std::vector<int> owners_of(int a, int b);
 
   const json& doc_;
   fs::path base_;
@@ -112,7 +113,11 @@ class Importer {
   bool mesh_loaded_ = false;
   std::vector<Vec2> positions_;
   std::vector<int> ids_;
-  std::map<std::pair<int, int>, std::vector<int>> owners_;
+  struct EdgeOwner {
+    int lo = 0, hi = 0;  ///< the edge's node indices, lo < hi
+    int element = 0;
+  };
+  std::vector<EdgeOwner> owners_;  ///< every element edge, sorted by (lo, hi); built on first use
   std::set<int> material_ids_;
 };
 
@@ -292,17 +297,26 @@ std::vector<std::array<int, 2>> Importer::group_edges(const PhysicalGroup& g) {
   return edges;
 }
 
-const std::map<std::pair<int, int>, std::vector<int>>& Importer::edge_owners() {
+std::vector<int> Importer::owners_of(int a, int b) {
+  const auto edge_less = [](const EdgeOwner& x, const EdgeOwner& y) { return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi); };
   if (owners_.empty()) {
+    // A sorted array, not a map of 4 x 10^6 entries: one allocation, searched in log time.
+    owners_.reserve(4 * mesh_.faces.size());
     for (std::size_t e = 0; e < mesh_.faces.size(); ++e) {
       const MeshFace& f = mesh_.faces[e];
       for (int k = 0; k < f.count; ++k) {
-        const int a = f.nodes[static_cast<std::size_t>(k)], b = f.nodes[static_cast<std::size_t>((k + 1) % f.count)];
-        owners_[std::minmax(a, b)].push_back(static_cast<int>(e));
+        const auto [lo, hi] =
+            std::minmax(f.nodes[static_cast<std::size_t>(k)], f.nodes[static_cast<std::size_t>((k + 1) % f.count)]);
+        owners_.push_back({lo, hi, static_cast<int>(e)});
       }
     }
+    std::sort(owners_.begin(), owners_.end(), edge_less);
   }
-  return owners_;
+  const auto [lo, hi] = std::minmax(a, b);
+  const auto [first, last] = std::equal_range(owners_.begin(), owners_.end(), EdgeOwner{lo, hi, 0}, edge_less);
+  std::vector<int> elements;
+  for (auto it = first; it != last; ++it) elements.push_back(it->element);
+  return elements;
 }
 
 // ---- sections
@@ -431,17 +445,16 @@ void Importer::pressures(const json& loads, const std::string& lp, json& out) {
     const auto edges = group_edges(*g);
     if (edges.empty()) report(pointer_append(p, "group"), "physical group \"" + g->name + "\" has no line elements");
     for (const auto& [a, b] : edges) {
-      const auto owner = edge_owners().find(std::minmax(a, b));
-      if (a < 0 || b < 0 || owner == edge_owners().end() || owner->second.size() != 1) {
+      const std::vector<int> owner = a < 0 || b < 0 ? std::vector<int>{} : owners_of(a, b);
+      if (owner.size() != 1) {
         report(pointer_append(p, "group"),
                "curve group \"" + g->name + "\" is not on the boundary of the meshed surfaces" +
                    (a >= 0 && b >= 0 ? " (edge " + std::to_string(tag_of(a)) + "-" + std::to_string(tag_of(b)) + " has " +
-                                           std::to_string(owner == edge_owners().end() ? 0 : owner->second.size()) +
-                                           " elements; a pressure edge has exactly one)"
+                                           std::to_string(owner.size()) + " elements; a pressure edge has exactly one)"
                                      : std::string()));
         break;
       }
-      const MeshFace& f = mesh_.faces[static_cast<std::size_t>(owner->second.front())];
+      const MeshFace& f = mesh_.faces[static_cast<std::size_t>(owner.front())];
       const auto k = static_cast<int>(std::find(f.nodes.begin(), f.nodes.begin() + f.count, a) - f.nodes.begin());
       const bool along = f.nodes[static_cast<std::size_t>((k + 1) % f.count)] == b;
       result.push_back({{"nodes", along ? json{tag_of(a), tag_of(b)} : json{tag_of(b), tag_of(a)}},
@@ -616,15 +629,14 @@ std::optional<FaceChain> Importer::face(const json& name, const std::string& p) 
   out.nodes = chain.nodes;
   for (std::size_t k = 0; k + 1 < out.nodes.size(); ++k) {
     const int a = out.nodes[k], b = out.nodes[k + 1];
-    const auto owner = edge_owners().find(std::minmax(a, b));
-    if (owner == edge_owners().end() || owner->second.size() != 1) {
+    const std::vector<int> owner = owners_of(a, b);
+    if (owner.size() != 1) {
       report(p, "curve group \"" + g->name + "\" is not on the boundary of the meshed surfaces: its edge " +
                     std::to_string(tag_of(a)) + "-" + std::to_string(tag_of(b)) + " belongs to " +
-                    std::to_string(owner == edge_owners().end() ? 0 : owner->second.size()) +
-                    " elements (a gap face edge belongs to exactly one)");
+                    std::to_string(owner.size()) + " elements (a gap face edge belongs to exactly one)");
       return std::nullopt;
     }
-    const MeshFace& f = mesh_.faces[static_cast<std::size_t>(owner->second.front())];
+    const MeshFace& f = mesh_.faces[static_cast<std::size_t>(owner.front())];
     Vec2 centre = Vec2::Zero();
     for (int c = 0; c < f.count; ++c) centre += positions_[static_cast<std::size_t>(f.nodes[static_cast<std::size_t>(c)])];
     centre /= f.count;
