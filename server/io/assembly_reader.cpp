@@ -66,7 +66,8 @@ constexpr double default_pair_tolerance = 0.1;
 
 class Importer {
  public:
-  Importer(const json& assembly, fs::path base) : doc_(assembly), base_(std::move(base)) {}
+  Importer(const json& assembly, fs::path base, FileAccess access)
+      : doc_(assembly), base_(std::move(base)), access_(access) {}
 
   json run();
 
@@ -79,6 +80,9 @@ class Importer {
   const json* array(const json& parent, const std::string& p, std::string_view key, bool required, bool non_empty);
   std::optional<double> number(const json& o, const std::string& p, std::string_view key, bool positive = false);
   std::optional<std::string> string(const json& o, const std::string& p, std::string_view key);
+
+  /// The file `name` (the value at `pointer`) names, or nullopt (reported) when it may not be read.
+  std::optional<fs::path> resolve_file(const std::string& name, const std::string& pointer);
 
   // ---- the mesh and its groups
   void load_mesh();
@@ -108,6 +112,7 @@ class Importer {
 
   const json& doc_;
   fs::path base_;
+  FileAccess access_;
   std::vector<InputIssue> issues_;
   GmshMesh mesh_;
   bool mesh_loaded_ = false;
@@ -186,12 +191,23 @@ std::optional<std::string> Importer::string(const json& o, const std::string& p,
 
 // ---- the mesh and its groups
 
+std::optional<fs::path> Importer::resolve_file(const std::string& name, const std::string& pointer) {
+  const fs::path given(name);
+  if (access_ == FileAccess::base_only &&
+      (given.filename() != given || name.empty() || name.front() == '.' || name.find('\\') != std::string::npos)) {
+    report(pointer, "\"" + name + "\" must be the plain name of an uploaded file (no directories)");
+    return std::nullopt;
+  }
+  return given.is_absolute() ? given : base_ / given;
+}
+
 void Importer::load_mesh() {
   const auto name = string(doc_, "", "mesh");
   if (!name) return;
-  const fs::path path = fs::path(*name).is_absolute() ? fs::path(*name) : base_ / *name;
+  const auto path = resolve_file(*name, "/mesh");
+  if (!path) return;
   try {
-    mesh_ = read_gmsh_mesh(path);
+    mesh_ = read_gmsh_mesh(*path);
   } catch (const MeshError& e) {
     report("/mesh", e.what());
     return;
@@ -530,7 +546,9 @@ void Importer::temperature_file(const json& file, const std::string& p, std::vec
   const std::string field = string(file, p, "field").value_or("T");
   const auto tolerance_given = number(file, p, "tolerance", true);
   if (!name) return;
-  const fs::path path = fs::path(*name).is_absolute() ? fs::path(*name) : base_ / *name;
+  const auto resolved = resolve_file(*name, pointer_append(p, "path"));
+  if (!resolved) return;
+  const fs::path& path = *resolved;
   NodalValues values;
   try {
     if (path.extension() == ".csv") {
@@ -778,8 +796,8 @@ json Importer::run() {
 
 }  // namespace
 
-json import_assembly(const json& assembly, const fs::path& base_directory) {
-  return Importer(assembly, base_directory).run();
+json import_assembly(const json& assembly, const fs::path& base_directory, FileAccess access) {
+  return Importer(assembly, base_directory, access).run();
 }
 
 }  // namespace saasgaps::io

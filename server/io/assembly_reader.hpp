@@ -18,8 +18,15 @@
 
 namespace saasgaps::io {
 
+/// Which files an assembly may name.
+enum class FileAccess {
+  anywhere,    ///< any path: relative ones against the base directory (the command line)
+  base_only,   ///< only plain file names inside the base directory (uploads to the service)
+};
+
 /// Builds the model document. Relative file names (the mesh, a temperature file) are resolved
 /// against `base_directory`, the assembly file's own directory. Throws ModelError.
-nlohmann::json import_assembly(const nlohmann::json& assembly, const std::filesystem::path& base_directory);
+nlohmann::json import_assembly(const nlohmann::json& assembly, const std::filesystem::path& base_directory,
+                               FileAccess access = FileAccess::anywhere);
 
 }  // namespace saasgaps::io

@@ -11,6 +11,7 @@
 #include "io/model_reader.hpp"
 #include "io/vtu_writer.hpp"
 #include "plot/plot_request.hpp"
+#include "service/assembly_upload.hpp"
 #include "service/problem.hpp"
 #include "web/web_assets.hpp"
 
@@ -223,6 +224,7 @@ void HttpApi::install(httplib::Server& server) {
   });
 
   server.Post("/v1/jobs", [this](const httplib::Request& req, httplib::Response& res) { submit(req, res); });
+  server.Post("/v1/imports", [this](const httplib::Request& req, httplib::Response& res) { import_assembly(req, res); });
   server.Get("/v1/jobs", [this](const httplib::Request& req, httplib::Response& res) { list(req, res); });
   server.Get(R"(/v1/jobs/(\d+))", [this](const httplib::Request& req, httplib::Response& res) {
     send_json(res, 200, job_json(store_.get(job_id(req))));
@@ -318,15 +320,30 @@ void HttpApi::install(httplib::Server& server) {
 void HttpApi::submit(const httplib::Request& req, httplib::Response& res) {
   if (!json::accept(req.body)) throw HttpError(400, "Bad Request", "the request body is not JSON");
   // The reader repeats every check of `saasgaps validate`; a bad model never reaches the queue.
-  const Model model = io::parse_model(req.body);
+  enqueue(req.body, io::parse_model(req.body), req, res);
+}
+
+void HttpApi::enqueue(const std::string& body, const Model& model, const httplib::Request& req,
+                      httplib::Response& res) {
   std::optional<std::string> key;
   if (req.has_header("Idempotency-Key")) key = req.get_header_value("Idempotency-Key");
   const JobStore::Submitted submitted =
-      store_.submit(req.body, model.title, model.solver.max_iterations, key, body_digest(req.body));
+      store_.submit(body, model.title, model.solver.max_iterations, key, body_digest(body));
   if (submitted.replayed) res.set_header("Idempotent-Replayed", "true");
   res.set_header("Location", "/v1/jobs/" + std::to_string(submitted.job.id));
   send_json(res, 202, job_json(submitted.job));
   hub_.notify();
+}
+
+void HttpApi::import_assembly(const httplib::Request& req, httplib::Response& res) {
+  const json model = import_upload(req);
+  const std::string submit = req.get_param_value("submit");
+  if (submit == "true" || submit == "1") {
+    const std::string body = model.dump(1);
+    enqueue(body, io::read_model(model), req, res);
+    return;
+  }
+  send_json(res, 200, model);
 }
 
 void HttpApi::list(const httplib::Request& req, httplib::Response& res) {

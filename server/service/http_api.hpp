@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "model.hpp"
 #include "service/event_hub.hpp"
 #include "service/job_store.hpp"
 
@@ -29,6 +30,10 @@ class HttpApi {
 
  private:
   void submit(const httplib::Request& req, httplib::Response& res);
+  /// Queues a validated model document (its text and its model) as a new job: 202 with Location.
+  void enqueue(const std::string& body, const Model& model, const httplib::Request& req, httplib::Response& res);
+  /// POST /v1/imports: the model document of an uploaded assembly; with ?submit=true, queued as a job.
+  void import_assembly(const httplib::Request& req, httplib::Response& res);
   void list(const httplib::Request& req, httplib::Response& res);
   void resume(const httplib::Request& req, httplib::Response& res);
   void events(const httplib::Request& req, httplib::Response& res);

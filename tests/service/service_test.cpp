@@ -109,6 +109,51 @@ TEST_F(Service, ReportProblem3GivesTheSameResultAsSolve) {
   EXPECT_EQ(rows.front()["iteration"], 11);
 }
 
+/// POST /v1/imports: an assembly and its mesh as multipart/form-data give the model document that
+/// `saasgaps import` writes; with ?submit=true a job; a bad group is a 422 naming its pointer.
+TEST_F(Service, ImportsAnUploadedAssembly) {
+  ServerProcess server(database());
+  httplib::Client client = server.client();
+  const std::string assembly = example_text("assemblies/ring-fit.assembly.json");
+  const std::string geo = example_text("assemblies/ring-fit.geo");
+  const httplib::MultipartFormDataItems upload{{"assembly", assembly, "", "application/json"},
+                                              {"mesh", geo, "ring-fit.geo", "text/plain"}};
+  const httplib::Result imported = client.Post("/v1/imports", upload);
+  ASSERT_TRUE(imported);
+  ASSERT_EQ(imported->status, 200) << imported->body;
+  const fs::path model = dir_ / "model.json";
+  const CommandResult cli = run_command({SAASGAPS_BINARY, "import",
+                                         std::string(SAASGAPS_EXAMPLES_DIR) + "/assemblies/ring-fit.assembly.json",
+                                         "-o", model.string()});
+  ASSERT_EQ(cli.exit_code, 0) << cli.output;
+  std::ifstream in(model);
+  EXPECT_EQ(json::parse(imported->body), json::parse(in));
+
+  const httplib::Result queued = client.Post("/v1/imports?submit=true", upload);
+  ASSERT_TRUE(queued);
+  ASSERT_EQ(queued->status, 202) << queued->body;
+  const std::int64_t job = json::parse(queued->body)["id"].get<std::int64_t>();
+  EXPECT_EQ(wait_for_state(client, job, {"converged", "not_converged", "failed"})["state"], "converged");
+
+  json bad = json::parse(assembly);
+  bad["regions"][0]["group"] = "inner_rin";
+  const json invalid = problem(client.Post("/v1/imports", httplib::MultipartFormDataItems{
+                                                              {"assembly", bad.dump(), "", "application/json"},
+                                                              {"mesh", geo, "ring-fit.geo", "text/plain"}}),
+                               422);
+  ASSERT_EQ(invalid["errors"].size(), 1u) << invalid.dump();
+  EXPECT_EQ(invalid["errors"][0]["pointer"], "/regions/0/group");
+
+  bad = json::parse(assembly);
+  bad["mesh"] = "../../etc/passwd.msh";
+  const json escaped = problem(client.Post("/v1/imports", httplib::MultipartFormDataItems{
+                                                              {"assembly", bad.dump(), "", "application/json"},
+                                                              {"mesh", geo, "ring-fit.geo", "text/plain"}}),
+                               422);
+  EXPECT_EQ(escaped["errors"][0]["pointer"], "/mesh");
+  problem(client.Post("/v1/imports", assembly, "application/json"), 400);
+}
+
 TEST_F(Service, PlotsAndVtuOfAStoredResult) {
   ServerProcess server(database());
   httplib::Client client = server.client();
