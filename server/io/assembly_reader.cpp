@@ -7,10 +7,7 @@
 #include <map>
 #include <optional>
 #include <set>
-#include <tuple>
-#include <span>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -18,6 +15,7 @@
 #include "io/gap_generator.hpp"
 #include "io/gmsh_mesh.hpp"
 #include "io/json_pointer.hpp"
+#include "io/mesh_groups.hpp"
 #include "io/model_reader.hpp"
 #include "io/nodal_values_file.hpp"
 
@@ -39,26 +37,10 @@ std::string shown(const json& value) {
   return text;
 }
 
-/// Edit distance, for "did you mean" on a misspelt group name.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
 /// Which dimensions a use of a group accepts, and how to say it.
 struct GroupUse {
   std::initializer_list<int> dims;
-  const char* role;  ///< "a region", "a pressure"...
+  const char* role;   ///< "a region", "a pressure"...
   const char* needs;  ///< "a surface (dimension 2)"
 };
 
@@ -91,7 +73,6 @@ class Importer {
   const PhysicalGroup* named_group(const json& name, const std::string& at, const GroupUse& use);
   /// Node indices of a group (sorted, unique); reports nodes that no surface element uses.
   std::vector<int> group_nodes(const PhysicalGroup& g, const std::string& p);
-  std::vector<std::array<int, 2>> group_edges(const PhysicalGroup& g);
   int tag_of(int node) const { return static_cast<int>(mesh_.node_tags[static_cast<std::size_t>(node)]); }
 
   // ---- sections
@@ -107,8 +88,6 @@ class Importer {
   std::optional<FaceChain> face(const json& name, const std::string& p);
   void validate(const json& model);
 
-  /// The solid elements (positions in mesh_.faces) that have the edge a-b.
-  std::vector<int> owners_of(int a, int b);
 
   const json& doc_;
   fs::path base_;
@@ -118,11 +97,7 @@ class Importer {
   bool mesh_loaded_ = false;
   std::vector<Vec2> positions_;
   std::vector<int> ids_;
-  struct EdgeOwner {
-    int lo = 0, hi = 0;  ///< the edge's node indices, lo < hi
-    int element = 0;
-  };
-  std::vector<EdgeOwner> owners_;  ///< every element edge, sorted by (lo, hi); built on first use
+  std::optional<MeshGroups> groups_;  ///< once the mesh is loaded
   std::set<int> material_ids_;
 };
 
@@ -219,6 +194,7 @@ void Importer::load_mesh() {
     }
   }
   mesh_loaded_ = true;
+  groups_.emplace(mesh_);
   positions_.reserve(mesh_.r.size());
   for (std::size_t i = 0; i < mesh_.r.size(); ++i) {
     positions_.emplace_back(mesh_.r[i], mesh_.z[i]);
@@ -237,102 +213,23 @@ const PhysicalGroup* Importer::named_group(const json& value, const std::string&
     report(at, "a physical group name must be a string, got " + shown(value));
     return nullptr;
   }
-  if (!mesh_loaded_) return nullptr;
-  const auto name = value.get_ptr<const std::string*>();
-  const PhysicalGroup* wrong_dim = nullptr;
-  for (const PhysicalGroup& g : mesh_.groups) {
-    if (g.name != *name) continue;
-    if (std::find(use.dims.begin(), use.dims.end(), g.dim) != use.dims.end()) return &g;
-    wrong_dim = &g;
-  }
-  if (wrong_dim != nullptr) {
-    report(at, "physical group \"" + *name + "\" has " + dimension_name(wrong_dim->dim) + "; " + use.role +
-                   " needs " + use.needs);
-    return nullptr;
-  }
-  std::string detail = "the mesh has no physical group named \"" + *name + "\"";
-  std::string closest;
-  std::size_t best = 3;  // suggest names within two edits
-  std::string names;
-  for (const PhysicalGroup& g : mesh_.groups) {
-    if (g.name.empty()) continue;
-    names += (names.empty() ? "" : ", ") + ("\"" + g.name + "\" (" + dimension_name(g.dim) + ")");
-    const std::size_t d = edit_distance(*name, g.name);
-    if (d < best) {
-      best = d;
-      closest = g.name;
-    }
-  }
-  if (!closest.empty()) detail += "; did you mean \"" + closest + "\"?";
-  detail += names.empty() ? " (it names no physical groups at all)" : " (its named groups: " + names + ")";
-  report(at, detail);
-  return nullptr;
+  if (!groups_) return nullptr;
+  std::string problem;
+  const PhysicalGroup* g = groups_->find(value.get<std::string>(), use.dims, use.role, use.needs, problem);
+  if (g == nullptr) report(at, problem);
+  return g;
 }
 
 std::vector<int> Importer::group_nodes(const PhysicalGroup& g, const std::string& p) {
-  std::vector<int> nodes;
-  bool unused = false;
-  const std::set<int> entities(g.entities.begin(), g.entities.end());
-  if (g.dim == 2) {
-    for (const MeshFace& f : mesh_.faces) {
-      if (entities.contains(f.surface)) nodes.insert(nodes.end(), f.nodes.begin(), f.nodes.begin() + f.count);
-    }
-  } else if (g.dim == 1) {
-    for (const auto& [a, b] : group_edges(g)) {
-      nodes.push_back(a);
-      nodes.push_back(b);
-    }
-  } else {
-    for (const int point : g.entities) {
-      const auto it = mesh_.points.find(point);
-      nodes.push_back(it == mesh_.points.end() ? -1 : it->second);
-    }
-  }
-  std::sort(nodes.begin(), nodes.end());
-  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-  while (!nodes.empty() && nodes.front() < 0) {
-    unused = true;
-    nodes.erase(nodes.begin());
-  }
-  if (unused) {
+  bool off_mesh = false;
+  std::vector<int> nodes = groups_->nodes(g, off_mesh);
+  if (off_mesh) {
     report(pointer_append(p, "group"), "physical group \"" + g.name + "\" has nodes (or unmeshed points) that no "
                                        "surface element uses; it must lie on the meshed surfaces");
   } else if (nodes.empty()) {
     report(pointer_append(p, "group"), "physical group \"" + g.name + "\" holds no mesh nodes");
   }
   return nodes;
-}
-
-std::vector<std::array<int, 2>> Importer::group_edges(const PhysicalGroup& g) {
-  std::vector<std::array<int, 2>> edges;
-  for (const int curve : g.entities) {
-    const auto it = mesh_.curves.find(curve);
-    if (it == mesh_.curves.end()) continue;
-    for (const MeshEdge& e : it->second) edges.push_back({e.a, e.b});
-  }
-  return edges;
-}
-
-std::vector<int> Importer::owners_of(int a, int b) {
-  const auto edge_less = [](const EdgeOwner& x, const EdgeOwner& y) { return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi); };
-  if (owners_.empty()) {
-    // A sorted array, not a map of 4 x 10^6 entries: one allocation, searched in log time.
-    owners_.reserve(4 * mesh_.faces.size());
-    for (std::size_t e = 0; e < mesh_.faces.size(); ++e) {
-      const MeshFace& f = mesh_.faces[e];
-      for (int k = 0; k < f.count; ++k) {
-        const auto [lo, hi] =
-            std::minmax(f.nodes[static_cast<std::size_t>(k)], f.nodes[static_cast<std::size_t>((k + 1) % f.count)]);
-        owners_.push_back({lo, hi, static_cast<int>(e)});
-      }
-    }
-    std::sort(owners_.begin(), owners_.end(), edge_less);
-  }
-  const auto [lo, hi] = std::minmax(a, b);
-  const auto [first, last] = std::equal_range(owners_.begin(), owners_.end(), EdgeOwner{lo, hi, 0}, edge_less);
-  std::vector<int> elements;
-  for (auto it = first; it != last; ++it) elements.push_back(it->element);
-  return elements;
 }
 
 // ---- sections
@@ -458,10 +355,10 @@ void Importer::pressures(const json& loads, const std::string& lp, json& out) {
     const double normal = number(o, p, "normal").value_or(0.0);
     const double shear = number(o, p, "shear").value_or(0.0);
     if (g == nullptr) continue;
-    const auto edges = group_edges(*g);
+    const auto edges = groups_->edges(*g);
     if (edges.empty()) report(pointer_append(p, "group"), "physical group \"" + g->name + "\" has no line elements");
     for (const auto& [a, b] : edges) {
-      const std::vector<int> owner = a < 0 || b < 0 ? std::vector<int>{} : owners_of(a, b);
+      const std::vector<int> owner = a < 0 || b < 0 ? std::vector<int>{} : groups_->owners(a, b);
       if (owner.size() != 1) {
         report(pointer_append(p, "group"),
                "curve group \"" + g->name + "\" is not on the boundary of the meshed surfaces" +
@@ -566,43 +463,12 @@ void Importer::temperature_file(const json& file, const std::string& p, std::vec
   double extent = 0.0;
   for (const Vec2& x : positions_) extent = std::max({extent, std::fabs(x.x()), std::fabs(x.y())});
   const double tolerance = tolerance_given.value_or(1e-6 * std::max(extent, 1e-300));
-  // Nodes hashed by the cell of size `tolerance` they fall in; a row looks in the 3 x 3 cells around.
-  std::unordered_map<long long, std::vector<int>> cells;
-  const auto cell = [&](double v) { return static_cast<long long>(std::floor(v / tolerance)); };
-  const auto key = [](long long i, long long j) { return i * 73856093LL ^ j * 19349663LL; };
-  std::unordered_map<long long, int> by_tag;
-  if (values.by_id) {
-    for (std::size_t n = 0; n < mesh_.node_tags.size(); ++n) by_tag[static_cast<long long>(mesh_.node_tags[n])] = static_cast<int>(n);
-  } else {
-    for (std::size_t n = 0; n < positions_.size(); ++n) {
-      cells[key(cell(positions_[n].x()), cell(positions_[n].y()))].push_back(static_cast<int>(n));
-    }
-  }
+  const std::vector<int> matched = match_rows(values, mesh_.node_tags, mesh_.r, mesh_.z, tolerance);
   const std::string at = pointer_append(p, "path");
   std::size_t unmatched = 0;
   std::string first_unmatched;
   for (std::size_t row = 0; row < values.values.size(); ++row) {
-    int node = -1;
-    if (values.by_id) {
-      const auto found = by_tag.find(values.ids[row]);
-      if (found != by_tag.end()) node = found->second;
-    } else {
-      const Vec2 x(values.r[row], values.z[row]);
-      double best = tolerance;
-      for (long long di = -1; di <= 1; ++di) {
-        for (long long dj = -1; dj <= 1; ++dj) {
-          const auto c = cells.find(key(cell(x.x()) + di, cell(x.y()) + dj));
-          if (c == cells.end()) continue;
-          for (const int n : c->second) {
-            const double d = (positions_[static_cast<std::size_t>(n)] - x).norm();
-            if (d <= best) {
-              best = d;
-              node = n;
-            }
-          }
-        }
-      }
-    }
+    const int node = matched[row];
     if (node < 0) {
       if (unmatched++ == 0) {
         first_unmatched = (path.extension() == ".csv" ? "line " : "point ") + std::to_string(values.origin[row]) +
@@ -631,7 +497,7 @@ void Importer::temperature_file(const json& file, const std::string& p, std::vec
 std::optional<FaceChain> Importer::face(const json& name, const std::string& p) {
   const PhysicalGroup* g = named_group(name, p, {{1}, "a gap face", "a curve (dimension 1)"});
   if (g == nullptr) return std::nullopt;
-  const auto edges = group_edges(*g);
+  const auto edges = groups_->edges(*g);
   for (const auto& [a, b] : edges) {
     if (a < 0 || b < 0) {
       report(p, "curve group \"" + g->name + "\" has nodes no surface element uses; a gap face bounds a meshed surface");
@@ -647,7 +513,7 @@ std::optional<FaceChain> Importer::face(const json& name, const std::string& p) 
   out.nodes = chain.nodes;
   for (std::size_t k = 0; k + 1 < out.nodes.size(); ++k) {
     const int a = out.nodes[k], b = out.nodes[k + 1];
-    const std::vector<int> owner = owners_of(a, b);
+    const std::vector<int> owner = groups_->owners(a, b);
     if (owner.size() != 1) {
       report(p, "curve group \"" + g->name + "\" is not on the boundary of the meshed surfaces: its edge " +
                     std::to_string(tag_of(a)) + "-" + std::to_string(tag_of(b)) + " belongs to " +

@@ -3,6 +3,7 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <clocale>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -30,7 +31,7 @@ std::mutex& gmsh_mutex() {
 /// Initializes Gmsh quietly and finalizes it on every way out.
 class GmshSession {
  public:
-  GmshSession() {
+  GmshSession() : locale_(std::setlocale(LC_ALL, nullptr)) {
     // No configuration files: the result must not depend on the user's ~/.gmshrc.
     gmsh::initialize(0, nullptr, false);
     gmsh::option::setNumber("General.Terminal", 0);
@@ -45,9 +46,14 @@ class GmshSession {
     try {
       gmsh::logger::stop();
       gmsh::finalize();
+      // Gmsh sets the process locale from the environment when it starts; give it back.
+      std::setlocale(LC_ALL, locale_.c_str());
     } catch (...) {  // NOLINT(bugprone-empty-catch): nothing is left to clean up if finalize fails
     }
   }
+
+ private:
+  std::string locale_;  ///< the process locale before Gmsh started
 };
 
 std::string element_type_name(int type) {

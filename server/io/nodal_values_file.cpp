@@ -13,6 +13,7 @@
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <unordered_map>
 #include <cctype>
 #include <exception>
 
@@ -116,6 +117,43 @@ NodalValues read_nodal_csv(const fs::path& path, const std::string& field) {
   if (column.empty()) throw NodalFileError(path.string() + " has no header row");
   if (out.values.empty()) throw NodalFileError(path.string() + " has a header but no values");
   return out;
+}
+
+std::vector<int> match_rows(const NodalValues& values, std::span<const std::size_t> node_tags,
+                            std::span<const double> r, std::span<const double> z, double tolerance) {
+  std::vector<int> node(values.values.size(), -1);
+  if (values.by_id) {
+    std::unordered_map<long long, int> by_tag;
+    for (std::size_t n = 0; n < node_tags.size(); ++n) by_tag[static_cast<long long>(node_tags[n])] = static_cast<int>(n);
+    for (std::size_t row = 0; row < node.size(); ++row) {
+      const auto found = by_tag.find(values.ids[row]);
+      if (found != by_tag.end()) node[row] = found->second;
+    }
+    return node;
+  }
+  // Nodes hashed by the cell of size `tolerance` they fall in; a row looks in the 3 x 3 cells
+  // around its own, so every node within the tolerance is seen. Colliding keys only add candidates.
+  const auto cell = [&](double v) { return static_cast<long long>(std::floor(v / tolerance)); };
+  const auto key = [](long long i, long long j) { return i * 73856093LL ^ j * 19349663LL; };
+  std::unordered_map<long long, std::vector<int>> cells;
+  for (std::size_t n = 0; n < r.size(); ++n) cells[key(cell(r[n]), cell(z[n]))].push_back(static_cast<int>(n));
+  for (std::size_t row = 0; row < node.size(); ++row) {
+    double best = tolerance;
+    for (long long di = -1; di <= 1; ++di) {
+      for (long long dj = -1; dj <= 1; ++dj) {
+        const auto c = cells.find(key(cell(values.r[row]) + di, cell(values.z[row]) + dj));
+        if (c == cells.end()) continue;
+        for (const int n : c->second) {
+          const double d = std::hypot(r[static_cast<std::size_t>(n)] - values.r[row], z[static_cast<std::size_t>(n)] - values.z[row]);
+          if (d <= best) {
+            best = d;
+            node[row] = n;
+          }
+        }
+      }
+    }
+  }
+  return node;
 }
 
 // ------------------------------------------------------------------------------------------------

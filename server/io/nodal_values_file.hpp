@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,5 +38,11 @@ NodalValues read_nodal_csv(const std::filesystem::path& path, const std::string&
 
 /// Point positions (x -> r, y -> z; the VTU's z must be 0) and the point array `field`.
 NodalValues read_vtu_point_field(const std::filesystem::path& path, const std::string& field);
+
+/// The node of each row (an index into node_tags / r / z), -1 where none: by id through
+/// `node_tags`, or by position, the nearest node within `tolerance`, looked up in a hash of cells
+/// of that size (time linear in nodes + rows).
+std::vector<int> match_rows(const NodalValues& values, std::span<const std::size_t> node_tags,
+                            std::span<const double> r, std::span<const double> z, double tolerance);
 
 }  // namespace saasgaps::io

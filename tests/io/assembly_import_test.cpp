@@ -16,6 +16,7 @@
 
 #include "errors.hpp"
 #include "io/assembly_reader.hpp"
+#include "io/gap_generator.hpp"
 #include "io/model_reader.hpp"
 
 namespace saasgaps {
@@ -344,6 +345,56 @@ TEST(AssemblyImport, PassThroughBlocksKeepTheirPointers) {
   assembly["gaps"]["initial_modulus"] = -1.0;
   const InputIssue issue = single_issue(assembly, data_dir);
   EXPECT_EQ(issue.pointer, "/gaps/initial_modulus");
+}
+
+// ---- the gap geometry alone
+
+TEST(GapGenerator, ChainsMustBeOneOpenCurve) {
+  const std::vector<int> ids{10, 11, 12, 13};
+  const std::vector<std::array<int, 2>> open{{2, 1}, {0, 1}, {2, 3}};
+  EXPECT_EQ(io::order_chain(open, ids).nodes, (std::vector<int>{0, 1, 2, 3}));  // from the smaller end id
+  const std::vector<std::array<int, 2>> closed{{0, 1}, {1, 2}, {2, 0}};
+  EXPECT_NE(io::order_chain(closed, ids).problem.find("closed curve"), std::string::npos);
+  const std::vector<std::array<int, 2>> branched{{0, 1}, {1, 2}, {1, 3}};
+  EXPECT_NE(io::order_chain(branched, ids).problem.find("branches at node 11"), std::string::npos);
+  const std::vector<std::array<int, 2>> broken{{0, 1}, {2, 3}};
+  EXPECT_NE(io::order_chain(broken, ids).problem.find("one connected curve"), std::string::npos);
+}
+
+/// Two faces of a slanted gap: y = x (A, below) and y = x + c (B); M normal to them, at 135 degrees
+/// here because A's outward normal points up-left.
+TEST(GapGenerator, SlantedFacesPairAlongTheNormal) {
+  const Vec2 up_left = Vec2(-1, 1).normalized();
+  std::vector<Vec2> x;
+  for (int k = 0; k < 4; ++k) x.emplace_back(k, k);
+  for (int k = 0; k < 4; ++k) x.push_back(Vec2(k, k) + 0.01 * up_left);  // clearance 0.01 along the normal
+  const std::vector<int> ids{1, 2, 3, 4, 11, 12, 13, 14};
+  io::FaceChain a, b;
+  a.nodes = {0, 1, 2, 3};
+  b.nodes = {7, 6, 5, 4};  // the other way round
+  a.outward.assign(3, up_left);
+  b.outward.assign(3, -up_left);
+  const io::GapGeneration g = io::generate_gaps(a, b, x, ids, 0.1);
+  ASSERT_TRUE(g.problems.empty()) << g.problems.front();
+  ASSERT_EQ(g.gaps.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_NEAR(g.gaps[k].angle_deg, 135.0, 1e-9);
+    double twice_area = 0.0;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Vec2& p = x[static_cast<std::size_t>(g.gaps[k].nodes[i])];
+      const Vec2& q = x[static_cast<std::size_t>(g.gaps[k].nodes[(i + 1) % 4])];
+      twice_area += p.x() * q.y() - q.x() * p.y();
+    }
+    EXPECT_GT(twice_area, 0.0);  // counter-clockwise
+  }
+  EXPECT_EQ(g.pairs.front(), (std::pair<int, int>{0, 4}));
+
+  // A face with one node fewer: the unmatched node of B is named.
+  b.nodes = {7, 6, 5};
+  b.outward.assign(2, -up_left);
+  const io::GapGeneration fewer = io::generate_gaps(a, b, x, ids, 0.1);
+  ASSERT_FALSE(fewer.problems.empty());
+  EXPECT_NE(fewer.problems.front().find("node 1 at (0, 0)"), std::string::npos) << fewer.problems.front();
 }
 
 }  // namespace
