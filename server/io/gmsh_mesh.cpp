@@ -77,6 +77,22 @@ class NodeIndex {
   std::vector<int> index_;
 };
 
+/// Calls visit(entity, types, element_tags, node_tags) with the elements of every entity of
+/// dimension `dim`, grouped by element type as gmsh::model::mesh::getElements gives them.
+template <class Visit>
+void for_each_entity(int dim, Visit visit) {
+  gmsh::vectorpair entities;
+  gmsh::model::getEntities(entities, dim);
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> element_tags, node_tags;
+  for (const auto& entity : entities) {
+    gmsh::model::mesh::getElements(types, element_tags, node_tags, dim, entity.second);
+    visit(entity.second, types, element_tags, node_tags);
+  }
+}
+
+using TagLists = std::vector<std::vector<std::size_t>>;
+
 double twice_signed_area(const GmshMesh& m, const MeshFace& f) {
   double twice = 0.0;  // shoelace formula
   for (int k = 0; k < f.count; ++k) {
@@ -143,12 +159,8 @@ GmshMesh read_open_model(const fs::path& path) {
   };
   std::vector<RawFace> raw;
   std::vector<char> used(max_tag + 1, 0);
-  gmsh::vectorpair surfaces;
-  gmsh::model::getEntities(surfaces, 2);
-  for (const auto& [dim, surface] : surfaces) {
-    std::vector<int> element_types;
-    std::vector<std::vector<std::size_t>> element_tags, node_tags;
-    gmsh::model::mesh::getElements(element_types, element_tags, node_tags, dim, surface);
+  for_each_entity(2, [&](int surface, const std::vector<int>& element_types, const TagLists& element_tags,
+                         const TagLists& node_tags) {
     for (std::size_t t = 0; t < element_types.size(); ++t) {
       const int count = element_types[t] == gmsh_triangle ? 3 : 4;
       for (std::size_t e = 0; e < element_tags[t].size(); ++e) {
@@ -163,7 +175,7 @@ GmshMesh read_open_model(const fs::path& path) {
         raw.push_back(f);
       }
     }
-  }
+  });
   NodeIndex index(max_tag);
   for (std::size_t tag = 0; tag <= max_tag; ++tag) {
     if (!used[tag]) continue;
@@ -208,12 +220,8 @@ GmshMesh read_open_model(const fs::path& path) {
     }
   }
 
-  gmsh::vectorpair curves;
-  gmsh::model::getEntities(curves, 1);
-  for (const auto& [dim, curve] : curves) {
-    std::vector<int> element_types;
-    std::vector<std::vector<std::size_t>> element_tags, node_tags;
-    gmsh::model::mesh::getElements(element_types, element_tags, node_tags, dim, curve);
+  for_each_entity(1, [&](int curve, const std::vector<int>& element_types, const TagLists& element_tags,
+                         const TagLists& node_tags) {
     std::vector<MeshEdge>& edges = mesh.curves[curve];
     for (std::size_t t = 0; t < element_types.size(); ++t) {
       if (element_types[t] != gmsh_line) {
@@ -224,17 +232,12 @@ GmshMesh read_open_model(const fs::path& path) {
         edges.push_back({index.find(node_tags[t][2 * e]), index.find(node_tags[t][2 * e + 1])});
       }
     }
-  }
-  gmsh::vectorpair points;
-  gmsh::model::getEntities(points, 0);
-  for (const auto& [dim, point] : points) {
-    std::vector<int> element_types;
-    std::vector<std::vector<std::size_t>> element_tags, node_tags;
-    gmsh::model::mesh::getElements(element_types, element_tags, node_tags, dim, point);
+  });
+  for_each_entity(0, [&](int point, const std::vector<int>& element_types, const TagLists&, const TagLists& node_tags) {
     for (std::size_t t = 0; t < element_types.size(); ++t) {
       if (element_types[t] == gmsh_point && !node_tags[t].empty()) mesh.points[point] = index.find(node_tags[t][0]);
     }
-  }
+  });
 
   gmsh::vectorpair groups;
   gmsh::model::getPhysicalGroups(groups);

@@ -245,36 +245,36 @@ TEST(AssemblyImport, TemperaturesFromCsvByPositionAndFromVtu) {
 
 // ---- one clear error per defect
 
-TEST(AssemblyImport, MissingGroupIsNamedAtItsPointer) {
-  json assembly = load(data_dir / "two_blocks.assembly.json");
-  assembly["constraints"][1]["group"] = "symmetry_plane";
-  const InputIssue issue = single_issue(assembly, data_dir);
-  EXPECT_EQ(issue.pointer, "/constraints/1/group");
-  EXPECT_NE(issue.detail.find("no physical group named \"symmetry_plane\""), std::string::npos) << issue.detail;
-  EXPECT_NE(issue.detail.find("\"lower_top\" (dimension 1 (curve))"), std::string::npos) << issue.detail;
-}
+/// One value of the test assembly changed, and the one issue it must give.
+struct BadValue {
+  const char* what;
+  const char* at;       ///< pointer of the value changed
+  json value;
+  const char* pointer;  ///< pointer of the issue
+  const char* says;     ///< part of its text
+};
 
-TEST(AssemblyImport, MisspeltGroupSuggestsTheName) {
-  json assembly = load(data_dir / "two_blocks.assembly.json");
-  assembly["regions"][1]["group"] = "uper";
-  const InputIssue issue = single_issue(assembly, data_dir);
-  EXPECT_EQ(issue.pointer, "/regions/1/group");
-  EXPECT_NE(issue.detail.find("did you mean \"upper\"?"), std::string::npos) << issue.detail;
-}
-
-TEST(AssemblyImport, GroupOfTheWrongDimension) {
-  json assembly = load(data_dir / "two_blocks.assembly.json");
-  assembly["loads"]["pressures"][0]["group"] = "upper";
-  const InputIssue issue = single_issue(assembly, data_dir);
-  EXPECT_EQ(issue.pointer, "/loads/pressures/0/group");
-  EXPECT_NE(issue.detail.find("\"upper\" has dimension 2 (surface); a pressure needs a curve"), std::string::npos)
-      << issue.detail;
-
-  assembly = load(data_dir / "two_blocks.assembly.json");
-  assembly["gaps"]["pairs"][0]["faces"][1] = "upper";
-  const InputIssue face = single_issue(assembly, data_dir);
-  EXPECT_EQ(face.pointer, "/gaps/pairs/0/faces/1");
-  EXPECT_NE(face.detail.find("a gap face needs a curve"), std::string::npos) << face.detail;
+TEST(AssemblyImport, GroupsMissingMisspeltOrOfTheWrongDimension) {
+  const std::vector<BadValue> cases{
+      {"missing group", "/constraints/1/group", "symmetry_plane", "/constraints/1/group",
+       "no physical group named \"symmetry_plane\" (its named groups: \"corner\" (dimension 0 (point)), "
+       "\"bottom\" (dimension 1 (curve))"},
+      {"misspelt group", "/regions/1/group", "uper", "/regions/1/group", "did you mean \"upper\"?"},
+      {"surface as a pressure curve", "/loads/pressures/0/group", "upper", "/loads/pressures/0/group",
+       "\"upper\" has dimension 2 (surface); a pressure needs a curve (dimension 1)"},
+      {"surface as a gap face", "/gaps/pairs/0/faces/1", "upper", "/gaps/pairs/0/faces/1",
+       "a gap face needs a curve"},
+      {"curve as a nodal force point", "/loads/nodal_forces/0/group", "top", "/loads/nodal_forces/0/group",
+       "a nodal force needs points"},
+      {"a pass-through value keeps its pointer", "/gaps/initial_modulus", -1.0, "/gaps/initial_modulus", "> 0"},
+  };
+  for (const BadValue& c : cases) {
+    json assembly = load(data_dir / "two_blocks.assembly.json");
+    assembly[json::json_pointer(c.at)] = c.value;
+    const InputIssue issue = single_issue(assembly, data_dir);
+    EXPECT_EQ(issue.pointer, c.pointer) << c.what;
+    EXPECT_NE(issue.detail.find(c.says), std::string::npos) << c.what << ": " << issue.detail;
+  }
 }
 
 TEST(AssemblyImport, FacesWhoseNodesDoNotFaceEachOther) {
@@ -338,13 +338,6 @@ TEST(AssemblyImport, SecondOrderElementsAreRejectedByName) {
   EXPECT_EQ(issue.pointer, "/mesh");
   EXPECT_NE(issue.detail.find("\"Triangle 6\""), std::string::npos) << issue.detail;
   EXPECT_NE(issue.detail.find("only first-order"), std::string::npos) << issue.detail;
-}
-
-TEST(AssemblyImport, PassThroughBlocksKeepTheirPointers) {
-  json assembly = load(data_dir / "two_blocks.assembly.json");
-  assembly["gaps"]["initial_modulus"] = -1.0;
-  const InputIssue issue = single_issue(assembly, data_dir);
-  EXPECT_EQ(issue.pointer, "/gaps/initial_modulus");
 }
 
 // ---- the gap geometry alone
