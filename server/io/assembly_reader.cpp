@@ -59,7 +59,9 @@ class Importer {
   // ---- shape checks
   bool object(const json& v, const std::string& p, std::initializer_list<std::string_view> required,
               std::initializer_list<std::string_view> optional);
-  const json* array(const json& parent, const std::string& p, std::string_view key, bool required, bool non_empty);
+  /// parent[key] when it is an array (non-empty if asked); nullptr when absent (object() reports a
+  /// missing required key) or reported.
+  const json* array(const json& parent, const std::string& p, std::string_view key, bool non_empty);
   std::optional<double> number(const json& o, const std::string& p, std::string_view key, bool positive = false);
   std::optional<std::string> string(const json& o, const std::string& p, std::string_view key);
 
@@ -126,11 +128,9 @@ bool Importer::object(const json& v, const std::string& p, std::initializer_list
   return true;
 }
 
-const json* Importer::array(const json& parent, const std::string& p, std::string_view key, bool required,
-                            bool non_empty) {
+const json* Importer::array(const json& parent, const std::string& p, std::string_view key, bool non_empty) {
   const auto it = parent.find(key);
-  if (it == parent.end()) return nullptr;  // a missing required key is reported by object()
-  (void)required;
+  if (it == parent.end()) return nullptr;
   const std::string at = pointer_append(p, key);
   if (!it->is_array()) {
     report(at, std::string(key) + " must be an array, got " + shown(*it));
@@ -236,7 +236,7 @@ std::vector<int> Importer::group_nodes(const PhysicalGroup& g, const std::string
 
 /// regions: [{group (surface), material, angle?}]; every surface element gets exactly one.
 void Importer::regions(json& model) {
-  const json* list = array(doc_, "", "regions", true, true);
+  const json* list = array(doc_, "", "regions", true);
   if (list == nullptr || !mesh_loaded_) return;
   std::map<int, std::pair<int, double>> surface_material;  // surface -> (material id, angle)
   std::map<int, std::string> surface_pointer;
@@ -295,7 +295,7 @@ void Importer::regions(json& model) {
 
 /// constraints: [{group (point or curve), r?, z?}]; a node's component prescribed twice must agree.
 void Importer::constraints(json& model) {
-  const json* list = array(doc_, "", "constraints", true, true);
+  const json* list = array(doc_, "", "constraints", true);
   if (list == nullptr || !mesh_loaded_) return;
   // node -> component -> (value, pointer); std::map keeps the output in node order.
   std::map<int, std::map<char, std::pair<double, std::string>>> prescribed;
@@ -344,7 +344,7 @@ void Importer::loads(json& model) {
 /// pressures: [{group (curve), normal?, shear?}] on every edge of the group, each edge listed in the
 /// counter-clockwise order of the one solid element that owns it (shear > 0 runs that way).
 void Importer::pressures(const json& loads, const std::string& lp, json& out) {
-  const json* list = array(loads, lp, "pressures", false, false);
+  const json* list = array(loads, lp, "pressures", false);
   if (list == nullptr || !mesh_loaded_) return;
   json& result = out["pressures"] = json::array();
   for (std::size_t i = 0; i < list->size(); ++i) {
@@ -379,7 +379,7 @@ void Importer::pressures(const json& loads, const std::string& lp, json& out) {
 
 /// nodal_forces: [{group (points), fr?, fz?}]: the force at each point of the group.
 void Importer::nodal_forces(const json& loads, const std::string& lp, json& out) {
-  const json* list = array(loads, lp, "nodal_forces", false, false);
+  const json* list = array(loads, lp, "nodal_forces", false);
   if (list == nullptr || !mesh_loaded_) return;
   json& result = out["nodal_forces"] = json::array();
   for (std::size_t i = 0; i < list->size(); ++i) {
@@ -404,7 +404,7 @@ void Importer::temperatures(const json& loads, const std::string& lp, json& out)
   if (const auto d = number(*it, tp, "default")) result["default"] = *d;
   std::vector<std::optional<double>> T(mesh_.node_tags.size());
   std::vector<std::string> source(mesh_.node_tags.size());
-  if (const json* list = array(*it, tp, "groups", false, false)) {
+  if (const json* list = array(*it, tp, "groups", false)) {
     for (std::size_t i = 0; i < list->size(); ++i) {
       const std::string p = pointer_append(pointer_append(tp, "groups"), i);
       const json& o = (*list)[i];
@@ -548,7 +548,7 @@ void Importer::gaps(json& model) {
     report("/gaps/elements", "gap elements are generated from /gaps/pairs; remove elements");
   }
   if (!it->contains("pairs")) report("/gaps", "missing required key \"pairs\" (the faces that face each other)");
-  const json* list = array(*it, "/gaps", "pairs", true, true);
+  const json* list = array(*it, "/gaps", "pairs", true);
   settings["elements"] = json::array();
   if (list == nullptr || !mesh_loaded_) {
     model["gaps"] = std::move(settings);
@@ -643,9 +643,17 @@ json Importer::run() {
   }
   load_mesh();
   if (mesh_loaded_) {
+    // On the axis of an axisymmetric section Gmsh may place a node a round-off left of r = 0.
+    const auto analysis = doc_.find("analysis");
+    const bool axisymmetric = analysis != doc_.end() && analysis->is_object() &&
+                              analysis->value("type", json()) == "axisymmetric";
+    double extent = 0.0;
+    for (const Vec2& x : positions_) extent = std::max({extent, std::fabs(x.x()), std::fabs(x.y())});
     json& nodes = model["nodes"] = json::array();
     for (std::size_t n = 0; n < positions_.size(); ++n) {
-      nodes.push_back({{"id", ids_[n]}, {"r", positions_[n].x()}, {"z", positions_[n].y()}});
+      double r = positions_[n].x();
+      if (axisymmetric && r < 0.0 && r > -1e-12 * extent) r = 0.0;
+      nodes.push_back({{"id", ids_[n]}, {"r", r}, {"z", positions_[n].y()}});
     }
   }
   regions(model);

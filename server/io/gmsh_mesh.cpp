@@ -216,7 +216,6 @@ GmshMesh read_open_model(const fs::path& path) {
   for (MeshFace& f : mesh.faces) {
     if (twice_signed_area(mesh, f) < 0.0) {
       std::reverse(f.nodes.begin() + 1, f.nodes.begin() + f.count);
-      mesh.flipped.push_back(f.tag);
     }
   }
 

@@ -28,7 +28,8 @@ class MeshError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// A first-order surface element: 3 or 4 node indices (into GmshMesh::nodes), counter-clockwise.
+/// A first-order surface element: 3 or 4 node indices (into GmshMesh::node_tags, r, z),
+/// counter-clockwise.
 struct MeshFace {
   std::size_t tag = 0;  ///< Gmsh element tag
   int surface = 0;      ///< tag of the Gmsh surface entity it is classified on
@@ -58,7 +59,6 @@ struct GmshMesh {
   std::map<int, std::vector<MeshEdge>> curves;  ///< curve entity tag -> its line elements
   std::map<int, int> points;                    ///< point entity tag -> node index (meshed points only)
   std::vector<PhysicalGroup> groups;
-  std::vector<std::size_t> flipped;             ///< tags of faces given clockwise and reversed here
 };
 
 /// Opens `path` with Gmsh (a `.geo` is meshed in 2D with the options it sets itself) and returns
