@@ -17,8 +17,8 @@
 
 namespace {
 
-int report_model_error(const saasgaps::ModelError& e) {
-  std::cerr << "invalid model: " << e.issues().size() << (e.issues().size() == 1 ? " error\n" : " errors\n");
+int report_model_error(const saasgaps::ModelError& e, const char* what) {
+  std::cerr << "invalid " << what << ": " << e.issues().size() << (e.issues().size() == 1 ? " error\n" : " errors\n");
   for (const saasgaps::InputIssue& issue : e.issues()) {
     std::cerr << (issue.pointer.empty() ? "(document)" : issue.pointer) << ": " << issue.detail << '\n';
   }
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
     if (plot_cmd->parsed()) return saasgaps::cli::run_plot(plot);
     if (vtu_cmd->parsed()) return saasgaps::cli::run_export_vtu(vtu);
   } catch (const saasgaps::ModelError& e) {
-    return report_model_error(e);
+    return report_model_error(e, import_cmd->parsed() ? "assembly" : "model");
   } catch (const saasgaps::SingularModelError& e) {
     // A mechanism is a defect of the model (model-format.md: "the model is restrained").
     std::cerr << "invalid model: " << e.what() << '\n';

@@ -39,6 +39,13 @@ class ProblemList {
   std::size_t count_ = 0;
 };
 
+/// A length for a message: 6 significant digits, no trailing zeros.
+std::string length(double v) {
+  std::ostringstream text;
+  text << v;
+  return text.str();
+}
+
 std::string at(const Vec2& x) {
   std::ostringstream text;
   text.precision(8);
@@ -178,9 +185,9 @@ GapGeneration generate_gaps(const FaceChain& a, const FaceChain& b, std::span<co
     const double local = std::min(h, edge_length);
     const double miss = (q - pos(facing)).norm();
     if (miss > tolerance * local) {
-      mismatched.add("node " + id(node) + " at " + at(p) + " faces " + at(q) + ", " + std::to_string(miss) +
+      mismatched.add("node " + id(node) + " at " + at(p) + " faces " + at(q) + ", " + length(miss) +
                      " from the nearest node " + id(facing) + " at " + at(pos(facing)) + " (allowed " +
-                     std::to_string(tolerance * local) + ")");
+                     length(tolerance * local) + ")");
       paired = false;
       continue;
     }
