@@ -9,6 +9,10 @@
 /// Gmsh keeps its model in global state, so one mesh is read at a time (a process-wide mutex), and
 /// every call initializes Gmsh, reads, and finalizes it again. General.Terminal is 0: Gmsh prints
 /// nothing; its errors come back as MeshError.
+///
+/// The calls into Gmsh live in a module, libsaasgaps_gmsh.so (io/gmsh_reader.cpp), opened on the
+/// first read: beside the program, in ../lib/saasgaps beside it, where the build put it, or at
+/// $SAASGAPS_GMSH_MODULE.
 
 #include <array>
 #include <cstddef>
