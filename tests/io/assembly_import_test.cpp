@@ -236,6 +236,15 @@ TEST(AssemblyImport, TemperaturesFromCsvByPositionAndFromVtu) {
   EXPECT_EQ(m.loads.node_temperature[11], 400.5);  // node 12 at (2, 2.01)
   EXPECT_EQ(m.loads.node_temperature[0], 0.0);
 
+  // A compressed VTU (ParaView's default) is refused with a message that says how to write it.
+  scratch.write("z.vtu", "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" byte_order=\"LittleEndian\" "
+                         "compressor=\"vtkZLibDataCompressor\"><UnstructuredGrid/></VTKFile>\n");
+  assembly["loads"]["temperatures"]["file"] = {{"path", "z.vtu"}};
+  const InputIssue compressed = single_issue(assembly, scratch.dir());
+  EXPECT_EQ(compressed.pointer, "/loads/temperatures/file/path");
+  EXPECT_NE(compressed.detail.find("is compressed (vtkZLibDataCompressor); write it uncompressed"), std::string::npos)
+      << compressed.detail;
+
   scratch.write("bad.csv", "node,T\n5,20\n99,30\n");
   assembly["loads"]["temperatures"]["file"] = {{"path", "bad.csv"}};
   const InputIssue issue = single_issue(assembly, scratch.dir());
