@@ -21,8 +21,10 @@ ExactContact::ExactContact(const Model& model, const DofMap& dofs, const CscPatt
     row.g0 = p.g0;
     for (int k = 0; k < p.count; ++k) {
       for (int dir = 0; dir < 2; ++dir) {
+        // cos(90 degrees) is 6e-17, not 0: such a component is no coupling (and would give a pair
+        // whose only free unknown is across the normal a vanishing penalty).
         const double coefficient = p.weight[k] * p.normal[dir];
-        if (coefficient == 0.0) continue;
+        if (std::abs(coefficient) <= 1.0e-12 * std::abs(p.weight[k])) continue;
         const Index eq = dofs.equation(p.node[k], dir);
         if (eq >= 0) {
           row.entries[row.count++] = {eq, coefficient};
