@@ -443,7 +443,7 @@ class GapContactAnalysis {
           text << " (exact contact: " << state.history.back().contact_pairs << " of " << exact_->pairs().pairs.size()
                << " node pairs in contact, complementarity residual " << state.history.back().complementarity << ")";
         } else if (gaps_) {
-          text << loaded_open_gaps(v);
+          text << loaded_open_gaps(state, v);
         }
         return text.str();
       case RunStatus::stopped: text << "stopped on request after iteration " << state.iteration; break;
@@ -479,10 +479,11 @@ class GapContactAnalysis {
     return text.str();
   }
 
-  /// Item 5 of the classic method's limits: gaps that stopped short of contact but carry a real share
-  /// of the largest gap pressure. Their pressures are where the iteration stopped, not the contact
-  /// answer. Empty when there are none.
-  std::string loaded_open_gaps(const Evaluation& v) const {
+  /// The classic method's blind spot: gaps stiffened above the floor modulus that stopped short of
+  /// contact yet carry a real share of the largest gap pressure. Their pressures are where the
+  /// iteration stopped, not the contact answer. (A gap at the floor modulus carries only the
+  /// negligible spring the exact mode keeps too.) Empty when there are none.
+  std::string loaded_open_gaps(const RestartState& state, const Evaluation& v) const {
     constexpr double share = 0.01;
     double largest = 0.0;
     for (double sigma : v.gap_sigma) largest = std::max(largest, -sigma);
@@ -491,7 +492,8 @@ class GapContactAnalysis {
     std::size_t count = 0, worst = 0;
     for (std::size_t g = 0; g < v.gap_sigma.size(); ++g) {
       const double eps = v.gap_strain[g];
-      if (!(eps < 0.0 && -eps < touching && -v.gap_sigma[g] > share * largest)) continue;
+      const bool stiffened = state.gaps.used.normal[g] > gaps_->floor_modulus();
+      if (!(stiffened && eps < 0.0 && -eps < touching && -v.gap_sigma[g] > share * largest)) continue;
       if (count == 0 || v.gap_sigma[g] < v.gap_sigma[worst]) worst = g;
       ++count;
     }
