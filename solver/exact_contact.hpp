@@ -12,7 +12,8 @@
 /// each iteration one pair of triangular solves; the penalty only speeds the multipliers up, the
 /// converged answer has g_A = 0 to round-off whatever rho is. Then
 ///   A <- { i : lambda_i > tol_lambda_i }  U  { i not in A : g_i < -tol_g }
-/// until A repeats; an active set seen before (a cycle) changes only its worst pair.
+/// until A repeats; an active set seen before (a cycle) changes only its worst pair. The first A is
+/// the last solve's, or the pairs whose initial gap is within 1 % of the smallest.
 
 #include <cstdint>
 #include <span>
