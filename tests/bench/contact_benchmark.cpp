@@ -15,18 +15,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <vector>
 
 #include "analysis.hpp"
 #include "contact_pairs.hpp"
 #include "dof_map.hpp"
 #include "exact_contact.hpp"
-#include "gap_closure.hpp"
-#include "material_state.hpp"
 #include "sparse_cholesky.hpp"
 #include "stiffness_system.hpp"
-#include "support/mesh_builder.hpp"
+#include "support/ring_fit.hpp"
 #include "thread_environment.hpp"
 
 using namespace saasgaps;
@@ -41,35 +38,9 @@ double timed(F&& f) {
 }
 
 Model ring_fit(int radial, int hoop) {
-  constexpr double a1 = 1.0, b1 = 1.5, delta = 0.002, a2 = b1 + delta, b2 = 2.2;
-  Model m;
-  m.analysis = AnalysisType::plane_strain;
-  m.materials = {testing::isotropic_material(1, 30.0e6, 0.3, 6.5e-6)};
-  const auto annulus = [](double r0, double r1) {
-    return [=](double s, double t) {
-      const double r = r0 + s * (r1 - r0), angle = t * std::numbers::pi / 2.0;
-      return Vec2(r * std::cos(angle), r * std::sin(angle));
-    };
-  };
-  const testing::Grid inner = testing::add_grid(m, radial, hoop, annulus(a1, b1), 0);
-  const testing::Grid outer = testing::add_grid(m, radial, hoop, annulus(a2, b2), 0);
-  std::vector<int> face_a, face_b;
-  for (int j = 0; j <= hoop; ++j) {
-    face_a.push_back(inner.at(radial, j));
-    face_b.push_back(outer.at(0, j));
-  }
-  testing::add_gap_row(m, face_b, face_a, [hoop](int k) { return 90.0 * (k + 0.5) / hoop; });
+  Model m = testing::quarter_ring_fit(AnalysisType::plane_strain, radial, hoop);
   m.gaps->method = GapMethod::exact;
-  m.gaps->initial_modulus = 100.0;
   m.gaps->tensile_schedule = {1.0};
-  testing::fill_temperatures(m, 0.0);
-  for (int n : inner.nodes) m.loads.node_temperature[n] = 400.0;
-  for (const testing::Grid* ring : {&inner, &outer}) {
-    for (int i = 0; i <= radial; ++i) {
-      testing::constrain(m, ring->at(i, 0), std::nullopt, 0.0);
-      testing::constrain(m, ring->at(i, hoop), 0.0, std::nullopt);
-    }
-  }
   return m;
 }
 
@@ -93,14 +64,7 @@ int main(int argc, char** argv) {
   const Model m = ring_fit(radial, hoop);
   DofMap dofs(m);
   StiffnessSystem system(m, dofs);
-  const SolidMaterials materials(m);
-  const MaterialState state = materials.initial();
-  system.assemble_solids([&](std::size_t e) { return materials.law(e, state); });
-  GapClosure gaps(*m.gaps);
-  GapModuli floor;
-  floor.tensile = gaps.floor_modulus();
-  floor.normal.assign(m.gap_count(), floor.tensile);
-  system.assemble_gaps([&](std::size_t g) { return gaps.law(g, floor, m.analysis); });
+  testing::assemble_with_gaps_at_floor(m, system);
   SparseCholesky cholesky(system.pattern(), dofs.node_of_equation());
   std::vector<double> u(static_cast<std::size_t>(dofs.size()));
 

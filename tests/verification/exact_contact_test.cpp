@@ -17,13 +17,12 @@
 #include "contact_pairs.hpp"
 #include "dof_map.hpp"
 #include "errors.hpp"
-#include "gap_closure.hpp"
 #include "io/model_reader.hpp"
-#include "material_state.hpp"
 #include "sparse_cholesky.hpp"
 #include "stiffness_system.hpp"
 #include "support/examples.hpp"
 #include "support/mesh_builder.hpp"
+#include "support/ring_fit.hpp"
 
 namespace saasgaps {
 namespace {
@@ -178,7 +177,7 @@ std::vector<VerticalPair> vertical_pairs(const Model& m) {
   std::set<std::pair<int, int>> seen;
   std::vector<VerticalPair> out;
   for (const GapElement& g : m.gaps->elements) {
-    for (const auto [a, b] : {std::pair{g.nodes[0], g.nodes[3]}, std::pair{g.nodes[1], g.nodes[2]}}) {
+    for (const auto& [a, b] : {std::pair{g.nodes[0], g.nodes[3]}, std::pair{g.nodes[1], g.nodes[2]}}) {
       if (seen.insert({a, b}).second) out.push_back({a, b, m.nodes[b].z - m.nodes[a].z});
     }
   }
@@ -190,14 +189,7 @@ std::vector<VerticalPair> vertical_pairs(const Model& m) {
 std::vector<double> penalty_solution(const Model& m) {
   DofMap dofs(m);
   StiffnessSystem system(m, dofs);
-  SolidMaterials materials(m);
-  const MaterialState state = materials.initial();
-  system.assemble_solids([&](std::size_t e) { return materials.law(e, state); });
-  GapClosure closure(*m.gaps);
-  GapModuli floor;
-  floor.tensile = closure.floor_modulus();
-  floor.normal.assign(m.gap_count(), floor.tensile);
-  system.assemble_gaps([&](std::size_t g) { return closure.law(g, floor, m.analysis); });
+  testing::assemble_with_gaps_at_floor(m, system);
   SparseCholesky cholesky(system.pattern());
   const auto values = system.values();
   double stiffest = 0.0;

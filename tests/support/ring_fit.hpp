@@ -1,0 +1,37 @@
+#pragma once
+/// The ring fit used by the contact tests and the contact benchmark: a steel ring a1..b1 heated by dT
+/// inside a steel ring a2..b2, a2 = b1 + delta (a radial gap), as a quarter annulus with symmetry on
+/// both axes, gap elements around the interface with M radial at each element's mid angle.
+
+#include <functional>
+
+#include "model.hpp"
+#include "voigt.hpp"
+
+namespace saasgaps {
+class StiffnessSystem;
+}
+
+namespace saasgaps::testing {
+
+struct RingFit {
+  static constexpr double E = 30.0e6, nu = 0.3, alpha = 6.5e-6, dT = 400.0;
+  static constexpr double a1 = 1.0, b1 = 1.5, delta = 0.002, a2 = b1 + delta, b2 = 2.2;
+};
+
+/// (s, t) in [0, 1]^2 to the quarter annulus r0..r1, angle 0..90 degrees (counter-clockwise).
+std::function<Vec2(double, double)> quarter_annulus(double r0, double r1);
+
+/// The quarter-annulus ring fit with radial x hoop quads per ring and hoop gap elements; gaps in
+/// classic mode with the default settings (tests set the method and schedule they need).
+Model quarter_ring_fit(AnalysisType analysis, int radial, int hoop);
+
+/// The axisymmetric version: a slice `height` high of both rings, radial quads per ring, one gap
+/// element (M along r), every node held in z (the rings in plane strain along z).
+Model axisymmetric_ring_fit(int radial, double height);
+
+/// K and f of a model as the exact contact mode assembles them: the initial materials, every gap
+/// element at the floor modulus (the schedule's last value).
+void assemble_with_gaps_at_floor(const Model& model, StiffnessSystem& system);
+
+}  // namespace saasgaps::testing
