@@ -159,6 +159,7 @@ TEST_F(SolveCommand, ExactModeSolvesAndItsResultPlotsAndExports) {
   const Outcome r = saasgaps("solve " + example("report-problem3-case1-exact.json") + " -o " + path("result.json"));
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("exact contact: 1 of 19 node pairs in contact"), std::string::npos) << r.err;
+  for (const char* column : {"pairs", "complement.", "sets"}) EXPECT_NE(r.err.find(column), std::string::npos) << column;
   const nlohmann::json result = json_of(path("result.json"));
   EXPECT_EQ(result["history"][0]["contact_pairs"], 1);
   EXPECT_LT(result["history"][0]["complementarity"].get<double>(), 1e-12);
