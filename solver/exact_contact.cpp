@@ -73,7 +73,25 @@ void ExactContact::factor_active(SparseCholesky& cholesky, std::span<const doubl
   cholesky.factorize(values_);
 }
 
-double ExactContact::multipliers(SparseCholesky& cholesky, std::span<const double> rhs,
+void ExactContact::update_active(const std::vector<std::uint8_t>& held, const std::vector<std::uint8_t>& active) {
+  for (const bool add : {true, false}) {
+    columns_.clear();
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+      if (held[i] == active[i] || static_cast<bool>(active[i]) != add) continue;
+      // rho_i c_i c_i^T = w w^T with w = sqrt(rho_i) c_i.
+      const Row& row = rows_[i];
+      UpdateColumn w;
+      for (int k = 0; k < row.count; ++k) {
+        w.row[w.count] = row.entries[k].equation;
+        w.value[w.count++] = std::sqrt(row.rho) * row.entries[k].coefficient;
+      }
+      columns_.push_back(w);
+    }
+    updatable_.update(columns_, add);
+  }
+}
+
+double ExactContact::multipliers(const Solver& solve, std::span<const double> rhs,
                                  const std::vector<std::uint8_t>& active, std::vector<double>& force,
                                  std::span<double> u, double length, int& iterations) {
   double previous = std::numeric_limits<double>::infinity();
@@ -88,7 +106,7 @@ double ExactContact::multipliers(SparseCholesky& cholesky, std::span<const doubl
       const double load = force[i] - row.rho * row.g0;
       for (int k = 0; k < row.count; ++k) b_[row.entries[k].equation] += row.entries[k].coefficient * load;
     }
-    cholesky.solve(b_, u);
+    solve(b_, u);
     ++iterations;
     // lambda <- lambda - rho g(u). With the new lambda, K u = f + C_A^T lambda holds exactly: u is in
     // equilibrium with the updated forces, and g_A is what is left to remove.
@@ -151,11 +169,40 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
   };
   std::vector<std::size_t> seen;
   std::vector<double> g(n, 0.0);
+  // The supernodal factorization holds K + rho C_F^T C_F for the set F = factored; small changes from
+  // it go to a simplicial copy by rank-k updates and downdates (`held`: the copy's set).
+  std::vector<std::uint8_t> factored, held;
+  const Solver by_factorization = [&cholesky](std::span<const double> b, std::span<double> x) { cholesky.solve(b, x); };
+  const Solver by_update = [this](std::span<const double> b, std::span<double> x) { updatable_.solve(b, x); };
+  const Solver* solver = &by_factorization;
   for (int iteration = 1;; ++iteration) {
     seen.push_back(key_of(active));
-    factor_active(cholesky, values, active);
+    int distance = 0;
+    for (std::size_t i = 0; i < n && !factored.empty(); ++i) distance += factored[i] != active[i];
+    bool updated = false;
+    if (!factored.empty() && distance <= max_update_rank) {
+      try {
+        if (held.empty()) {
+          updatable_.copy(cholesky);
+          held = factored;
+        }
+        update_active(held, active);
+        held = active;
+        solver = &by_update;
+        updated = true;
+      } catch (const NotPositiveDefinite&) {
+        held.clear();  // a downdate lost definiteness to round-off: factorize afresh
+      }
+    }
+    if (!updated) {
+      factor_active(cholesky, values, active);
+      ++report.factorizations;
+      factored = active;
+      held.clear();
+      solver = &by_factorization;
+    }
     report.active_set_iterations = iteration;
-    const double worst = multipliers(cholesky, rhs, active, force, u, length, report.multiplier_iterations);
+    const double worst = multipliers(*solver, rhs, active, force, u, length, report.multiplier_iterations);
     double scale = length;
     for (double x : u) scale = std::max(scale, std::abs(x));
     if (worst > accepted_residual * scale) {

@@ -16,6 +16,7 @@
 /// the last solve's, or the pairs whose initial gap is within 1 % of the smallest.
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -23,6 +24,7 @@
 #include "csc_pattern.hpp"
 #include "dof_map.hpp"
 #include "sparse_cholesky.hpp"
+#include "updatable_factor.hpp"
 
 namespace saasgaps {
 
@@ -38,6 +40,7 @@ struct ContactReport {
   int pairs_in_contact = 0;
   int active_set_iterations = 0;  ///< factorizations of K_A
   int multiplier_iterations = 0;  ///< solves, over all active sets
+  int factorizations = 0;         ///< numeric factorizations of K_A (the others were rank-k updates)
   double complementarity = 0.0;   ///< max_i |min(lambda_i / k_i, g_i)| / length scale (dimensionless)
 };
 
@@ -50,6 +53,9 @@ class ExactContact {
   /// rho_i / (c_i^T diag(K) c_i): large enough that each multiplier step gains about four digits,
   /// small enough not to spoil the factorization's accuracy.
   static constexpr double penalty_factor = 1.0e4;
+  /// Active-set changes of at most this many pairs update the factorization (rank-k update and
+  /// downdate of a simplicial LDL' copy) instead of refactorizing.
+  static constexpr int max_update_rank = 100;
   /// Round-off: residuals below this fraction of the model's length scale are zero.
   static constexpr double round_off = 1.0e-11;
   /// Largest constraint residual accepted when the multiplier iterations stagnate before round_off.
@@ -86,9 +92,12 @@ class ExactContact {
   };
 
   double residual(const Row& row, std::span<const double> u) const;
+  using Solver = std::function<void(std::span<const double>, std::span<double>)>;
   void factor_active(SparseCholesky& cholesky, std::span<const double> values, const std::vector<std::uint8_t>& active);
+  /// Brings updatable_ from the set `held` to `active` by a rank-k update and downdate.
+  void update_active(const std::vector<std::uint8_t>& held, const std::vector<std::uint8_t>& active);
   /// Multiplier iterations on the current factorization; returns the final max |g_A|.
-  double multipliers(SparseCholesky& cholesky, std::span<const double> rhs, const std::vector<std::uint8_t>& active,
+  double multipliers(const Solver& solve, std::span<const double> rhs, const std::vector<std::uint8_t>& active,
                      std::vector<double>& force, std::span<double> u, double length, int& iterations);
 
   const Model& model_;
@@ -98,6 +107,8 @@ class ExactContact {
   std::vector<Index> diagonal_;  // position of K_jj
   std::vector<double> values_;   // K_A
   std::vector<double> b_;        // right-hand side of K_A u = b
+  UpdatableFactor updatable_;    // for small active-set changes
+  std::vector<UpdateColumn> columns_;
 };
 
 }  // namespace saasgaps

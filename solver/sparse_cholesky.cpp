@@ -286,5 +286,6 @@ Index SparseCholesky::size() const { return impl_->pattern.n; }
 double SparseCholesky::factor_nonzeros() const { return impl_->factor_entries; }
 double SparseCholesky::factor_flops() const { return impl_->flops; }
 const char* SparseCholesky::ordering() const { return impl_->ordering_name; }
+const cholmod_factor_struct* SparseCholesky::factor() const { return impl_->L; }
 
 }  // namespace saasgaps
