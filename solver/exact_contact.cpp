@@ -177,8 +177,10 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
   const Solver* solver = &by_factorization;
   for (int iteration = 1;; ++iteration) {
     seen.push_back(key_of(active));
+    // The step's rank: pairs that change from the set the factor (or its updated copy) holds.
+    const std::vector<std::uint8_t>& from = held.empty() ? factored : held;
     int distance = 0;
-    for (std::size_t i = 0; i < n && !factored.empty(); ++i) distance += factored[i] != active[i];
+    for (std::size_t i = 0; i < n && !from.empty(); ++i) distance += from[i] != active[i];
     bool updated = false;
     if (!factored.empty() && distance <= max_update_rank) {
       try {

@@ -53,8 +53,8 @@ class ExactContact {
   /// rho_i / (c_i^T diag(K) c_i): large enough that each multiplier step gains about four digits,
   /// small enough not to spoil the factorization's accuracy.
   static constexpr double penalty_factor = 1.0e4;
-  /// Active-set changes of at most this many pairs update the factorization (rank-k update and
-  /// downdate of a simplicial LDL' copy) instead of refactorizing.
+  /// An active-set step that changes at most this many pairs updates the factorization (rank-k
+  /// update and downdate of a simplicial LDL' copy) instead of refactorizing.
   static constexpr int max_update_rank = 100;
   /// Round-off: residuals below this fraction of the model's length scale are zero.
   static constexpr double round_off = 1.0e-11;

@@ -17,13 +17,19 @@ std::function<Vec2(double, double)> quarter_annulus(double r0, double r1) {
   };
 }
 
-Model quarter_ring_fit(AnalysisType analysis, int radial, int hoop) {
+Model quarter_ring_fit(AnalysisType analysis, int radial, int hoop, double eccentricity) {
   using F = RingFit;
   Model m;
   m.analysis = analysis;
   m.materials = {isotropic_material(1, F::E, F::nu, F::alpha)};
   const Grid inner = add_grid(m, radial, hoop, quarter_annulus(F::a1, F::b1), 0);
-  const Grid outer = add_grid(m, radial, hoop, quarter_annulus(F::a2, F::b2), 0);
+  const Grid outer = add_grid(
+      m, radial, hoop,
+      [eccentricity](double s, double t) {
+        const double bore = F::a2 + eccentricity * F::delta * t;
+        return quarter_annulus(bore, F::b2)(s, t);
+      },
+      0);
   std::vector<int> inner_face, outer_face;
   for (int j = 0; j <= hoop; ++j) {
     inner_face.push_back(inner.at(radial, j));

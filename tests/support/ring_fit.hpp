@@ -24,7 +24,9 @@ std::function<Vec2(double, double)> quarter_annulus(double r0, double r1);
 
 /// The quarter-annulus ring fit with radial x hoop quads per ring and hoop gap elements; gaps in
 /// classic mode with the default settings (tests set the method and schedule they need).
-Model quarter_ring_fit(AnalysisType analysis, int radial, int hoop);
+/// eccentricity e > 0 widens the gap from delta at angle 0 to (1 + e) delta at 90 degrees (the
+/// outer ring's bore a2 + e delta angle / 90), so that contact covers only part of the interface.
+Model quarter_ring_fit(AnalysisType analysis, int radial, int hoop, double eccentricity = 0.0);
 
 /// The axisymmetric version: a slice `height` high of both rings, radial quads per ring, one gap
 /// element (M along r), every node held in z (the rings in plane strain along z).
