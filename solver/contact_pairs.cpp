@@ -143,8 +143,11 @@ class Pairer {
     r.pair.weight = {side, -side * (1.0 - t), -side * t};
     r.pair.count = 3;
     r.pair.normal = n_;
+    // A triangle's one pair stands for half its edge: in a strip of triangles alternating sides (the
+    // usual way to join faces that do not line up) each half-face then has one pair, so a uniform
+    // pressure gives every pair lambda = p area, as on quadrilaterals.
     const auto area = face_areas(model_, x_[e0], x_[e1]);
-    r.area = area[0] + area[1];
+    r.area = 0.5 * (area[0] + area[1]);
     return std::vector<RawPair>{r};
   }
 

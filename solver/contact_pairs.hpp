@@ -30,7 +30,8 @@ struct ContactPair {
   double g0 = 0.0;                      ///< initial separation along the normal (> 0)
   /// The face area the pair stands for: the sum, over the gap elements sharing it, of the load a unit
   /// pressure on the face puts on the pair's node (consistent nodal load; thickness in plane analyses,
-  /// the full ring 2 pi r in axisymmetry; for a quad the mean of its two faces).
+  /// the full ring 2 pi r in axisymmetry; for a quad the mean of its two faces; for a triangle half its
+  /// edge's area).
   double area = 0.0;
 };
 
