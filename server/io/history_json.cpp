@@ -5,12 +5,17 @@ namespace saasgaps::io {
 using nlohmann::json;
 
 void write_history_row(JsonWriter& out, const IterationRecord& r) {
-  out.begin_object()
-      .field("attempt", r.attempt)
+  // Exact contact mode only (classic rows have no pairs): active sets, complementarity, pairs in
+  // contact, each in its alphabetical place like every member.
+  const bool exact = r.active_set_iterations > 0;
+  out.begin_object();
+  if (exact) out.field("active_set_iterations", r.active_set_iterations);
+  out.field("attempt", r.attempt)
       .field("average_closure", r.average_closure)
       .field("bimodulus_changes", r.bimodulus_changes)
-      .field("closed_gaps", r.closed_gaps)
-      .field("extrapolated", r.extrapolated)
+      .field("closed_gaps", r.closed_gaps);
+  if (exact) out.field("complementarity", r.complementarity).field("contact_pairs", r.contact_pairs);
+  out.field("extrapolated", r.extrapolated)
       .field("gap_closures", r.gap_closures)
       .field("iteration", r.iteration)
       .field("max_closure", r.max_closure)

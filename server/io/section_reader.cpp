@@ -1,7 +1,6 @@
 #include "io/section_reader.hpp"
 
 #include "io/contact_check.hpp"
-
 #include "io/value_quote.hpp"
 
 namespace saasgaps::io {
