@@ -2,6 +2,8 @@
 
 #include <cholmod.h>
 
+#include "cholmod_solve.hpp"
+
 #include <algorithm>
 #include <cassert>
 #include <stdexcept>
@@ -12,9 +14,7 @@ namespace saasgaps {
 struct UpdatableFactor::Impl {
   cholmod_common common{};
   cholmod_factor* L = nullptr;
-  cholmod_dense* X = nullptr;  // solve2 workspaces, kept
-  cholmod_dense* Y = nullptr;
-  cholmod_dense* E = nullptr;
+  CholmodSolveWorkspace work;
   std::vector<Index> inverse;  // permuted position of each original row
   std::vector<Index> colptr, rowind;
   std::vector<double> values;
@@ -26,9 +26,7 @@ struct UpdatableFactor::Impl {
   }
   ~Impl() {
     cholmod_l_free_factor(&L, &common);
-    cholmod_l_free_dense(&X, &common);
-    cholmod_l_free_dense(&Y, &common);
-    cholmod_l_free_dense(&E, &common);
+    work.release(common);
     cholmod_l_finish(&common);
   }
   void fail(const char* what) const {
@@ -89,20 +87,7 @@ void UpdatableFactor::update(std::span<const UpdateColumn> columns, bool add) {
 }
 
 void UpdatableFactor::solve(std::span<const double> b, std::span<double> x) {
-  Impl& m = *impl_;
-  const std::size_t n = m.L->n;
-  assert(b.size() == n && x.size() == n);
-  cholmod_dense B{};
-  B.nrow = n;
-  B.ncol = 1;
-  B.nzmax = n;
-  B.d = n;
-  B.x = const_cast<double*>(b.data());
-  B.xtype = CHOLMOD_REAL;
-  B.dtype = CHOLMOD_DOUBLE;
-  if (!cholmod_l_solve2(CHOLMOD_A, m.L, &B, nullptr, &m.X, nullptr, &m.Y, &m.E, &m.common)) m.fail("solve");
-  const auto* result = static_cast<const double*>(m.X->x);
-  std::copy(result, result + n, x.begin());
+  cholmod_solve_into(impl_->L, b, x, impl_->work, impl_->common);
 }
 
 }  // namespace saasgaps
