@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
 
   CLI::App app{"SAASGAPS: thermal stress analysis of plane and axisymmetric bodies in contact across gaps"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", "saasgaps " SAASGAPS_VERSION);
 
   saasgaps::cli::SolveOptions solve;
   CLI::App* solve_cmd = app.add_subcommand("solve", "Solve a model; one progress line per iteration on stderr");
@@ -84,6 +85,17 @@ int main(int argc, char** argv) {
                         "Server deaths a running job survives before it fails instead of resuming")
       ->check(CLI::Range(0, 100))
       ->capture_default_str();
+  serve_cmd->add_option("--allow-host", serve.allowed_hosts,
+                        "A Host name to answer besides loopback names and --host (repeatable; DNS-rebinding guard)");
+  serve_cmd->add_option("--header-timeout", serve.header_timeout, "Seconds a client has to send a request's head")
+      ->check(CLI::Range(0.1, 3600.0))
+      ->capture_default_str();
+  serve_cmd->add_option("--keep-alive", serve.keep_alive, "Seconds an idle connection stays open")
+      ->check(CLI::Range(0.1, 3600.0))
+      ->capture_default_str();
+  serve_cmd->add_option("--keep-finished", serve.keep_finished_days,
+                        "Delete finished jobs this many days after they finished (checked at start and hourly)")
+      ->check(CLI::Range(0.0, 36500.0));
 
   saasgaps::cli::PlotOptions plot;
   CLI::App* plot_cmd = app.add_subcommand("plot", "Draw a contour, closure or convergence plot of a result (PNG or SVG)");

@@ -2,7 +2,9 @@
 /// `saasgaps serve`: the HTTP job service on one SQLite database file.
 
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace saasgaps::cli {
 
@@ -15,6 +17,10 @@ struct ServeOptions {
   std::string token_file;       ///< bearer-token authentication when set
   int max_streams = 4;
   int max_interruptions = 3;
+  std::vector<std::string> allowed_hosts;  ///< Host names accepted besides loopback and --host
+  double header_timeout = 10.0;            ///< seconds to receive a request's head
+  double keep_alive = 5.0;                 ///< seconds an idle connection stays open
+  std::optional<double> keep_finished_days;  ///< retention of finished jobs
 };
 
 /// Runs until SIGINT or SIGTERM; returns the exit code. Throws when it cannot start.
