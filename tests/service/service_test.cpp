@@ -11,6 +11,7 @@
 
 #include "service/long_job_model.hpp"
 #include "service/server_process.hpp"
+#include "service/service_fixture.hpp"
 
 namespace saasgaps::testing {
 namespace {
@@ -18,49 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-class Service : public ::testing::Test {
+class Service : public ServiceFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("saasgaps-service-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  [[nodiscard]] fs::path database() const { return dir_ / "jobs.db"; }
-
-  static std::string example_text(const std::string& name) {
-    std::ifstream in(std::string(SAASGAPS_EXAMPLES_DIR) + "/" + name);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }
-
-  /// POST a model; returns the job id (asserting 202).
-  static std::int64_t submit(httplib::Client& client, const std::string& body, const httplib::Headers& headers = {}) {
-    const httplib::Result r = client.Post("/v1/jobs", headers, body, "application/json");
-    EXPECT_TRUE(r) << httplib::to_string(r.error());
-    EXPECT_EQ(r->status, 202) << r->body;
-    EXPECT_EQ(r->get_header_value("Location"), "/v1/jobs/" + std::to_string(json::parse(r->body)["id"].get<int>()));
-    return json::parse(r->body)["id"].get<std::int64_t>();
-  }
-
-  /// `saasgaps solve` of the same document: the reference every service result must equal.
-  [[nodiscard]] json solve_locally(const std::string& body) const {
-    const fs::path model = dir_ / "reference-model.json", result = dir_ / "reference-result.json";
-    std::ofstream(model) << body;
-    const CommandResult run = run_command({SAASGAPS_BINARY, "solve", model.string(), "-q", "-o", result.string()});
-    EXPECT_LE(run.exit_code, 3) << run.output;
-    std::ifstream in(result);
-    return json::parse(in);
-  }
-
-  static json problem(const httplib::Result& r, int status) {
-    EXPECT_TRUE(r);
-    EXPECT_EQ(r->status, status) << r->body;
-    EXPECT_EQ(r->get_header_value("Content-Type"), "application/problem+json") << r->body;
-    return json::parse(r->body);
-  }
-
   /// Waits until the job has finished iteration k while still running; fails if it stops first.
   static void wait_for_iteration(httplib::Client& client, std::int64_t job, int k) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
@@ -82,8 +42,6 @@ class Service : public ::testing::Test {
     }
     return numbers;
   }
-
-  fs::path dir_;
 };
 
 TEST_F(Service, ReportProblem3GivesTheSameResultAsSolve) {
