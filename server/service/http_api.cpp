@@ -177,7 +177,7 @@ HttpApi::HttpApi(JobStore& store, EventHub& hub, ApiOptions options)
 
 namespace {
 
-/// A strong validator of a representation: FNV-1a of its bytes (and of what else selects it).
+/// A validator of a representation: FNV-1a of its bytes (and of what else selects it).
 std::string entity_tag(std::string_view bytes, std::string_view variant = {}) {
   return "\"" + std::to_string(fnv1a(variant, fnv1a(std::string_view("\0", 1), fnv1a(bytes)))) + "\"";
 }
@@ -191,10 +191,11 @@ std::string result_tag(JobStore& store, std::int64_t id, std::size_t size, std::
                     variant);
 }
 
-/// Sets ETag and answers 304 when If-None-Match names it (RFC 9110 section 13.1.2: weak comparison,
+/// Sets a weak ETag and answers 304 when If-None-Match names it (RFC 9110 section 13.1.2: weak comparison,
 /// "*" matches any).
 bool not_modified(const httplib::Request& req, httplib::Response& res, const std::string& tag) {
-  res.set_header("ETag", tag);
+  // Weak: the same bytes may be sent gzip-compressed or not (a strong tag would have to differ).
+  res.set_header("ETag", "W/" + tag);
   const std::string header = req.get_header_value("If-None-Match");
   if (header.empty()) return false;
   std::size_t start = 0;

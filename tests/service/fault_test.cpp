@@ -211,6 +211,7 @@ TEST_F(Faults, FullDiskRefusesWritesAndStillServesReads) {
   SmallDisk disk(dir_ / "disk", "4m");
   if (!disk.mounted()) GTEST_SKIP() << "cannot mount a small tmpfs to fill (" << disk.error() << "); needs root";
   const fs::path db = dir_ / "disk" / "jobs.db";
+  const fs::path log = dir_ / "server.log";  // off the small disk, or the full disk would eat it
   const std::int64_t job = one_finished_job(db, example_text("report-problem1.json"));
   std::string stored_result;
   const std::string big_model = tilted_block_document(150).dump();
@@ -218,7 +219,7 @@ TEST_F(Faults, FullDiskRefusesWritesAndStillServesReads) {
   {
     // Full at start-up: the shared-memory index cannot be made; the server opens read-only.
     disk.fill();
-    ServerProcess server(db);
+    ServerProcess server(db, {}, log);
     httplib::Client client = server.client();
     stored_result = client.Get("/v1/jobs/" + std::to_string(job) + "/result")->body;
     EXPECT_EQ(json::parse(stored_result)["status"], "converged");
@@ -231,7 +232,7 @@ TEST_F(Faults, FullDiskRefusesWritesAndStillServesReads) {
   }
   disk.empty();
   {
-    ServerProcess server(db);
+    ServerProcess server(db, {}, log);
     httplib::Client client = server.client();
     EXPECT_EQ(client.Get("/readyz")->status, 200);
     disk.fill();
@@ -244,7 +245,7 @@ TEST_F(Faults, FullDiskRefusesWritesAndStillServesReads) {
   }
   {
     // Killed with the disk full: the next start still serves the stored result.
-    ServerProcess server(db);
+    ServerProcess server(db, {}, log);
     httplib::Client client = server.client();
     EXPECT_EQ(client.Get("/v1/jobs/" + std::to_string(job) + "/result")->body, stored_result);
     server.kill_hard();

@@ -45,8 +45,9 @@ pid_t spawn(const std::vector<std::string>& arguments, int& read_end, bool merge
 
 }  // namespace
 
-ServerProcess::ServerProcess(const std::filesystem::path& database, const std::vector<std::string>& arguments)
-    : log_path_(database.string() + ".log") {
+ServerProcess::ServerProcess(const std::filesystem::path& database, const std::vector<std::string>& arguments,
+                             const std::filesystem::path& log_file)
+    : log_path_(log_file.empty() ? std::filesystem::path(database.string() + ".log") : log_file) {
   std::vector<std::string> command = {SAASGAPS_BINARY, "serve", "--port", "0", "--db", database.string()};
   command.insert(command.end(), arguments.begin(), arguments.end());
   const int log_fd = ::open(log_path_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);

@@ -16,8 +16,10 @@ namespace saasgaps::testing {
 
 class ServerProcess {
  public:
-  /// Starts the server on `database` with extra arguments; waits until it listens.
-  ServerProcess(const std::filesystem::path& database, const std::vector<std::string>& arguments = {});
+  /// Starts the server on `database` with extra arguments; waits until it listens. The log goes to
+  /// `log_file`, by default "<database>.log".
+  ServerProcess(const std::filesystem::path& database, const std::vector<std::string>& arguments = {},
+                const std::filesystem::path& log_file = {});
   ~ServerProcess();
   ServerProcess(const ServerProcess&) = delete;
   ServerProcess& operator=(const ServerProcess&) = delete;
