@@ -5,7 +5,6 @@
 #include <sys/socket.h>
 
 #include <fcntl.h>
-#include <malloc.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -132,11 +131,6 @@ int run_serve(const ServeOptions& options) {
   action.sa_flags = SA_RESTART;
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
-
-  // Every thread that allocates gets a glibc arena of its own (up to 8 per core), and each keeps
-  // the free memory of its peak: with a thread per connection, idle memory would grow with the
-  // connections seen. A few arenas bound that; the solver's allocations are large (mmap) anyway.
-  mallopt(M_ARENA_MAX, 4);
 
   // Jobs solved side by side share the cores: each factorization then runs its BLAS on one thread.
   if (options.workers > 1) SparseCholesky::set_max_blas_threads(1);
