@@ -13,8 +13,4 @@ namespace saasgaps::io {
 /// json.dump(indent) with invalid UTF-8 replaced by U+FFFD instead of throwing.
 std::string json_text(const nlohmann::json& value, int indent = -1);
 
-/// True when `text` is well-formed UTF-8 (RFC 3629: no overlong forms, surrogates or code points
-/// above U+10FFFF).
-bool is_utf8(std::string_view text);
-
 }  // namespace saasgaps::io
