@@ -28,6 +28,7 @@ const std::vector<Route>& routes() {
         {std::regex(R"(/v1/jobs/\d+/plots/\w+\.(png|svg))"), "/v1/jobs/{id}/plots/{name}", "GET, HEAD"},
         {std::regex(R"(/v1/jobs/\d+/cancel)"), "/v1/jobs/{id}/cancel", "POST"},
         {std::regex(R"(/v1/jobs/\d+/resume)"), "/v1/jobs/{id}/resume", "POST"},
+        {std::regex(R"(/v1/imports)"), "/v1/imports", "POST"},
         {std::regex(R"(/healthz)"), "/healthz", "GET, HEAD"},
         {std::regex(R"(/readyz)"), "/readyz", "GET, HEAD"},
         {std::regex(R"(/metrics)"), "/metrics", "GET, HEAD"},

@@ -7,7 +7,8 @@
 ///    --host address, and --allow-host names), so a DNS-rebinding page cannot reach it (421);
 /// 3. Origin: a state-changing request (POST, PUT, PATCH, DELETE) whose Origin is not this server is
 ///    refused (403): a page elsewhere cannot submit, cancel or delete jobs;
-/// 4. Content-Type: a POST with a body must say JSON (415): an HTML form cannot send one;
+/// 4. Content-Type: a POST with a body must say JSON (415): an HTML form cannot send one (the
+///    upload route POST /v1/imports takes multipart/form-data, guarded by rule 3);
 /// 5. Idempotency-Key: printable ASCII, 1 to 255 characters (400);
 /// 6. authentication, with a token: `Authorization: Bearer TOKEN` (scheme case-insensitive, RFC 9110
 ///    section 11.1), or `?access_token=TOKEN` on the GET links the dashboard opens without headers
