@@ -393,7 +393,9 @@ TEST_F(Faults, OperationsLogsMetricsProbesAndConditionalGets) {
     if (entry["event"] == "http_request" && entry["request_id"] == "trace-42") {
       access_line = entry["status"] == 202 && entry["method"] == "POST" && entry["path"] == "/v1/jobs" && entry.contains("ms");
     }
-    if (entry["event"] == "job_queued") EXPECT_EQ(entry["request_id"], "trace-42");
+    if (entry["event"] == "job_queued") {
+      EXPECT_EQ(entry["request_id"], "trace-42");
+    }
   }
   EXPECT_TRUE(access_line) << server.log();
   for (const char* e : {"server_started", "job_queued", "job_started", "job_iteration", "job_finished"}) {
