@@ -12,6 +12,7 @@ BUILD_PACKAGES=(
   build-essential cmake pkg-config
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread
   libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev libcli11-dev libcairo2-dev
+  libgmsh-dev libexpat1-dev
 )
 # What the tests need on top.
 TEST_PACKAGES=(googletest libgtest-dev python3 python3-jsonschema python3-pil python3-meshio chromium chromium-driver

@@ -7,9 +7,11 @@
 #include <future>
 #include <sstream>
 
+#include "contact_pairs.hpp"
 #include "dof_map.hpp"
 #include "element_data.hpp"
 #include "errors.hpp"
+#include "exact_contact.hpp"
 #include "gap_closure.hpp"
 #include "material_state.hpp"
 #include "sparse_cholesky.hpp"
@@ -52,6 +54,8 @@ struct Evaluation {
   std::vector<ElementState> solids;
   std::vector<ElementState> gaps;
   std::vector<double> gap_strain;
+  std::vector<double> gap_sigma;              ///< sigma_m per gap: normal stress across it
+  std::vector<std::uint8_t> gap_touching;     ///< exact mode: some pair of the gap is in contact
   MaterialUpdate materials;
   GapVerdict gap_verdict;
   bool converged = false;
@@ -68,6 +72,9 @@ class GapContactAnalysis {
         system_(model, dofs_),
         u_free_(static_cast<std::size_t>(dofs_.size()), 0.0) {
     if (gap_settings_) gaps_.emplace(*gap_settings_);
+    if (gap_settings_ && gap_settings_->method == GapMethod::exact) {
+      exact_.emplace(model, dofs_, system_.pattern(), contact_pairs(model));
+    }
     schedule_changed_ = options.tensile_schedule.has_value() && options.restart_schedule;
   }
 
@@ -86,7 +93,11 @@ class GapContactAnalysis {
 
       // Section II (a)-(d): this iteration's gap moduli; strain invariance: its solid moduli.
       const bool first = state.iteration == 0;
-      GapModuli moduli = gaps_ ? (first ? gaps_->initial() : gaps_->next(state.gaps)) : GapModuli{};
+      // Exact mode: every gap at the floor modulus, contact enforced by the pairs.
+      GapModuli moduli = !gaps_ ? GapModuli{}
+                         : exact_ ? floor_moduli()
+                         : first  ? gaps_->initial()
+                                  : gaps_->next(state.gaps);
       // The state's material buffers take the next iteration's values; the evaluation keeps the old
       // ones to overwrite. No per-element allocation from one iteration to the next.
       if (first) {
@@ -95,7 +106,7 @@ class GapContactAnalysis {
         std::swap(state.materials, eval.materials.next);
       }
 
-      solve_linear_system(state.materials, moduli);
+      solve_linear_system(state.materials, moduli, state.contact);
 
       // The snapshot after this iteration: its moduli, its displacements, the previous strains.
       GapHistory history;
@@ -110,6 +121,7 @@ class GapContactAnalysis {
       store_displacements(state.displacement);
 
       evaluate(state, eval);
+      if (exact_) check_contact_has_solution(state, eval);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
       state.history.push_back(record(state, eval, seconds));
       if (observer != nullptr) observer->on_iteration(state.history.back(), state);
@@ -146,8 +158,18 @@ class GapContactAnalysis {
     return s;
   }
 
-  /// Assembles what changed and solves K u = f into u_free_.
-  void solve_linear_system(const MaterialState& solid, const GapModuli& moduli) {
+  /// Exact mode: the floor modulus (the schedule's last value) in every gap, M and N alike.
+  GapModuli floor_moduli() const {
+    GapModuli m;
+    m.tensile = gaps_->floor_modulus();
+    m.normal.assign(gap_settings_->elements.size(), m.tensile);
+    m.schedule_step = static_cast<int>(gap_settings_->tensile_schedule.size()) - 1;
+    return m;
+  }
+
+  /// Assembles what changed and solves K u = f into u_free_ (exact mode: the contact problem, with
+  /// `contact` its warm start and its result).
+  void solve_linear_system(const MaterialState& solid, const GapModuli& moduli, ContactState& contact) {
     // The symbolic analysis needs only the pattern: the first time, it runs on a second core while
     // this one assembles.
     std::future<std::unique_ptr<SparseCholesky>> analysed;
@@ -167,11 +189,17 @@ class GapContactAnalysis {
     }
     if (analysed.valid()) cholesky_ = analysed.get();
     try {
-      cholesky_->factorize(system_.values());
+      if (exact_) {
+        contact_report_ = exact_->solve(*cholesky_, system_.values(), system_.rhs(), contact, u_free_);
+        load_norm_ = 0.0;
+        for (double f : system_.rhs()) load_norm_ += std::abs(f);
+      } else {
+        cholesky_->factorize(system_.values());
+        cholesky_->solve(system_.rhs(), u_free_);
+      }
     } catch (const NotPositiveDefinite& e) {
       throw singular_model(e);
     }
-    cholesky_->solve(system_.rhs(), u_free_);
     for (double u : u_free_) {
       if (!std::isfinite(u)) throw SolverError("the solution has non-finite displacements");
     }
@@ -226,12 +254,15 @@ class GapContactAnalysis {
       const auto& elements = gap_settings_->elements;
       v.gaps.resize(elements.size());
       v.gap_strain.resize(elements.size());
+      v.gap_sigma.resize(elements.size());
       for (std::size_t g = 0; g < elements.size(); ++g) {
         const ElementData data = gap_element_data(model_, g, gaps_->law(g, state.gaps.used, model_.analysis));
         v.gaps[g] = element_state(data, element_displacements(state.displacement, elements[g].nodes,
                                                               elements[g].node_count));
         v.gap_strain[g] = normal_component(v.gaps[g].strain, elements[g].angle_deg, 1.0);
+        v.gap_sigma[g] = normal_component(v.gaps[g].stress, elements[g].angle_deg, 2.0);
       }
+      if (exact_) measure_contact(state, v);
       if (state.gaps.strain.empty()) {
         state.gaps.strain = v.gap_strain;  // O(gaps), not O(elements)
       } else {
@@ -246,10 +277,88 @@ class GapContactAnalysis {
           }
         }
       }
-      v.gap_verdict = gaps_->test(state.gaps);
+      v.gap_verdict = exact_ ? exact_verdict(v) : gaps_->test(state.gaps);
       converged = converged && v.gap_verdict.all_converged();
     }
     v.converged = converged;
+  }
+
+  /// Exact mode: closures from the pairs' gap functions, sigma_m = the floor spring's stress minus the
+  /// contact pressure. A pair's pressure is its force over the face area it stands for, and a gap's
+  /// the area-weighted mean of its pairs': a uniform pressure p gives every pair lambda_i = p area_i,
+  /// hence exactly p on every gap.
+  void measure_contact(const RestartState& state, Evaluation& v) const {
+    const ContactPairs& cp = exact_->pairs();
+    const bool solved = state.contact.force.size() == cp.pairs.size();
+    v.gap_touching.assign(v.gap_strain.size(), 0);
+    for (std::size_t g = 0; g < v.gap_strain.size(); ++g) {
+      double area = 0.0, force = 0.0, closed = 0.0, initial = 0.0;
+      for (int k = 0; k < cp.share_count[g]; ++k) {
+        const PairShare& share = cp.of_gap[g][k];
+        const ContactPair& pair = cp.pairs[share.pair];
+        area += share.area;
+        initial += share.area * pair.g0;
+        closed += share.area * (pair.g0 - exact_->gap(share.pair, state.displacement));
+        if (!solved) continue;
+        force += share.area * state.contact.force[share.pair] / pair.area;
+        v.gap_touching[g] = v.gap_touching[g] || state.contact.active[share.pair];
+      }
+      v.gap_strain[g] = -closed / initial;
+      v.gap_sigma[g] -= force / area;
+    }
+  }
+
+  GapVerdict exact_verdict(const Evaluation& v) const {
+    GapVerdict verdict;
+    const std::size_t n = v.gap_strain.size();
+    verdict.failure.assign(n, GapFailure::none);
+    verdict.converged.assign(n, true);
+    double closed_sum = 0.0;
+    for (std::size_t g = 0; g < n; ++g) {
+      const double closure = -100.0 * v.gap_strain[g];
+      verdict.max_closure = g == 0 ? closure : std::max(verdict.max_closure, closure);
+      if (v.gap_touching[g]) {
+        ++verdict.closed;
+        closed_sum += closure;
+      }
+    }
+    verdict.average_closure = verdict.closed > 0 ? closed_sum / verdict.closed : 0.0;
+    return verdict;
+  }
+
+  /// The floor springs of open gaps are there to restrain bodies held only by gaps, not to carry
+  /// load. When they carry a real share of it, a body is being pushed away from every support and
+  /// the contact problem has no solution (or the floor modulus is not negligible).
+  void check_contact_has_solution(const RestartState& state, const Evaluation& v) const {
+    const ContactPairs& cp = exact_->pairs();
+    constexpr double largest_floor_share = 0.01;
+    double carried = load_norm_;
+    for (double lambda : state.contact.force) carried += std::max(0.0, lambda);
+    std::vector<std::pair<double, std::size_t>> open;  // floor force, gap
+    double open_force = 0.0;
+    for (std::size_t g = 0; g < v.gap_sigma.size(); ++g) {
+      if (v.gap_touching[g]) continue;
+      double area = 0.0;
+      for (int k = 0; k < cp.share_count[g]; ++k) area += cp.of_gap[g][k].area;
+      const double force = std::abs(v.gap_sigma[g]) * area;
+      open_force += force;
+      open.emplace_back(force, g);
+    }
+    if (!(open_force > largest_floor_share * carried)) return;
+    std::sort(open.begin(), open.end(), std::greater<>());
+    std::ostringstream text;
+    text << "the contact problem has no solution: " << 100.0 * open_force / carried
+         << " % of the load is carried by the floor stiffness of gaps that do not touch (";
+    const std::size_t shown = std::min<std::size_t>(open.size(), 6);
+    for (std::size_t k = 0; k < shown; ++k) {
+      const GapElement& gap = gap_settings_->elements[open[k].second];
+      text << (k ? "; " : "") << "gap " << gap.id << " at nodes";
+      for (int a = 0; a < gap.node_count; ++a) text << ' ' << model_.nodes[gap.nodes[a]].id;
+    }
+    if (open.size() > shown) text << "; and " << open.size() - shown << " more";
+    text << "): a body is pushed away from every support, or the floor modulus " << gaps_->floor_modulus()
+         << " (the last tensile_schedule value) is not negligible";
+    throw SolverError(text.str());
   }
 
   IterationRecord record(const RestartState& state, const Evaluation& v, double seconds) const {
@@ -269,20 +378,26 @@ class GapContactAnalysis {
       row.max_closure = v.gap_verdict.max_closure;
       row.gap_closures.reserve(v.gap_strain.size());
       for (double eps : v.gap_strain) row.gap_closures.push_back(-100.0 * eps);
+      if (exact_) {
+        row.contact_pairs = contact_report_.pairs_in_contact;
+        row.complementarity = contact_report_.complementarity;
+        row.active_set_iterations = contact_report_.active_set_iterations;
+      }
     }
     for (int e : model_.output.watch_elements) {
       const Vec4& s = v.solids[e].stress;
       row.watch_elements.push_back({model_.elements[e].id, s[rr], s[zz], s[rz], s[th], von_mises(s)});
     }
     for (int g : model_.output.watch_gaps) {
-      const double angle = gap_settings_->elements[g].angle_deg;
       row.watch_gaps.push_back({gap_settings_->elements[g].id, state.gaps.used.normal[g],
-                                -100.0 * v.gap_strain[g], normal_component(v.gaps[g].stress, angle, 2.0)});
+                                -100.0 * v.gap_strain[g], v.gap_sigma[g]});
     }
     return row;
   }
 
-  GapState gap_state(double eps) const {
+  GapState gap_state(const Evaluation& v, std::size_t g) const {
+    if (exact_) return v.gap_touching[g] ? GapState::closed : GapState::open;
+    const double eps = v.gap_strain[g];
     const double tolerance = gap_settings_->closure_tolerance;
     if (eps >= 0.0) return GapState::open;
     if (eps <= -1.0 - tolerance) return GapState::overclosed;
@@ -311,7 +426,7 @@ class GapContactAnalysis {
         const GapElement& gap = gap_settings_->elements[g];
         const double eps = v.gap_strain[g];
         s.gaps.push_back({gap.id, eps, -100.0 * eps, state.gaps.used.normal[g],
-                          normal_component(v.gaps[g].stress, gap.angle_deg, 2.0), gap_state(eps),
+                          v.gap_sigma[g], gap_state(v, g),
                           v.gap_verdict.converged[g], v.gap_verdict.failure[g]});
       }
     }
@@ -322,7 +437,15 @@ class GapContactAnalysis {
   std::string message(const RestartState& state, const Evaluation& v, RunStatus status) const {
     std::ostringstream text;
     switch (status) {
-      case RunStatus::converged: text << "converged in " << state.iteration << " iterations"; return text.str();
+      case RunStatus::converged:
+        text << "converged in " << state.iteration << " iterations";
+        if (exact_) {
+          text << " (exact contact: " << state.history.back().contact_pairs << " of " << exact_->pairs().pairs.size()
+               << " node pairs in contact, complementarity residual " << state.history.back().complementarity << ")";
+        } else if (gaps_) {
+          text << loaded_open_gaps(state, v);
+        }
+        return text.str();
       case RunStatus::stopped: text << "stopped on request after iteration " << state.iteration; break;
       case RunStatus::not_converged:
         text << "not converged after " << state.iteration << " iterations (max_iterations " << max_iterations_ << ")";
@@ -356,6 +479,34 @@ class GapContactAnalysis {
     return text.str();
   }
 
+  /// The classic method's blind spot: gaps stiffened above the floor modulus that stopped short of
+  /// contact yet carry a real share of the largest gap pressure. Their pressures are where the
+  /// iteration stopped, not the contact answer. (A gap at the floor modulus carries only the
+  /// negligible spring the exact mode keeps too.) Empty when there are none.
+  std::string loaded_open_gaps(const RestartState& state, const Evaluation& v) const {
+    constexpr double share = 0.01;
+    double largest = 0.0;
+    for (double sigma : v.gap_sigma) largest = std::max(largest, -sigma);
+    if (!(largest > 0.0)) return {};
+    const double touching = 1.0 - gap_settings_->closure_tolerance;
+    std::size_t count = 0, worst = 0;
+    for (std::size_t g = 0; g < v.gap_sigma.size(); ++g) {
+      const double eps = v.gap_strain[g];
+      const bool stiffened = state.gaps.used.normal[g] > gaps_->floor_modulus();
+      if (!(stiffened && eps < 0.0 && -eps < touching && -v.gap_sigma[g] > share * largest)) continue;
+      if (count == 0 || v.gap_sigma[g] < v.gap_sigma[worst]) worst = g;
+      ++count;
+    }
+    if (count == 0) return {};
+    std::ostringstream text;
+    text << "; warning: " << count << " gaps do not touch (closure below " << 100.0 * touching
+         << " %) yet carry more than " << 100.0 * share << " % of the largest gap pressure (gap "
+         << gap_settings_->elements[worst].id << ": closure " << -100.0 * v.gap_strain[worst] << " %, sigma_m "
+         << v.gap_sigma[worst] << "); the classic stopping rule accepts them, so their pressures and the stresses "
+         << "near them are approximate: \"method\": \"exact\" in gaps solves the contact exactly";
+    return text.str();
+  }
+
   const Model& model_;
   int max_iterations_;
   std::optional<GapSettings> gap_settings_;
@@ -364,6 +515,9 @@ class GapContactAnalysis {
   DofMap dofs_;
   SolidMaterials materials_;
   StiffnessSystem system_;
+  std::optional<ExactContact> exact_;          // exact mode only
+  ContactReport contact_report_;              // of the last contact solve
+  double load_norm_ = 0.0;                    // |f|_1 of the last contact solve
   std::unique_ptr<SparseCholesky> cholesky_;  // symbolic analysis once, at the first solve
   Evaluation eval_;                           // per-element buffers, reused every iteration
   MaterialState assembled_materials_;

@@ -25,7 +25,8 @@ bool IterationRecord::same_numbers(const IterationRecord& o) const {
          nonconverged_gaps == o.nonconverged_gaps && average_closure == o.average_closure &&
          max_closure == o.max_closure && yielded_elements == o.yielded_elements &&
          nonconverged_plastic == o.nonconverged_plastic && bimodulus_changes == o.bimodulus_changes &&
-         extrapolated == o.extrapolated && same_rows(watch_elements, o.watch_elements) &&
+         extrapolated == o.extrapolated && contact_pairs == o.contact_pairs &&
+         complementarity == o.complementarity && active_set_iterations == o.active_set_iterations && same_rows(watch_elements, o.watch_elements) &&
          same_rows(watch_gaps, o.watch_gaps) && gap_closures == o.gap_closures;
 }
 

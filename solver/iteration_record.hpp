@@ -32,6 +32,11 @@ struct IterationRecord {
   int nonconverged_plastic = 0;  ///< N-L/CONV? = NO
   int bimodulus_changes = 0;   ///< elements that switched tension/compression properties
   bool extrapolated = false;   ///< gap moduli of this iteration used the extrapolation of Fig. 19
+  /// Exact mode only (0 in classic): node pairs in contact, the largest complementarity residual
+  /// |min(lambda_i / k_i, g_i)| over the model's length scale, and the active sets tried.
+  int contact_pairs = 0;
+  double complementarity = 0.0;
+  int active_set_iterations = 0;
   std::vector<WatchedElement> watch_elements;
   std::vector<WatchedGap> watch_gaps;
   std::vector<double> gap_closures;  ///< closure (%) of every gap, in model order: the closure plot

@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "exact_contact.hpp"
 #include "gap_closure.hpp"
 #include "iteration_record.hpp"
 #include "material_state.hpp"
@@ -19,6 +20,7 @@ struct RestartState {
   MaterialState materials;         ///< secant ratios and bimodulus choices iteration K used
   GapHistory gaps;                 ///< gap moduli and strains of iterations K and K-1
   std::vector<double> displacement;  ///< (u_r, u_z) per node of iteration K, prescribed ones included
+  ContactState contact;            ///< exact mode: pair forces and active set of iteration K (empty in classic)
   std::vector<IterationRecord> history;  ///< rows 1..K
 
   /// Model dimensions the state belongs to, checked on resume.

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "cholmod_memory.hpp"
+#include "cholmod_solve.hpp"
 
 namespace saasgaps {
 
@@ -27,9 +28,7 @@ struct SparseCholesky::Impl {
   cholmod_common common{};
   cholmod_sparse A{};  // a view of the caller's arrays: never freed by CHOLMOD
   cholmod_factor* L = nullptr;
-  cholmod_dense* X = nullptr;  // solve2 workspaces, allocated on first use and kept
-  cholmod_dense* Y = nullptr;
-  cholmod_dense* E = nullptr;
+  CholmodSolveWorkspace solve_work;  // allocated on first use and kept
   std::vector<Index> diagonal;  // position of A_jj in the value array
   std::vector<double> reference;  // |A_jj| of the last factorization
   const char* ordering_name = "METIS";
@@ -161,9 +160,7 @@ struct SparseCholesky::Impl {
 
   ~Impl() {
     cholmod_l_free_factor(&L, &common);
-    cholmod_l_free_dense(&X, &common);
-    cholmod_l_free_dense(&Y, &common);
-    cholmod_l_free_dense(&E, &common);
+    solve_work.release(common);
     cholmod_l_finish(&common);
   }
 
@@ -264,27 +261,13 @@ void SparseCholesky::factorize(std::span<const double> values) {
 }
 
 void SparseCholesky::solve(std::span<const double> b, std::span<double> x) {
-  Impl& m = *impl_;
-  const auto n = static_cast<size_t>(m.pattern.n);
-  assert(b.size() == n && x.size() == n);
-  cholmod_dense B{};
-  B.nrow = n;
-  B.ncol = 1;
-  B.nzmax = n;
-  B.d = n;
-  B.x = const_cast<double*>(b.data());
-  B.xtype = CHOLMOD_REAL;
-  B.dtype = CHOLMOD_DOUBLE;
-  if (!cholmod_l_solve2(CHOLMOD_A, m.L, &B, nullptr, &m.X, nullptr, &m.Y, &m.E, &m.common)) {
-    throw std::runtime_error("CHOLMOD solve failed (status " + std::to_string(m.common.status) + ")");
-  }
-  const auto* result = static_cast<const double*>(m.X->x);
-  std::copy(result, result + n, x.begin());
+  cholmod_solve_into(impl_->L, b, x, impl_->solve_work, impl_->common);
 }
 
 Index SparseCholesky::size() const { return impl_->pattern.n; }
 double SparseCholesky::factor_nonzeros() const { return impl_->factor_entries; }
 double SparseCholesky::factor_flops() const { return impl_->flops; }
 const char* SparseCholesky::ordering() const { return impl_->ordering_name; }
+const cholmod_factor_struct* SparseCholesky::factor() const { return impl_->L; }
 
 }  // namespace saasgaps

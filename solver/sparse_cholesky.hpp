@@ -11,6 +11,8 @@
 
 #include "csc_pattern.hpp"
 
+struct cholmod_factor_struct;
+
 namespace saasgaps {
 
 /// The matrix is not positive definite, or so close to singular that the answer would be noise.
@@ -51,6 +53,9 @@ class SparseCholesky {
   [[nodiscard]] double factor_nonzeros() const;  ///< nnz(L)
   [[nodiscard]] double factor_flops() const;     ///< floating-point operations of one factorization
   [[nodiscard]] const char* ordering() const;    ///< the fill-reducing ordering in use
+
+  /// The last factorization, read-only, for UpdatableFactor (updatable_factor.hpp) to copy.
+  [[nodiscard]] const cholmod_factor_struct* factor() const;
 
   /// Most BLAS threads a factorization may use (default: the cores). Factorizations under about
   /// 10 Gflop run on one: below that the threads cost more than they give (measured on 2 cores).

@@ -1,5 +1,5 @@
 /// saasgaps: thermal stress analysis of plane and axisymmetric bodies in contact across gaps.
-/// Subcommands: solve, validate, serve, worker, plot, export-vtu. Exit codes (service.md): 0 converged or valid,
+/// Subcommands: solve, validate, import, serve, worker, plot, export-vtu. Exit codes (service.md): 0 converged or valid,
 /// 3 not converged, 2 bad model, 1 any other failure. Exceptions become exit codes here only.
 
 #include <CLI/CLI.hpp>
@@ -8,6 +8,7 @@
 
 #include "errors.hpp"
 #include "cli/export_vtu_command.hpp"
+#include "cli/import_command.hpp"
 #include "cli/plot_command.hpp"
 #include "cli/serve_command.hpp"
 #include "cli/solve_command.hpp"
@@ -17,8 +18,8 @@
 
 namespace {
 
-int report_model_error(const saasgaps::ModelError& e) {
-  std::cerr << "invalid model: " << e.issues().size() << (e.issues().size() == 1 ? " error\n" : " errors\n");
+int report_model_error(const saasgaps::ModelError& e, const char* what) {
+  std::cerr << "invalid " << what << ": " << e.issues().size() << (e.issues().size() == 1 ? " error\n" : " errors\n");
   for (const saasgaps::InputIssue& issue : e.issues()) {
     std::cerr << (issue.pointer.empty() ? "(document)" : issue.pointer) << ": " << issue.detail << '\n';
   }
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
 
   CLI::App app{"SAASGAPS: thermal stress analysis of plane and axisymmetric bodies in contact across gaps"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", "saasgaps " SAASGAPS_VERSION);
 
   saasgaps::cli::SolveOptions solve;
   CLI::App* solve_cmd = app.add_subcommand("solve", "Solve a model; one progress line per iteration on stderr");
@@ -58,6 +60,12 @@ int main(int argc, char** argv) {
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check a model and print every error with its JSON Pointer");
   validate_cmd->add_option("model", validate_path, "Model document (JSON)")->required();
 
+  saasgaps::cli::ImportOptions import;
+  CLI::App* import_cmd = app.add_subcommand(
+      "import", "Build a model from an assembly: a Gmsh mesh and its physical groups (docs/import.md)");
+  import_cmd->add_option("assembly", import.assembly_path, "Assembly document (JSON)")->required();
+  import_cmd->add_option("-o,--output", import.model_path, "Model document to write (default: stdout)");
+
   saasgaps::cli::ServeOptions serve;
   CLI::App* serve_cmd = app.add_subcommand("serve", "Run the HTTP job service on an SQLite database file");
   serve_cmd->add_option("--host", serve.host, "Address to listen on (beyond loopback only with --token-file)")
@@ -78,6 +86,17 @@ int main(int argc, char** argv) {
                         "Server deaths a running job survives before it fails instead of resuming")
       ->check(CLI::Range(0, 100))
       ->capture_default_str();
+  serve_cmd->add_option("--allow-host", serve.allowed_hosts,
+                        "A Host name to answer besides loopback names and --host (repeatable; DNS-rebinding guard)");
+  serve_cmd->add_option("--header-timeout", serve.header_timeout, "Seconds a client has to send a request's head")
+      ->check(CLI::Range(0.1, 3600.0))
+      ->capture_default_str();
+  serve_cmd->add_option("--keep-alive", serve.keep_alive, "Seconds an idle connection stays open")
+      ->check(CLI::Range(0.1, 3600.0))
+      ->capture_default_str();
+  serve_cmd->add_option("--keep-finished", serve.keep_finished_days,
+                        "Delete finished jobs this many days after they finished (checked at start and hourly)")
+      ->check(CLI::Range(0.0, 36500.0));
 
   serve_cmd->add_option("--executor", serve.executor, "Where jobs are solved: local (this process) or slurm (sbatch of workers)")
       ->check(CLI::IsMember({"local", "slurm"}))
@@ -140,12 +159,13 @@ int main(int argc, char** argv) {
   try {
     if (solve_cmd->parsed()) return saasgaps::cli::run_solve(solve);
     if (validate_cmd->parsed()) return saasgaps::cli::run_validate(validate_path);
+    if (import_cmd->parsed()) return saasgaps::cli::run_import(import);
     if (serve_cmd->parsed()) return saasgaps::cli::run_serve(serve);
     if (plot_cmd->parsed()) return saasgaps::cli::run_plot(plot);
     if (worker_cmd->parsed()) return saasgaps::cli::run_worker_command(worker);
     if (vtu_cmd->parsed()) return saasgaps::cli::run_export_vtu(vtu);
   } catch (const saasgaps::ModelError& e) {
-    return report_model_error(e);
+    return report_model_error(e, import_cmd->parsed() ? "assembly" : "model");
   } catch (const saasgaps::SingularModelError& e) {
     // A mechanism is a defect of the model (model-format.md: "the model is restrained").
     std::cerr << "invalid model: " << e.what() << '\n';

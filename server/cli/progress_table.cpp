@@ -36,6 +36,9 @@ void ProgressTable::print_header(const IterationRecord& row) {
     const std::string id = "gap " + std::to_string(g.id);
     out_ << column(id + " E_M", wide) << column(id + " clos %", wide) << column(id + " s_M", wide);
   }
+  // Exact contact mode: pairs in contact, the complementarity residual and the active sets tried.
+  exact_ = row.active_set_iterations > 0;
+  if (exact_) out_ << column("pairs", narrow) << column("complement.", wide) << column("sets", 6);
   out_ << column("seconds", narrow) << '\n';
   header_done_ = true;
 }
@@ -56,6 +59,10 @@ void ProgressTable::print(const IterationRecord& row) {
   for (const WatchedGap& g : row.watch_gaps) {
     out_ << column(number("%.5g", g.modulus), wide) << column(number("%.2f", g.closure), wide)
          << column(number("%.1f", g.sigma_m), wide);
+  }
+  if (exact_) {
+    out_ << column(std::to_string(row.contact_pairs), narrow) << column(number("%.1e", row.complementarity), wide)
+         << column(std::to_string(row.active_set_iterations), 6);
   }
   out_ << column(number("%.3f", row.seconds), narrow) << '\n';
   out_.flush();

@@ -19,6 +19,7 @@ class ProgressTable {
   void print_header(const IterationRecord& row);
   std::ostream& out_;
   bool header_done_ = false;
+  bool exact_ = false;  // the rows carry exact-contact columns
 };
 
 }  // namespace saasgaps::cli

@@ -10,15 +10,21 @@
 #include <cerrno>
 #include <filesystem>
 #include <optional>
+#include <chrono>
+#include <condition_variable>
 #include <csignal>
+#include <ctime>
 #include <iostream>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 
 #include "cli/file_io.hpp"
 #include "sparse_cholesky.hpp"
 #include "service/event_hub.hpp"
+#include "service/guarded_server.hpp"
 #include "service/http_api.hpp"
+#include "service/log.hpp"
 #include "service/job_runner.hpp"
 #include "service/job_store.hpp"
 #include "service/slurm_executor.hpp"
@@ -69,6 +75,65 @@ service::SlurmOptions slurm_options(const ServeOptions& options, int port) {
   return slurm;
 }
 
+/// utc_now()'s format for a time `days` ago.
+std::string days_ago(double days) {
+  return service::utc_text(std::chrono::system_clock::now() - std::chrono::duration_cast<std::chrono::system_clock::duration>(
+                                                                  std::chrono::duration<double>(days * 86400.0)));
+}
+
+/// --keep-finished: deletes finished jobs older than the retention at start-up and then hourly.
+class Retention {
+ public:
+  Retention(service::JobStore& store, std::optional<double> days) : store_(store), days_(days) {
+    if (!days_) return;
+    sweep();
+    thread_ = std::thread([this] {
+      std::unique_lock lock(mutex_);
+      while (!stop_.wait_for(lock, std::chrono::hours(1), [this] { return stopping_; })) {
+        lock.unlock();
+        sweep();
+        lock.lock();
+      }
+    });
+  }
+  ~Retention() {
+    {
+      std::lock_guard lock(mutex_);
+      stopping_ = true;
+    }
+    stop_.notify_all();
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  void sweep() {
+    try {
+      const int removed = store_.remove_finished_before(days_ago(*days_));
+      if (removed > 0) service::log_info("retention", {{"deleted_jobs", removed}, {"keep_finished_days", *days_}});
+    } catch (const std::exception& e) {
+      service::log_error("store_error", {{"operation", "retention"}, {"error", e.what()}});
+    }
+  }
+
+  service::JobStore& store_;
+  std::optional<double> days_;
+  std::mutex mutex_;
+  std::condition_variable stop_;
+  bool stopping_ = false;
+  std::thread thread_;
+};
+
+/// The authority (host[:port]) of an http://authority/path URL.
+std::string url_authority(const std::string& url) {
+  const auto scheme = url.find("://");
+  const std::string rest = scheme == std::string::npos ? url : url.substr(scheme + 3);
+  return rest.substr(0, rest.find('/'));
+}
+
+std::chrono::milliseconds milliseconds(double seconds) {
+  return std::chrono::milliseconds(static_cast<std::int64_t>(seconds * 1000.0));
+}
+
 }  // namespace
 
 int run_serve(const ServeOptions& options) {
@@ -102,13 +167,20 @@ int run_serve(const ServeOptions& options) {
   const int recovered = store.recover_interrupted(slurm);
   service::EventHub hub;
 
-  httplib::Server server;
+  Retention retention(store, options.keep_finished_days);
+
+  // Each connection gets a thread of its own (event streams and slow clients included), with
+  // deadlines that drop clients too slow to send a request.
+  service::ConnectionLimits limits;
+  limits.head_deadline = milliseconds(options.header_timeout);
+  limits.keep_alive_timeout = milliseconds(options.keep_alive);
+  service::GuardedServer server(limits);
   server.set_socket_options(exclusive_port);
   server.set_payload_max_length(options.max_body);
-  // Event streams each hold a thread; the pool leaves room for the other routes beyond them.
-  const auto threads = static_cast<std::size_t>(options.max_streams + 8);
-  server.new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
-  service::HttpApi api(store, hub, {token, options.max_streams, options.workers});
+  // Workers send the Host of --slurm-worker-url: the Host check (without a token) must accept it.
+  std::vector<std::string> allowed_hosts = options.allowed_hosts;
+  if (slurm && !options.slurm_worker_url.empty()) allowed_hosts.push_back(url_authority(options.slurm_worker_url));
+  service::HttpApi api(store, hub, {token, options.max_streams, options.workers, options.host, allowed_hosts});
   api.install(server);
 
   const int port = options.port == 0 ? server.bind_to_any_port(options.host)
@@ -140,12 +212,17 @@ int run_serve(const ServeOptions& options) {
   }
   if (recovered > 0) std::cout << ", " << recovered << " interrupted jobs to resume";
   std::cout << ")" << std::endl;
+  service::log_info("server_started", {{"version", SAASGAPS_VERSION}, {"host", options.host}, {"port", port},
+                                       {"database", options.database}, {"executor", options.executor}, {"workers", options.workers},
+                                       {"recovered_jobs", recovered}, {"authentication", token.has_value()}});
+  if (!store.writable()) service::log_error("database_read_only", {{"reason", store.read_only_reason()}});
 
   const bool clean = server.listen_after_bind();
   // Wake the signal thread if listening ended for another reason.
   request_shutdown(0);
   signal_waiter.join();
   std::cout << "saasgaps serve: stopping; running jobs halt at their next iteration boundary" << std::endl;
+  service::log_info("server_stopping", {{"clean", clean}});
   return clean ? 0 : 1;
 }
 

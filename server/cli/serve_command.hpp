@@ -2,7 +2,9 @@
 /// `saasgaps serve`: the HTTP job service on one SQLite database file.
 
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace saasgaps::cli {
 
@@ -26,6 +28,10 @@ struct ServeOptions {
   std::string slurm_log_dir;
   double slurm_poll = 2.0;          ///< seconds between squeue polls
   double slurm_cancel_grace = 30.0; ///< seconds a cancelled running worker has to stop
+  std::vector<std::string> allowed_hosts;  ///< Host names accepted besides loopback and --host
+  double header_timeout = 10.0;            ///< seconds to receive a request's head
+  double keep_alive = 5.0;                 ///< seconds an idle connection stays open
+  std::optional<double> keep_finished_days;  ///< retention of finished jobs
 };
 
 /// Runs until SIGINT or SIGTERM; returns the exit code. Throws when it cannot start.

@@ -5,6 +5,7 @@
 #include "analysis.hpp"
 #include "errors.hpp"
 #include "cli/file_io.hpp"
+#include "io/json_text.hpp"
 #include "io/model_reader.hpp"
 #include "cli/progress_table.hpp"
 #include "io/result_writer.hpp"
@@ -24,7 +25,7 @@ class CommandLineObserver final : public IterationObserver {
   void on_iteration(const IterationRecord& row, const RestartState& state) override {
     if (!options_.quiet) table_.print(row);
     if (!options_.state_out.empty()) {
-      write_file_atomically(options_.state_out, io::state_to_json(state, digest_).dump() + "\n");
+      write_file_atomically(options_.state_out, io::json_text(io::state_to_json(state, digest_)) + "\n");
     }
     last_iteration_ = state.iteration;
   }

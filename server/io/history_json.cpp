@@ -5,12 +5,17 @@ namespace saasgaps::io {
 using nlohmann::json;
 
 void write_history_row(JsonWriter& out, const IterationRecord& r) {
-  out.begin_object()
-      .field("attempt", r.attempt)
+  // Exact contact mode only (classic rows have no pairs): active sets, complementarity, pairs in
+  // contact, each in its alphabetical place like every member.
+  const bool exact = r.active_set_iterations > 0;
+  out.begin_object();
+  if (exact) out.field("active_set_iterations", r.active_set_iterations);
+  out.field("attempt", r.attempt)
       .field("average_closure", r.average_closure)
       .field("bimodulus_changes", r.bimodulus_changes)
-      .field("closed_gaps", r.closed_gaps)
-      .field("extrapolated", r.extrapolated)
+      .field("closed_gaps", r.closed_gaps);
+  if (exact) out.field("complementarity", r.complementarity).field("contact_pairs", r.contact_pairs);
+  out.field("extrapolated", r.extrapolated)
       .field("gap_closures", r.gap_closures)
       .field("iteration", r.iteration)
       .field("max_closure", r.max_closure)
@@ -64,7 +69,7 @@ json history_row_json(const IterationRecord& r) {
   for (const WatchedGap& g : r.watch_gaps) {
     gaps.push_back({{"id", g.id}, {"modulus", g.modulus}, {"closure", g.closure}, {"sigma_m", g.sigma_m}});
   }
-  return {{"iteration", r.iteration},
+  json row = {{"iteration", r.iteration},
           {"tensile_modulus", r.tensile_modulus},
           {"closed_gaps", r.closed_gaps},
           {"nonconverged_gaps", r.nonconverged_gaps},
@@ -78,6 +83,14 @@ json history_row_json(const IterationRecord& r) {
           {"gap_closures", r.gap_closures},
           {"seconds", r.seconds},
           {"attempt", r.attempt}};
+  // Exact contact mode (classic rows have no pairs): pairs in contact, the largest complementarity
+  // residual, the active sets tried.
+  if (r.active_set_iterations > 0) {
+    row["contact_pairs"] = r.contact_pairs;
+    row["complementarity"] = r.complementarity;
+    row["active_set_iterations"] = r.active_set_iterations;
+  }
+  return row;
 }
 
 IterationRecord history_row_from_json(const json& j) {
@@ -95,6 +108,9 @@ IterationRecord history_row_from_json(const json& j) {
   r.seconds = j.at("seconds").get<double>();
   r.gap_closures = j.value("gap_closures", std::vector<double>{});
   r.attempt = j.value("attempt", 1);
+  r.contact_pairs = j.value("contact_pairs", 0);
+  r.complementarity = j.value("complementarity", 0.0);
+  r.active_set_iterations = j.value("active_set_iterations", 0);
   for (const json& e : j.at("watch").at("elements")) {
     r.watch_elements.push_back({e.at("id").get<int>(), e.at("sigma_r").get<double>(), e.at("sigma_z").get<double>(),
                                 e.at("tau_rz").get<double>(), e.at("sigma_theta").get<double>(),

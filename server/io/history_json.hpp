@@ -13,7 +13,8 @@ namespace saasgaps::io {
 
 /// The row, members in alphabetical order: attempt, average_closure, bimodulus_changes,
 /// closed_gaps, extrapolated, gap_closures, iteration, max_closure, nonconverged_gaps,
-/// nonconverged_plastic, seconds, tensile_modulus, watch {elements, gaps}, yielded_elements.
+/// nonconverged_plastic, seconds, tensile_modulus, watch {elements, gaps}, yielded_elements; in
+/// exact contact mode also active_set_iterations, complementarity and contact_pairs.
 void write_history_row(JsonWriter& out, const IterationRecord& row);
 
 /// The row as compact text (what the service stores).

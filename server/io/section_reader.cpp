@@ -1,5 +1,6 @@
 #include "io/section_reader.hpp"
 
+#include "io/contact_check.hpp"
 #include "io/value_quote.hpp"
 
 namespace saasgaps::io {
@@ -148,7 +149,13 @@ void SectionReader::end_items(Section s, std::size_t count) {
 }
 
 Model SectionReader::finish() {
-  if (issues_.empty()) return std::move(model_);
+  if (issues_.empty()) {
+    // Exact contact mode: the gap elements must give node pairs (checked on a model otherwise valid).
+    if (std::vector<InputIssue> pairing = contact_pairing_input_issues(model_); !pairing.empty()) {
+      throw ModelError(std::move(pairing));
+    }
+    return std::move(model_);
+  }
   // In the order of the sections (repeated keys first, then the document's own keys), each
   // section's issues in the order found, whatever order the sections came in.
   std::stable_sort(issues_.begin(), issues_.end(),

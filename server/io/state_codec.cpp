@@ -66,7 +66,7 @@ json state_to_json(const RestartState& s, const std::string& digest) {
   json history = json::array();
   for (const IterationRecord& row : s.history) history.push_back(history_row_json(row));
   const GapHistory& g = s.gaps;
-  return {{"format", format_name},
+  json document = {{"format", format_name},
           {"version", s.version},
           {"model_digest", digest},
           {"iteration", s.iteration},
@@ -86,6 +86,12 @@ json state_to_json(const RestartState& s, const std::string& digest) {
             {"previous_tensile", g.previous_tensile}}},
           {"displacement", s.displacement},
           {"history", history}};
+  // Exact mode only: the pairs' forces and active set (the next contact solve's warm start). A classic
+  // state is written exactly as before, and states without it still read.
+  if (!s.contact.empty()) {
+    document["contact"] = {{"force", s.contact.force}, {"active", s.contact.active}};
+  }
+  return document;
 }
 
 RestartState state_from_json(const json& j, const std::string& expected_digest) {
@@ -123,6 +129,13 @@ RestartState state_from_json(const json& j, const std::string& expected_digest) 
     s.gaps.previous_tensile = g.at("previous_tensile").get<double>();
     s.displacement = j.at("displacement").get<std::vector<double>>();
     for (const json& row : j.at("history")) s.history.push_back(history_row_from_json(row));
+    if (const auto contact = j.find("contact"); contact != j.end()) {
+      s.contact.force = contact->at("force").get<std::vector<double>>();
+      s.contact.active = contact->at("active").get<std::vector<std::uint8_t>>();
+      if (s.contact.force.size() != s.contact.active.size()) {
+        throw SolverError("malformed restart state: contact force and active set differ in length");
+      }
+    }
     return s;
   } catch (const json::exception& e) {
     throw SolverError(std::string("malformed restart state: ") + e.what());

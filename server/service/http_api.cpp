@@ -3,15 +3,24 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <chrono>
+#include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "errors.hpp"
 #include "io/json_pointer.hpp"
+#include "io/json_text.hpp"
 #include "io/model_reader.hpp"
+#include "io/restraint_issues.hpp"
 #include "io/vtu_writer.hpp"
 #include "plot/plot_request.hpp"
+#include "service/assembly_upload.hpp"
+#include "service/guarded_server.hpp"
+#include "service/log.hpp"
+#include "service/metrics.hpp"
 #include "service/problem.hpp"
+#include "service/request_id.hpp"
 #include "service/worker_api.hpp"
 #include "web/web_assets.hpp"
 
@@ -21,15 +30,17 @@ using nlohmann::json;
 
 namespace {
 
-/// FNV-1a of a request body: tells an idempotent replay from a different request under the same key.
-std::string body_digest(std::string_view body) {
-  std::uint64_t h = 1469598103934665603ULL;
-  for (unsigned char c : body) {
+/// FNV-1a, continued from `h`.
+std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h = 1469598103934665603ULL) {
+  for (unsigned char c : bytes) {
     h ^= c;
     h *= 1099511628211ULL;
   }
-  return std::to_string(h);
+  return h;
 }
+
+/// FNV-1a of a request body: tells an idempotent replay from a different request under the same key.
+std::string body_digest(std::string_view body) { return std::to_string(fnv1a(body)); }
 
 std::int64_t job_id(const httplib::Request& req) {
   std::int64_t id = 0;
@@ -54,6 +65,14 @@ std::optional<std::int64_t> integer_parameter(const httplib::Request& req, const
   return value;
 }
 
+/// A JSON text the store wrote, or null when it is missing or damaged (a damaged row must not make
+/// the whole job unreadable).
+json stored_json(const std::optional<std::string>& text) {
+  if (!text) return nullptr;
+  json value = json::parse(*text, nullptr, false);
+  return value.is_discarded() ? json(nullptr) : value;
+}
+
 json job_json(const JobRecord& j) {
   const std::string self = "/v1/jobs/" + std::to_string(j.id);
   json settings = json::object();
@@ -67,7 +86,7 @@ json job_json(const JobRecord& j) {
           {"finished_at", j.finished_at ? json(*j.finished_at) : json(nullptr)},
           {"iteration", j.iteration},
           {"max_iterations", j.max_iterations},
-          {"last_row", j.last_row ? json::parse(*j.last_row) : json(nullptr)},
+          {"last_row", stored_json(j.last_row)},
           {"attempts", j.attempts},
           {"interruptions", j.interruptions},
           {"cancel_requested", j.cancel_requested},
@@ -85,7 +104,7 @@ json job_json(const JobRecord& j) {
 
 void send_json(httplib::Response& res, int status, const json& body) {
   res.status = status;
-  res.set_content(body.dump(), "application/json");
+  res.set_content(io::json_text(body), "application/json");
 }
 
 /// Reads a JSON request body; 400 when it is not JSON.
@@ -110,13 +129,13 @@ RunSettings resume_changes(const json& body, bool model_has_gaps) {
     if (key == "tensile_schedule") {
       if (!model_has_gaps) issues.push_back({pointer, "the model has no gaps, so it has no tensile schedule"});
       if (!value.is_array() || value.empty()) {
-        issues.push_back({pointer, "must be a non-empty array of positive moduli, got " + value.dump()});
+        issues.push_back({pointer, "must be a non-empty array of positive moduli, got " + io::json_text(value)});
         continue;
       }
       std::vector<double> schedule;
       for (std::size_t i = 0; i < value.size(); ++i) {
         if (!value[i].is_number() || !(value[i].get<double>() > 0.0)) {
-          issues.push_back({io::pointer_append(pointer, i), "a tensile modulus must be a number > 0, got " + value[i].dump()});
+          issues.push_back({io::pointer_append(pointer, i), "a tensile modulus must be a number > 0, got " + io::json_text(value[i])});
         } else {
           schedule.push_back(value[i].get<double>());
         }
@@ -124,14 +143,14 @@ RunSettings resume_changes(const json& body, bool model_has_gaps) {
       changes.tensile_schedule = schedule;
     } else if (key == "max_iterations") {
       if (!value.is_number_integer() || value.get<std::int64_t>() < 1 || value.get<std::int64_t>() > 100000) {
-        issues.push_back({pointer, "must be an integer from 1 to 100000, got " + value.dump()});
+        issues.push_back({pointer, "must be an integer from 1 to 100000, got " + io::json_text(value)});
       } else {
         changes.max_iterations = value.get<int>();
       }
     } else if (key == "extrapolation_factor") {
       if (!model_has_gaps) issues.push_back({pointer, "the model has no gaps, so nothing to extrapolate"});
       if (!value.is_number() || !(value.get<double>() >= 0.0 && value.get<double>() < 1.0)) {
-        issues.push_back({pointer, "must be a number with 0 <= f < 1, got " + value.dump()});
+        issues.push_back({pointer, "must be a number with 0 <= f < 1, got " + io::json_text(value)});
       } else {
         changes.extrapolation_factor = value.get<double>();
       }
@@ -153,23 +172,47 @@ struct StreamSlot {
 }  // namespace
 
 HttpApi::HttpApi(JobStore& store, EventHub& hub, ApiOptions options)
-    : store_(store), hub_(hub), options_(std::move(options)) {}
+    : store_(store),
+      hub_(hub),
+      options_(std::move(options)),
+      guard_({options_.token, options_.listen_host, options_.allowed_hosts}) {}
 
 namespace {
 
-/// Compares every byte whatever the first difference, so timing does not reveal the token.
-bool same_secret(const std::string& given, const std::string& expected) {
-  unsigned char difference = given.size() == expected.size() ? 0 : 1;
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    difference |= static_cast<unsigned char>(expected[i] ^ (i < given.size() ? given[i] : 0));
-  }
-  return difference == 0;
+/// A validator of a representation: FNV-1a of its bytes (and of what else selects it).
+std::string entity_tag(std::string_view bytes, std::string_view variant = {}) {
+  return "\"" + std::to_string(fnv1a(variant, fnv1a(std::string_view("\0", 1), fnv1a(bytes)))) + "\"";
 }
 
-bool is_public(const std::string& path) {
-  if (path == "/healthz") return true;
-  for (const web::Asset& asset : web::assets()) {
-    if (path == asset.path) return true;
+/// A validator of a job's stored result without reading it: the result is written only by finish(),
+/// which stamps finished_at (milliseconds) and counts the run in attempts.
+std::string result_tag(JobStore& store, std::int64_t id, std::size_t size, std::string_view variant = {}) {
+  const JobRecord job = store.get(id);
+  return entity_tag(std::to_string(id) + '/' + job.finished_at.value_or("") + '/' + std::to_string(job.attempts) + '/' +
+                        std::to_string(size),
+                    variant);
+}
+
+/// Sets a weak ETag and answers 304 when If-None-Match names it (RFC 9110 section 13.1.2: weak comparison,
+/// "*" matches any).
+bool not_modified(const httplib::Request& req, httplib::Response& res, const std::string& tag) {
+  // Weak: the same bytes may be sent gzip-compressed or not (a strong tag would have to differ).
+  res.set_header("ETag", "W/" + tag);
+  const std::string header = req.get_header_value("If-None-Match");
+  if (header.empty()) return false;
+  std::size_t start = 0;
+  while (start < header.size()) {
+    auto end = header.find(',', start);
+    if (end == std::string::npos) end = header.size();
+    std::string candidate = header.substr(start, end - start);
+    candidate.erase(0, candidate.find_first_not_of(" \t"));
+    candidate.erase(candidate.find_last_not_of(" \t") + 1);
+    if (candidate.rfind("W/", 0) == 0) candidate.erase(0, 2);
+    if (candidate == "*" || candidate == tag) {
+      res.status = 304;
+      return true;
+    }
+    start = end + 1;
   }
   return false;
 }
@@ -180,7 +223,12 @@ json stored_result(JobStore& store, std::int64_t id) {
   if (!result) {
     throw HttpError(404, "Not Found", "job " + std::to_string(id) + " has no result yet (" + to_string(store.get(id).state) + ")");
   }
-  return json::parse(*result);
+  json document = json::parse(*result, nullptr, false);
+  if (document.is_discarded()) {
+    throw HttpError(500, "Internal Server Error", "the stored result of job " + std::to_string(id) +
+                                                      " is damaged (not JSON); resume the job to compute it again");
+  }
+  return document;
 }
 
 /// The plot a request asks for: the name and format from the path, options from the query.
@@ -204,27 +252,101 @@ plot::PlotRequest plot_request(const httplib::Request& req) {
 
 }  // namespace
 
-bool HttpApi::authorized(const httplib::Request& req) const {
-  if (!options_.token || is_public(req.path)) return true;
-  // EventSource and <img> cannot send headers: the page passes the token as access_token.
-  if (req.has_param("access_token")) return same_secret(req.get_param_value("access_token"), *options_.token);
-  return same_secret(req.get_header_value("Authorization"), "Bearer " + *options_.token);
-}
-
-void HttpApi::install(httplib::Server& server) {
+void HttpApi::install_guards(httplib::Server& server) {
   server.set_exception_handler(respond_to_exception);
   server.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
+    // A path that exists, asked with a method it does not have: 405 naming the ones it has.
+    const std::string allow = allowed_methods(req.path);
+    if (res.status == 404 && res.body.empty() && !allow.empty()) {
+      res.set_header("Allow", allow);
+      write_problem(res, 405, "Method Not Allowed", req.method + " " + req.path + ": allowed methods are " + allow);
+    }
     fill_error_body(req, res);
     return httplib::Server::HandlerResponse::Handled;
   }));
   server.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-    if (authorized(req)) return httplib::Server::HandlerResponse::Unhandled;
-    res.set_header("WWW-Authenticate", "Bearer");
-    write_problem(res, 401, "Unauthorized", "this server requires an Authorization: Bearer token");
-    return httplib::Server::HandlerResponse::Handled;
+    res.set_header("X-Request-Id", request_id(req));
+    if (!guard_.admit(req, res)) return httplib::Server::HandlerResponse::Handled;
+    // No route here takes PUT, PATCH and the like: answer before cpp-httplib waits for their body.
+    // (GET, POST and DELETE on a path without them reach the error handler above as a 404.)
+    const bool served_method = req.method == "GET" || req.method == "HEAD" || req.method == "POST" ||
+                               req.method == "DELETE" || req.method == "OPTIONS";
+    const std::string allow = allowed_methods(req.path);
+    if (!served_method && !allow.empty()) {
+      res.set_header("Allow", allow);
+      res.set_header("Connection", "close");
+      GuardedServer::close_after_response();
+      write_problem(res, 405, "Method Not Allowed", req.method + " " + req.path + ": allowed methods are " + allow);
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    return httplib::Server::HandlerResponse::Unhandled;
   });
+  server.set_logger([](const httplib::Request& req, const httplib::Response& res) {
+    std::string id = res.get_header_value("X-Request-Id");
+    if (id.empty()) id = request_id(req);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                                 GuardedServer::request_started())
+                          .count();
+    const std::string route = route_label(req.path);
+    Metrics::global().count_request(route, res.status);
+    log_info("http_request", {{"request_id", id},
+                              {"method", req.method},
+                              {"path", req.path},
+                              {"route", route},
+                              {"status", res.status},
+                              {"ms", std::round(ms * 1000.0) / 1000.0},
+                              {"bytes", res.body.size()},
+                              {"remote", req.remote_addr}});
+  });
+}
+
+bool HttpApi::ready(std::string& why) {
+  if (!store_.writable()) {
+    why = store_.read_only_reason();
+    return false;
+  }
+  const std::string failing = Metrics::global().store_failing();
+  if (!failing.empty()) {
+    why = "database writes are failing: " + failing;
+    return false;
+  }
+  return true;
+}
+
+void HttpApi::install_probes(httplib::Server& server) {
+  server.Get("/healthz", [this](const httplib::Request&, httplib::Response& res) {
+    send_json(res, 200, {{"status", "ok"},
+                         {"version", SAASGAPS_VERSION},
+                         {"queue_length", store_.queue_length()},
+                         {"running", store_.running_count()},
+                         {"workers", options_.workers},
+                         {"writable", store_.writable()},
+                         {"event_streams", open_streams_.load()},
+                         {"max_event_streams", options_.max_streams}});
+  });
+  server.Get("/readyz", [this](const httplib::Request&, httplib::Response& res) {
+    std::string why;
+    if (ready(why)) {
+      send_json(res, 200, {{"status", "ready"}});
+    } else {
+      res.set_header("Retry-After", "30");
+      send_json(res, 503, {{"status", "not ready"}, {"reason", why}});
+    }
+  });
+  server.Get("/metrics", [this](const httplib::Request&, httplib::Response& res) {
+    std::string why;
+    const bool is_ready = ready(why);
+    res.set_content(Metrics::global().render(store_, {open_streams_.load(), options_.workers, is_ready}),
+                    "text/plain; version=0.0.4; charset=utf-8");
+  });
+}
+
+void HttpApi::install(httplib::Server& server) {
+  install_guards(server);
+  install_probes(server);
 
   server.Post("/v1/jobs", [this](const httplib::Request& req, httplib::Response& res) { submit(req, res); });
+  server.Post("/v1/imports", [this](const httplib::Request& req, httplib::Response& res) { import_assembly(req, res); });
   server.Get("/v1/jobs", [this](const httplib::Request& req, httplib::Response& res) { list(req, res); });
   server.Get(R"(/v1/jobs/(\d+))", [this](const httplib::Request& req, httplib::Response& res) {
     send_json(res, 200, job_json(store_.get(job_id(req))));
@@ -247,6 +369,7 @@ void HttpApi::install(httplib::Server& server) {
       throw HttpError(404, "Not Found", "job " + std::to_string(id) + " has no result yet (" +
                                             to_string(store_.get(id).state) + ")");
     }
+    if (not_modified(req, res, result_tag(store_, id, result->size()))) return;
     // Streamed from the database in 64 KiB pieces: a result of hundreds of megabytes is never
     // copied whole, let alone parsed. A job deleted meanwhile ends the response early.
     const std::size_t size = result->size();
@@ -264,10 +387,15 @@ void HttpApi::install(httplib::Server& server) {
         });
   });
   server.Get(R"(/v1/jobs/(\d+)/model)", [this](const httplib::Request& req, httplib::Response& res) {
-    res.set_content(store_.model(job_id(req)), "application/json");
+    std::string model = store_.model(job_id(req));
+    if (not_modified(req, res, entity_tag(model))) return;
+    res.set_content(std::move(model), "application/json");
   });
   server.Post(R"(/v1/jobs/(\d+)/cancel)", [this](const httplib::Request& req, httplib::Response& res) {
-    send_json(res, 202, job_json(store_.cancel(job_id(req))));
+    const JobRecord job = store_.cancel(job_id(req));
+    log_info("job_cancel_requested", {{"job", job.id}, {"request_id", res.get_header_value("X-Request-Id")},
+                                      {"state", to_string(job.state)}});
+    send_json(res, 202, job_json(job));
     hub_.notify();
   });
   server.Post(R"(/v1/jobs/(\d+)/resume)", [this](const httplib::Request& req, httplib::Response& res) { resume(req, res); });
@@ -277,6 +405,7 @@ void HttpApi::install(httplib::Server& server) {
   });
   server.Get(R"(/v1/jobs/(\d+)/result\.vtu)", [this](const httplib::Request& req, httplib::Response& res) {
     const std::int64_t id = job_id(req);
+    if (not_modified(req, res, result_tag(store_, id, 0, "vtu"))) return;
     const json result = stored_result(store_, id);
     if (result.value("status", "") == "failed") {
       throw HttpError(409, "Conflict", "job " + std::to_string(id) + " failed; there is no solution to export");
@@ -292,6 +421,9 @@ void HttpApi::install(httplib::Server& server) {
     } catch (const std::invalid_argument& e) {
       throw HttpError(404, "Not Found", e.what());
     }
+    // The image follows from the stored result and the query: tag it by both, and skip the drawing
+    // when the client already has it.
+    if (not_modified(req, res, result_tag(store_, id, 0, req.target))) return;
     const json result = stored_result(store_, id);
     std::string image;
     try {
@@ -308,28 +440,40 @@ void HttpApi::install(httplib::Server& server) {
     });
   }
   install_worker_api(server, store_, hub_);
-  server.Get("/healthz", [this](const httplib::Request&, httplib::Response& res) {
-    send_json(res, 200, {{"status", "ok"},
-                         {"queue_length", store_.queue_length()},
-                         {"running", store_.running_count()},
-                         {"workers", options_.workers},
-                         {"event_streams", open_streams_.load()},
-                         {"max_event_streams", options_.max_streams}});
-  });
 }
 
 void HttpApi::submit(const httplib::Request& req, httplib::Response& res) {
   if (!json::accept(req.body)) throw HttpError(400, "Bad Request", "the request body is not JSON");
   // The reader repeats every check of `saasgaps validate`; a bad model never reaches the queue.
-  const Model model = io::parse_model(req.body);
+  enqueue(req.body, io::parse_model(req.body), req, res);
+}
+
+void HttpApi::enqueue(const std::string& body, const Model& model, const httplib::Request& req,
+                      httplib::Response& res) {
+  io::require_restrained(model);
   std::optional<std::string> key;
   if (req.has_header("Idempotency-Key")) key = req.get_header_value("Idempotency-Key");
   const JobStore::Submitted submitted =
-      store_.submit(req.body, model.title, model.solver.max_iterations, key, body_digest(req.body));
+      store_.submit(body, model.title, model.solver.max_iterations, key, body_digest(body));
   if (submitted.replayed) res.set_header("Idempotent-Replayed", "true");
+  if (!submitted.replayed) {
+    log_info("job_queued", {{"job", submitted.job.id}, {"request_id", res.get_header_value("X-Request-Id")},
+                            {"title", model.title}, {"nodes", model.nodes.size()}});
+  }
   res.set_header("Location", "/v1/jobs/" + std::to_string(submitted.job.id));
   send_json(res, 202, job_json(submitted.job));
   hub_.notify();
+}
+
+void HttpApi::import_assembly(const httplib::Request& req, httplib::Response& res) {
+  const json model = import_upload(req);
+  const std::string submit = req.get_param_value("submit");
+  if (submit == "true" || submit == "1") {
+    const std::string body = model.dump(1);
+    enqueue(body, io::read_model(model), req, res);
+    return;
+  }
+  send_json(res, 200, model);
 }
 
 void HttpApi::list(const httplib::Request& req, httplib::Response& res) {
@@ -357,7 +501,10 @@ void HttpApi::resume(const httplib::Request& req, httplib::Response& res) {
   if (!req.body.empty()) {
     changes = resume_changes(json_body(req), io::parse_model(store_.model(id)).gaps.has_value());
   }
-  send_json(res, 202, job_json(store_.resume(id, changes)));
+  const JobRecord job = store_.resume(id, changes);
+  log_info("job_resume_requested", {{"job", id}, {"request_id", res.get_header_value("X-Request-Id")},
+                                    {"from_iteration", job.iteration}});
+  send_json(res, 202, job_json(job));
   hub_.notify();
 }
 

@@ -10,15 +10,19 @@
 #include <optional>
 #include <string>
 
+#include "model.hpp"
 #include "service/event_hub.hpp"
 #include "service/job_store.hpp"
+#include "service/request_guard.hpp"
 
 namespace saasgaps::service {
 
 struct ApiOptions {
-  std::optional<std::string> token;  ///< bearer token required on every route but /healthz
+  std::optional<std::string> token;  ///< bearer token required on every route but /healthz, /readyz
   int max_streams = 4;               ///< concurrent event streams (each holds an HTTP thread)
   int workers = 1;                   ///< reported by /healthz
+  std::string listen_host = "127.0.0.1";   ///< a Host name always accepted
+  std::vector<std::string> allowed_hosts;  ///< more Host names accepted without a token
 };
 
 class HttpApi {
@@ -29,14 +33,23 @@ class HttpApi {
 
  private:
   void submit(const httplib::Request& req, httplib::Response& res);
+  /// Queues a validated model document (its text and its model) as a new job: 202 with Location.
+  void enqueue(const std::string& body, const Model& model, const httplib::Request& req, httplib::Response& res);
+  /// POST /v1/imports: the model document of an uploaded assembly; with ?submit=true, queued as a job.
+  void import_assembly(const httplib::Request& req, httplib::Response& res);
   void list(const httplib::Request& req, httplib::Response& res);
   void resume(const httplib::Request& req, httplib::Response& res);
   void events(const httplib::Request& req, httplib::Response& res);
-  [[nodiscard]] bool authorized(const httplib::Request& req) const;
+  /// Operations routes: /healthz, /readyz, /metrics.
+  void install_probes(httplib::Server& server);
+  /// The pre-routing guard, request ids, the access log and the 405 answers.
+  void install_guards(httplib::Server& server);
+  [[nodiscard]] bool ready(std::string& why);
 
   JobStore& store_;
   EventHub& hub_;
   ApiOptions options_;
+  RequestGuard guard_;
   std::atomic<int> open_streams_{0};
 };
 

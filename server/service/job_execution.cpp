@@ -5,6 +5,8 @@
 #include "io/model_reader.hpp"
 #include "io/result_writer.hpp"
 #include "io/state_codec.hpp"
+#include "service/log.hpp"
+#include "service/metrics.hpp"
 
 namespace saasgaps::service {
 
@@ -39,6 +41,49 @@ ResumeOptions resume_options(const RunSettings& settings) {
 
 }  // namespace
 
+void note_run_started(const ClaimedJob& claimed, const std::string& worker) {
+  if (claimed.state) {
+    log_info("job_resumed", {{"job", claimed.job.id}, {"from_iteration", claimed.job.iteration},
+                             {"attempt", claimed.job.attempts}, {"worker", worker}});
+  } else {
+    log_info("job_started", {{"job", claimed.job.id}, {"attempt", claimed.job.attempts}, {"worker", worker}});
+  }
+}
+
+void note_iteration(std::int64_t job, const std::string& row) {
+  double seconds = 0.0;
+  int attempt = 1;
+  int iteration = 0;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(row);
+    seconds = j.value("seconds", 0.0);
+    attempt = j.value("attempt", 1);
+    iteration = j.value("iteration", 0);
+  } catch (const nlohmann::json::exception&) {
+    // The row is committed already; a line without its figures is better than none.
+  }
+  Metrics::global().count_iteration(seconds);
+  log_info("job_iteration", {{"job", job}, {"iteration", iteration}, {"attempt", attempt}, {"seconds", seconds}});
+}
+
+void note_finished(JobStore& store, std::int64_t job, JobState state, const std::optional<std::string>& message,
+                   const std::optional<std::string>& error) {
+  Metrics::global().count_finished(state);
+  nlohmann::json fields = {{"job", job}, {"state", to_string(state)}};
+  try {
+    fields["iterations"] = store.get(job).iteration;
+  } catch (const std::exception&) {
+    // Deleted meanwhile, or the database is failing: the line goes out without the count.
+  }
+  if (message) fields["message"] = *message;
+  if (error) fields["error"] = *error;
+  if (state == JobState::failed) {
+    log_error("job_finished", fields);
+  } else {
+    log_info("job_finished", fields);
+  }
+}
+
 void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& shutting_down) {
   try {
     std::string digest;
@@ -67,9 +112,12 @@ void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& 
       sink.finish(JobState::failed, io::failed_result_text(e.what()), std::nullopt, e.what());
     } catch (const RunAbandoned&) {
       throw;
-    } catch (const std::exception&) {
-      // Even the failure cannot be recorded (database gone): the job stays running in the file and
-      // the next server start marks it interrupted.
+    } catch (const std::exception& again) {
+      // Even the failure cannot be recorded (a full disk, the database gone): the job stays running
+      // in the file and the next server start marks it interrupted and resumes it.
+      Metrics::global().count_store_error();
+      log_error("job_not_recorded", {{"error", e.what()}, {"store_error", again.what()},
+                                     {"note", "the job stays in the database as running; the next start resumes it"}});
     }
   }
 }

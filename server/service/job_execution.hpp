@@ -43,6 +43,15 @@ class RunAbandoned : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// What the service notes when a run's iteration or end is committed, whichever executor ran it
+/// (the local sink and the remote worker routes both call these): a structured log line and the
+/// /metrics counters.
+void note_run_started(const ClaimedJob& claimed, const std::string& worker);
+void note_iteration(std::int64_t job, const std::string& row);
+/// `store` gives the job's last iteration for the line.
+void note_finished(JobStore& store, std::int64_t job, JobState state, const std::optional<std::string>& message,
+                   const std::optional<std::string>& error);
+
 /// Solves the job from `input` and reports every iteration and the end to `sink`. A stop while
 /// `shutting_down` hands the job on (interrupted); a stop the sink asked for is a cancel. Solver
 /// failures end the run as failed; RunAbandoned from the sink propagates.

@@ -1,8 +1,14 @@
 #include "service/job_runner.hpp"
 
+#include <malloc.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <cstdlib>
+
 #include "service/job_execution.hpp"
+#include "service/log.hpp"
+#include "service/metrics.hpp"
 
 namespace saasgaps::service {
 
@@ -16,6 +22,7 @@ class StoreSink final : public RunSink {
   void iteration(int iteration, const std::string& row, const std::vector<std::uint8_t>& state) override {
     store_.record_iteration(job_, iteration, row, state);
     hub_.notify();
+    note_iteration(job_, row);
   }
 
   bool stop_requested() override { return store_.cancel_requested(job_); }
@@ -23,6 +30,7 @@ class StoreSink final : public RunSink {
   void finish(JobState state, const std::optional<std::string>& result, const std::optional<std::string>& message,
               const std::optional<std::string>& error) override {
     store_.finish(job_, state, result, message, error);
+    note_finished(store_, job_, state, message, error);
   }
 
  private:
@@ -30,6 +38,24 @@ class StoreSink final : public RunSink {
   EventHub& hub_;
   std::int64_t job_;
 };
+
+bool trim_after_jobs() {
+  static const bool trim = [] {
+    const char* setting = std::getenv("SAASGAPS_MALLOC_TRIM");
+    return setting == nullptr || std::string(setting) != "0";
+  }();
+  return trim;
+}
+
+/// malloc_trim at most every 10 s, from whichever worker is idle.
+void trim_when_idle() {
+  static std::atomic<std::int64_t> last{0};
+  const std::int64_t now =
+      std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  std::int64_t previous = last.load();
+  if (!trim_after_jobs() || now - previous < 10 || !last.compare_exchange_strong(previous, now)) return;
+  malloc_trim(0);
+}
 
 }  // namespace
 
@@ -48,21 +74,41 @@ JobRunner::~JobRunner() {
 
 void JobRunner::work(const std::string& name) {
   std::uint64_t seen = hub_.version();
+  std::string failing;  // the last claim's error, logged once
   while (!stopping_) {
     std::optional<ClaimedJob> claimed;
     try {
       claimed = store_.claim(name);
-    } catch (const std::exception&) {
-      // The database is busy or failing: try again after a pause rather than spin or die.
+      if (!failing.empty()) log_info("store_recovered", {{"worker", name}});
+      failing.clear();
+      Metrics::global().set_store_failing("");
+    } catch (const std::exception& e) {
+      // The database is busy or failing (a full disk): say so once, keep the job queued, and try
+      // again after a pause rather than spin or die. /readyz reports it meanwhile.
       claimed.reset();
+      if (failing != e.what()) {
+        log_error("store_error", {{"operation", "claim"}, {"worker", name}, {"error", e.what()}});
+        Metrics::global().count_store_error();
+      }
+      failing = e.what();
+      Metrics::global().set_store_failing(failing);
     }
     if (!claimed) {
+      const std::uint64_t before = seen;
       seen = hub_.wait(seen, std::chrono::milliseconds(1000));
+      // Idle for a second: give back what HTTP threads freed too (results sent, models parsed),
+      // which the trim after a job cannot see, since they come after it.
+      if (seen == before) trim_when_idle();
       continue;
     }
     hub_.notify();
+    note_run_started(*claimed, name);
     run(*claimed);
     hub_.notify();
+    // A large job leaves its factor's and assembly's memory in the allocator's arenas; hand the
+    // free pages back so an idle server does not keep the peak of the last job (tests/bench
+    // saasgaps_idle_memory measures it; SAASGAPS_MALLOC_TRIM=0 turns this off for its baseline).
+    if (trim_after_jobs()) malloc_trim(0);
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -11,6 +12,8 @@
 #include <cstring>
 #include <ctime>
 #include <nlohmann/json.hpp>
+
+#include "io/json_text.hpp"
 
 namespace saasgaps::service {
 
@@ -98,8 +101,11 @@ json settings_json(const RunSettings& s) {
 }
 
 RunSettings parse_settings(const std::string& text) {
-  const json j = json::parse(text);
+  // Written by settings_json; anything else is damage, read as "no changes" rather than an error
+  // on every read of the job.
+  const json j = json::parse(text, nullptr, false);
   RunSettings s;
+  if (!j.is_object()) return s;
   if (j.contains("tensile_schedule")) s.tensile_schedule = j["tensile_schedule"].get<std::vector<double>>();
   if (j.contains("max_iterations")) s.max_iterations = j["max_iterations"].get<int>();
   if (j.contains("extrapolation_factor")) s.extrapolation_factor = j["extrapolation_factor"].get<double>();
@@ -170,7 +176,7 @@ void change_state(Connection& db, std::int64_t job, JobState state, const std::o
   json data = {{"job", job}, {"state", to_string(state)}, {"iteration", record.iteration}};
   if (record.message) data["message"] = *record.message;
   if (error) data["error"] = *error;
-  add_event(db, job, "state", data.dump());
+  add_event(db, job, "state", io::json_text(data));
 }
 
 }  // namespace detail
@@ -203,8 +209,9 @@ bool is_finished(JobState state) {
          state == JobState::cancelled;
 }
 
-std::string utc_now() {
-  const auto now = std::chrono::system_clock::now();
+std::string utc_now() { return utc_text(std::chrono::system_clock::now()); }
+
+std::string utc_text(std::chrono::system_clock::time_point now) {
   const std::time_t seconds = std::chrono::system_clock::to_time_t(now);
   const auto millis =
       std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
@@ -216,20 +223,100 @@ std::string utc_now() {
   return text;
 }
 
+namespace {
+
+/// PRAGMA quick_check: every page's b-tree structure, record formats and freelist, in one pass over
+/// the file (linear in its size). integrity_check also cross-checks every index against its table,
+/// which costs a lookup per row; the indexes here are small and rebuilt by REINDEX, so the damage
+/// that matters (pages a read would trip on) is what quick_check finds.
+void check_integrity(Connection& db, const std::string& path) {
+  std::vector<std::string> problems;
+  try {
+    Statement q = db.prepare("PRAGMA quick_check(5)");
+    while (q.step()) problems.push_back(q.text(0));
+  } catch (const StoreError& e) {
+    if (e.no_space()) throw;
+    problems = {e.what()};
+  }
+  if (problems.size() == 1 && problems.front() == "ok") return;
+  std::string text;
+  for (const std::string& p : problems) text += (text.empty() ? "" : "; ") + p;
+  throw StoreError("the database " + path + " is damaged (" + text +
+                       "); refusing to serve it. Restore a backup, or copy out what is readable with: "
+                       "sqlite3 " + path + " .recover | sqlite3 recovered.db",
+                   SQLITE_CORRUPT);
+}
+
+std::int64_t schema_version(Connection& db) {
+  Statement q = db.prepare("PRAGMA user_version");
+  q.step();
+  return q.integer(0);
+}
+
+}  // namespace
+
 JobStore::JobStore(std::string path, int max_interruptions)
-    : pool_(std::make_unique<Pool>(std::move(path))), max_interruptions_(max_interruptions) {
+    : path_(std::move(path)), max_interruptions_(max_interruptions) {
+  try {
+    open_writable();
+  } catch (const StoreError& e) {
+    if (!e.no_space()) throw;
+    open_read_only(e);
+  }
+}
+
+void JobStore::open_writable() {
+  pool_ = std::make_unique<Pool>(path_, OpenMode::shared);
   auto db = pool_->lease();
-  WriteTransaction tx(*db);
-  Statement version_query = db->prepare("PRAGMA user_version");
-  version_query.step();
-  const auto version = static_cast<std::size_t>(version_query.integer(0));
+  check_integrity(*db, path_);
+  const auto version = static_cast<std::size_t>(schema_version(*db));
   if (version > migrations.size()) {
     throw StoreError("the database has schema version " + std::to_string(version) +
                      ", newer than this server knows (" + std::to_string(migrations.size()) + ")");
   }
-  for (std::size_t v = version; v < migrations.size(); ++v) db->execute(migrations[v]);
-  db->execute("PRAGMA user_version = " + std::to_string(migrations.size()));
-  tx.commit();
+  // A new file gets incremental auto-vacuum before its first table, so deletes can shrink it.
+  if (version == 0) db->execute("PRAGMA auto_vacuum = INCREMENTAL");
+  if (version < migrations.size()) {
+    WriteTransaction tx(*db);
+    for (std::size_t v = version; v < migrations.size(); ++v) db->execute(migrations[v]);
+    db->execute("PRAGMA user_version = " + std::to_string(migrations.size()));
+    tx.commit();
+  }
+  // A file made before that setting changes its mode once, by rewriting it (VACUUM). The mode is
+  // recorded in the file's header, so this needs no schema version of its own.
+  std::int64_t mode = 0;
+  {
+    Statement q = db->prepare("PRAGMA auto_vacuum");
+    q.step();
+    mode = q.integer(0);
+  }
+  if (mode != 2) db->execute("PRAGMA auto_vacuum = INCREMENTAL; VACUUM;");
+}
+
+void JobStore::open_read_only(const StoreError& why) {
+  pool_.reset();
+  pool_ = std::make_unique<Pool>(path_, OpenMode::exclusive);
+  auto db = pool_->lease();
+  check_integrity(*db, path_);
+  if (static_cast<std::size_t>(schema_version(*db)) != migrations.size()) {
+    throw StoreError("the database " + path_ + " needs a schema migration but cannot be written: " + why.what(),
+                     why.code());
+  }
+  read_only_reason_ = std::string("the database cannot be written (") + why.what() + "); serving reads only";
+}
+
+void JobStore::require_writable() const {
+  if (!writable()) throw StoreUnavailable(read_only_reason_ + "; free space and restart the server");
+}
+
+void JobStore::reclaim_space() {
+  try {
+    auto db = pool_->lease();
+    // Frees every page on the freelist, then folds the WAL into the file so it shrinks now.
+    db->execute("PRAGMA incremental_vacuum; PRAGMA wal_checkpoint(TRUNCATE);");
+  } catch (const StoreError&) {
+    // The delete is committed; the space comes back at the next delete or checkpoint.
+  }
 }
 
 JobStore::~JobStore() = default;
@@ -237,6 +324,7 @@ JobStore::~JobStore() = default;
 JobStore::Submitted JobStore::submit(const std::string& model, const std::string& title, int max_iterations,
                                      const std::optional<std::string>& idempotency_key,
                                      const std::string& request_digest) {
+  require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   if (idempotency_key) {
@@ -263,7 +351,7 @@ JobStore::Submitted JobStore::submit(const std::string& model, const std::string
       .run();
   const std::int64_t id = db->last_insert_id();
   db->prepare("INSERT INTO models (job_id, document) VALUES (?, ?)").bind(1, id).bind(2, model).run();
-  add_event(*db, id, "state", json{{"job", id}, {"state", "queued"}, {"iteration", 0}}.dump());
+  add_event(*db, id, "state", io::json_text(json{{"job", id}, {"state", "queued"}, {"iteration", 0}}));
   JobRecord job = require_job(*db, id);
   tx.commit();
   return {job, false};
@@ -337,9 +425,25 @@ class BlobResult final : public JobStore::StoredResult {
   BlobReader blob_;
 };
 
+/// A result read whole, for a read-only store: its one exclusive connection cannot be shared with
+/// a blob handle's connection of its own.
+class TextResult final : public JobStore::StoredResult {
+ public:
+  explicit TextResult(std::string text) : text_(std::move(text)) {}
+  [[nodiscard]] std::size_t size() const override { return text_.size(); }
+  void read(std::size_t offset, char* out, std::size_t count) override { text_.copy(out, count, offset); }
+
+ private:
+  std::string text_;
+};
+
 }  // namespace
 
 std::unique_ptr<JobStore::StoredResult> JobStore::open_result(std::int64_t id) {
+  if (pool_->mode() == OpenMode::exclusive) {
+    std::optional<std::string> text = result(id);
+    return text ? std::make_unique<TextResult>(std::move(*text)) : nullptr;
+  }
   auto connection = std::make_unique<Connection>(pool_->path());
   const JobRecord job = require_job(*connection, id);
   if (job.state == JobState::running) {
@@ -377,6 +481,7 @@ int JobStore::running_count() {
 }
 
 std::optional<ClaimedJob> JobStore::claim(const std::string& worker) {
+  if (!writable()) return std::nullopt;
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   Statement next = db->prepare("SELECT id FROM jobs WHERE state IN ('queued', 'interrupted') ORDER BY id LIMIT 1");
@@ -388,6 +493,7 @@ std::optional<ClaimedJob> JobStore::claim(const std::string& worker) {
 
 void JobStore::record_iteration(std::int64_t id, int iteration, const std::string& row,
                                 const std::vector<std::uint8_t>& state, const Lease* lease) {
+  require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   if (lease && !check_lease(*db, id, *lease, iteration, row)) return;  // committed before: a retry
@@ -426,6 +532,7 @@ bool JobStore::cancel_requested(std::int64_t id) {
 void JobStore::finish(std::int64_t id, JobState state, const std::optional<std::string>& result,
                       const std::optional<std::string>& message, const std::optional<std::string>& error,
                       const Lease* lease) {
+  require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   if (lease && !check_lease(*db, id, *lease, std::nullopt, {})) return;  // finished before: a retry
@@ -438,6 +545,7 @@ void JobStore::finish(std::int64_t id, JobState state, const std::optional<std::
 }
 
 JobRecord JobStore::cancel(std::int64_t id) {
+  require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   const JobRecord job = require_job(*db, id);
@@ -459,6 +567,7 @@ JobRecord JobStore::cancel(std::int64_t id) {
 }
 
 JobRecord JobStore::resume(std::int64_t id, const RunSettings& changes) {
+  require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   const JobRecord job = require_job(*db, id);
@@ -474,7 +583,7 @@ JobRecord JobStore::resume(std::int64_t id, const RunSettings& changes) {
   if (changes.max_iterations) settings.max_iterations = changes.max_iterations;
   if (changes.extrapolation_factor) settings.extrapolation_factor = changes.extrapolation_factor;
   db->prepare("UPDATE jobs SET settings = ?, max_iterations = COALESCE(?, max_iterations), interruptions = 0 WHERE id = ?")
-      .bind(1, settings_json(settings).dump())
+      .bind(1, io::json_text(settings_json(settings)))
       .bind(2, changes.max_iterations)
       .bind(3, id)
       .run();
@@ -485,17 +594,64 @@ JobRecord JobStore::resume(std::int64_t id, const RunSettings& changes) {
 }
 
 void JobStore::remove(std::int64_t id) {
-  auto db = pool_->lease();
-  WriteTransaction tx(*db);
-  const JobRecord job = require_job(*db, id);
-  if (!is_finished(job.state)) {
-    throw JobConflict("job " + std::to_string(id) + " is " + to_string(job.state) + "; cancel it before deleting");
+  require_writable();
+  {
+    auto db = pool_->lease();
+    WriteTransaction tx(*db);
+    const JobRecord job = require_job(*db, id);
+    if (!is_finished(job.state)) {
+      throw JobConflict("job " + std::to_string(id) + " is " + to_string(job.state) + "; cancel it before deleting");
+    }
+    db->prepare("DELETE FROM jobs WHERE id = ?").bind(1, id).run();
+    tx.commit();
   }
-  db->prepare("DELETE FROM jobs WHERE id = ?").bind(1, id).run();
-  tx.commit();
+  reclaim_space();
+}
+
+int JobStore::remove_finished_before(const std::string& cutoff) {
+  if (!writable()) return 0;
+  int removed = 0;
+  {
+    auto db = pool_->lease();
+    WriteTransaction tx(*db);
+    db->prepare(
+          "DELETE FROM jobs WHERE state IN ('converged', 'not_converged', 'failed', 'cancelled')"
+          " AND finished_at IS NOT NULL AND finished_at < ?")
+        .bind(1, cutoff)
+        .run();
+    removed = db->changes();
+    tx.commit();
+  }
+  if (removed > 0) reclaim_space();
+  return removed;
+}
+
+std::vector<std::pair<JobState, int>> JobStore::count_by_state() {
+  std::vector<std::pair<JobState, int>> counts;
+  for (JobState s : {JobState::queued, JobState::running, JobState::converged, JobState::not_converged,
+                     JobState::failed, JobState::cancelled, JobState::interrupted}) {
+    counts.emplace_back(s, 0);
+  }
+  auto db = pool_->lease();
+  Statement q = db->prepare("SELECT state, COUNT(*) FROM jobs GROUP BY state");
+  while (q.step()) {
+    const std::optional<JobState> state = parse_job_state(q.text(0));
+    if (state) counts[static_cast<std::size_t>(*state)].second = static_cast<int>(q.integer(1));
+  }
+  return counts;
+}
+
+std::int64_t JobStore::database_bytes() const {
+  std::int64_t bytes = 0;
+  for (const std::string& file : {path_, path_ + "-wal"}) {
+    struct stat st {};
+    if (::stat(file.c_str(), &st) == 0) bytes += st.st_size;
+  }
+  return bytes;
 }
 
 int JobStore::recover_interrupted(bool keep_slurm_jobs) {
+  if (!writable()) return 0;
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   std::vector<std::int64_t> orphans;
@@ -508,7 +664,7 @@ int JobStore::recover_interrupted(bool keep_slurm_jobs) {
 }
 
 DatabaseLock::DatabaseLock(const std::string& database_path) {
-  const std::string path = database_path + ".lock";
+  const std::string& path = database_path;
   fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd_ < 0) throw StoreError("cannot open " + path + ": " + std::strerror(errno));
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {

@@ -7,6 +7,7 @@
 /// iteration starts. A single server owns a database at a time (see DatabaseLock), so on start-up
 /// every job still marked running was left by a dead server.
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -33,6 +34,13 @@ class JobNotFound : public std::runtime_error {
 
 /// The request does not fit the job's state (resume while running, result while running, ...).
 class JobConflict : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The store is open read-only (it could not write at start-up, e.g. a full disk): reads work,
+/// writes are refused until a restart finds space again.
+class StoreUnavailable : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
@@ -106,7 +114,9 @@ struct JobEvent {
 
 class JobStore {
  public:
-  /// Opens or creates the database and migrates its schema to the current version.
+  /// Opens or creates the database, checks its integrity (PRAGMA quick_check: a damaged file is a
+  /// StoreError naming the damage), and migrates its schema to the current version. When the file
+  /// cannot be written (a full disk) but can be read, opens it read-only instead (see writable()).
   /// max_interruptions: after this many server deaths while running, a job fails instead of resuming.
   JobStore(std::string path, int max_interruptions);
   ~JobStore();
@@ -147,6 +157,13 @@ class JobStore {
   [[nodiscard]] std::vector<JobEvent> events(std::int64_t id, std::int64_t after_event, int limit);
   [[nodiscard]] int queue_length();
   [[nodiscard]] int running_count();
+  /// Jobs per state (every state present, 0 when none).
+  [[nodiscard]] std::vector<std::pair<JobState, int>> count_by_state();
+  /// Bytes of the database file and its WAL.
+  [[nodiscard]] std::int64_t database_bytes() const;
+  /// False when the store was opened read-only; why() says what failed.
+  [[nodiscard]] bool writable() const { return read_only_reason_.empty(); }
+  [[nodiscard]] const std::string& read_only_reason() const { return read_only_reason_; }
 
   /// The oldest queued or interrupted job, now running (attempts + 1, a new lease), or nothing.
   std::optional<ClaimedJob> claim(const std::string& worker);
@@ -169,12 +186,18 @@ class JobStore {
   /// Queues a cancelled, not_converged, interrupted or failed job to continue from its last saved
   /// iteration with the given changes. JobConflict when queued, running or converged.
   JobRecord resume(std::int64_t id, const RunSettings& changes);
-  /// Deletes a finished job and all its rows. JobConflict when not finished.
+  /// Deletes a finished job and all its rows, and gives the freed pages back to the file system.
+  /// JobConflict when not finished.
   void remove(std::int64_t id);
+  /// Retention: deletes every finished job that finished before `cutoff` (ISO 8601 UTC, as
+  /// utc_now() writes it), then reclaims the space. Returns how many.
+  int remove_finished_before(const std::string& cutoff);
 
   /// Start-up: jobs left running by a dead server become interrupted (to be resumed by the
-  /// workers), or failed once interrupted more than max_interruptions times. Returns how many.
-  /// keep_slurm_jobs: jobs handed to a Slurm job stay running; the Slurm monitor decides.
+  /// workers), or failed once interrupted more than max_interruptions times; a job whose cancel was
+  /// acknowledged (cancel_requested committed) becomes cancelled, keeping its restart state.
+  /// Returns how many. keep_slurm_jobs: jobs handed to a Slurm job stay running (the Slurm monitor
+  /// decides), unless their cancel was acknowledged.
   int recover_interrupted(bool keep_slurm_jobs = false);
 
   // Remote workers and the Slurm executor (job_store.cpp, last section).
@@ -201,12 +224,23 @@ class JobStore {
 
  private:
   class Pool;
+  void open_writable();
+  void open_read_only(const StoreError& why);
+  void require_writable() const;
+  /// Gives pages freed by deletes back to the file system (auto_vacuum=INCREMENTAL).
+  void reclaim_space();
+
+  std::string path_;
   std::unique_ptr<Pool> pool_;
   int max_interruptions_;
+  std::string read_only_reason_;
 };
 
-/// An exclusive advisory lock on "<database>.lock": one server per database. Released by the kernel
-/// when the process dies, even by kill -9.
+/// An exclusive advisory lock (flock) on the database file itself: one server per database, whatever
+/// name reaches it (a hard link or another path to the same inode takes the same lock). Released by
+/// the kernel when the process dies, even by kill -9. Must outlive every connection to the file: the
+/// descriptor stays open until then, since closing a descriptor of the file would drop SQLite's own
+/// POSIX locks on it.
 class DatabaseLock {
  public:
   explicit DatabaseLock(const std::string& database_path);
@@ -224,5 +258,7 @@ RunSettings settings_from_text(const std::string& text);
 
 /// Current UTC time, ISO 8601 with milliseconds.
 std::string utc_now();
+/// A UTC time in the same format (text order is time order).
+std::string utc_text(std::chrono::system_clock::time_point when);
 
 }  // namespace saasgaps::service

@@ -3,6 +3,7 @@
 /// rows and states) and run_leases.cpp (runs, leases, remote workers, Slurm) share. Not for use
 /// outside those two files.
 
+#include <condition_variable>
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -15,11 +16,13 @@
 namespace saasgaps::service {
 
 /// Connections handed out one per caller at a time: SQLite connections are not shared across threads,
-/// and separate connections let WAL readers run beside the writer.
+/// and separate connections let WAL readers run beside the writer. An exclusive-mode pool holds one
+/// connection, and callers wait their turn for it.
 class JobStore::Pool {
  public:
-  explicit Pool(std::string path) : path_(std::move(path)) {}
+  Pool(std::string path, OpenMode mode) : path_(std::move(path)), mode_(mode) {}
   [[nodiscard]] const std::string& path() const { return path_; }
+  [[nodiscard]] OpenMode mode() const { return mode_; }
 
   class Lease {
    public:
@@ -36,26 +39,44 @@ class JobStore::Pool {
   };
 
   Lease lease() {
-    {
-      std::lock_guard lock(mutex_);
-      if (!idle_.empty()) {
-        std::unique_ptr<Connection> c = std::move(idle_.back());
-        idle_.pop_back();
-        return Lease(*this, std::move(c));
-      }
+    std::unique_lock lock(mutex_);
+    if (mode_ == OpenMode::exclusive) returned_.wait(lock, [&] { return !idle_.empty() || open_ == 0; });
+    if (!idle_.empty()) {
+      std::unique_ptr<Connection> c = std::move(idle_.back());
+      idle_.pop_back();
+      return Lease(*this, std::move(c));
     }
-    return Lease(*this, std::make_unique<Connection>(path_));
+    ++open_;
+    lock.unlock();
+    try {
+      return Lease(*this, std::make_unique<Connection>(path_, mode_));
+    } catch (...) {
+      lock.lock();
+      --open_;
+      returned_.notify_one();
+      throw;
+    }
   }
 
  private:
   void give_back(std::unique_ptr<Connection> c) {
-    std::lock_guard lock(mutex_);
-    if (idle_.size() < 16) idle_.push_back(std::move(c));
+    {
+      std::lock_guard lock(mutex_);
+      if (idle_.size() < 16) {
+        idle_.push_back(std::move(c));
+      } else {
+        --open_;
+      }
+    }
+    returned_.notify_one();
   }
 
   std::string path_;
+  OpenMode mode_;
   std::mutex mutex_;
+  std::condition_variable returned_;
   std::vector<std::unique_ptr<Connection>> idle_;
+  int open_ = 0;  ///< connections alive (leased or idle)
 };
 
 namespace detail {
@@ -71,8 +92,9 @@ void change_state(Connection& db, std::int64_t job, JobState state, const std::o
 /// run needs (model, latest restart state, settings, lease).
 ClaimedJob start_run(Connection& db, std::int64_t id, const std::string& worker);
 /// A run ended without finishing (the server died, its Slurm job ended): the job becomes interrupted,
-/// to be resumed from its last committed iteration, or failed beyond max_interruptions. The lease is
-/// revoked either way.
+/// to be resumed from its last committed iteration, or failed beyond max_interruptions; a job whose
+/// cancel was acknowledged (cancel_requested committed) becomes cancelled instead, never resumed, its
+/// restart state kept. The lease is revoked either way.
 void interrupt(Connection& db, std::int64_t id, const std::string& what, int max_interruptions);
 /// A write by a lease holder may go ahead (true), was already made by the same lease (false: a
 /// retried request), or is refused (LeaseConflict). `iteration` and `row` for an iteration; without

@@ -1,7 +1,10 @@
 #include "service/problem.hpp"
 
 #include "errors.hpp"
+#include "io/json_text.hpp"
 #include "service/job_store.hpp"
+#include "service/log.hpp"
+#include "service/metrics.hpp"
 
 namespace saasgaps::service {
 
@@ -18,6 +21,7 @@ const char* reason(int status) {
     case 413: return "Content Too Large";
     case 422: return "Unprocessable Content";
     case 503: return "Service Unavailable";
+    case 507: return "Insufficient Storage";
     default: return status >= 500 ? "Internal Server Error" : "Error";
   }
 }
@@ -28,7 +32,7 @@ void write_problem(httplib::Response& res, int status, const std::string& title,
   json body = {{"type", "about:blank"}, {"title", title}, {"status", status}, {"detail", detail}};
   if (!errors.is_null()) body["errors"] = errors;
   res.status = status;
-  res.set_content(body.dump(), "application/problem+json");
+  res.set_content(io::json_text(body), "application/problem+json");
 }
 
 void respond_to_exception(const httplib::Request& req, httplib::Response& res, std::exception_ptr error) {
@@ -47,7 +51,23 @@ void respond_to_exception(const httplib::Request& req, httplib::Response& res, s
     write_problem(res, 404, "Not Found", e.what());
   } catch (const JobConflict& e) {
     write_problem(res, 409, "Conflict", e.what());
+  } catch (const StoreUnavailable& e) {
+    res.set_header("Retry-After", "60");
+    write_problem(res, 503, "Service Unavailable", e.what());
+  } catch (const StoreError& e) {
+    Metrics::global().count_store_error();
+    log_error("store_error", {{"method", req.method}, {"path", req.path}, {"error", e.what()},
+                              {"request_id", res.get_header_value("X-Request-Id")}});
+    if (e.no_space()) {
+      write_problem(res, 507, "Insufficient Storage",
+                    req.method + " " + req.path + ": the database could not be written (" + e.what() +
+                        "); nothing was changed. Free disk space and retry.");
+    } else {
+      write_problem(res, 500, "Internal Server Error", req.method + " " + req.path + " failed: " + e.what());
+    }
   } catch (const std::exception& e) {
+    log_error("request_failed", {{"method", req.method}, {"path", req.path}, {"error", e.what()},
+                                 {"request_id", res.get_header_value("X-Request-Id")}});
     write_problem(res, 500, "Internal Server Error", std::string(req.method + " " + req.path + " failed: ") + e.what());
   } catch (...) {
     write_problem(res, 500, "Internal Server Error", req.method + " " + req.path + " failed");

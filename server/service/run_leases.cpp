@@ -107,7 +107,11 @@ void interrupt(Connection& db, std::int64_t id, const std::string& what, int max
       .bind(1, id)
       .run();
   const JobRecord job = require_job(db, id);
-  if (job.interruptions > max_interruptions) {
+  if (job.cancel_requested) {
+    // The cancel was acknowledged (202) and committed: honour it rather than resume the job. Its
+    // restart state stays, so it can still be resumed by hand.
+    cancel_revoked(db, job, what);
+  } else if (job.interruptions > max_interruptions) {
     change_state(db, id, JobState::failed, std::nullopt,
                  what + "; interrupted " + std::to_string(job.interruptions) +
                      " times, it is not resumed again automatically (resume it by hand to try once more)");
@@ -197,11 +201,7 @@ void JobStore::slurm_run_ended(std::int64_t id, int attempt, const std::string& 
   if (job.state != JobState::running || job.attempts != attempt || !job.slurm_job_id) return;
   db->prepare("UPDATE jobs SET slurm_state = ? WHERE id = ?").bind(1, slurm_state).bind(2, id).run();
   const std::string what = "Slurm job " + *job.slurm_job_id + " ended (" + slurm_state + ") before its worker finished";
-  if (job.cancel_requested) {
-    cancel_revoked(*db, job, what);
-  } else {
-    interrupt(*db, id, what, max_interruptions_);
-  }
+  interrupt(*db, id, what, max_interruptions_);  // a requested cancel ends cancelled
   tx.commit();
 }
 

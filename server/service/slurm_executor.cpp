@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "service/log.hpp"
 #include "service/subprocess.hpp"
 #include "service/worker_protocol.hpp"
 
@@ -30,7 +31,8 @@ std::string trimmed(const std::string& text) {
   return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
 }
 
-void log(const std::string& line) { std::cerr << "saasgaps serve (slurm): " << line << std::endl; }
+/// The executor's own notes, as structured log lines (log.hpp) like the rest of the server's.
+void log(const std::string& line) { log_info("slurm_executor", {{"message", line}}); }
 
 }  // namespace
 
@@ -123,6 +125,7 @@ bool SlurmExecutor::dispatch() {
       scancel(slurm_id);
     }
     log("job " + std::to_string(id) + " attempt " + std::to_string(claimed->lease.attempt) + " is Slurm job " + slurm_id);
+    note_run_started(*claimed, "slurm job " + slurm_id);
     hub_.notify();
   }
   return true;

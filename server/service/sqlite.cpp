@@ -5,34 +5,43 @@ namespace saasgaps::service {
 namespace {
 
 [[noreturn]] void fail(sqlite3* db, const std::string& what) {
-  throw StoreError(what + ": " + (db != nullptr ? sqlite3_errmsg(db) : "out of memory"));
+  throw StoreError(what + ": " + (db != nullptr ? sqlite3_errmsg(db) : "out of memory"),
+                   db != nullptr ? sqlite3_errcode(db) & 0xff : SQLITE_NOMEM);
 }
 
 }  // namespace
 
-Connection::Connection(const std::string& path) {
+Connection::Connection(const std::string& path, OpenMode mode) {
   const int flags = SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX;
   if (sqlite3_open_v2(path.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
     const std::string message = db_ != nullptr ? sqlite3_errmsg(db_) : "out of memory";
     sqlite3_close(db_);
     db_ = nullptr;
-    throw StoreError("cannot open database " + path + ": " + message);
+    throw StoreError("cannot open database " + path + ": " + message, SQLITE_CANTOPEN);
   }
-  // Writers wait for each other rather than failing; readers never block writers in WAL mode.
-  sqlite3_busy_timeout(db_, 10000);
-  // synchronous=FULL: a commit is on disk (WAL fsynced) before it returns, so a kill -9 or power
-  // loss after an iteration's commit cannot lose that iteration.
-  execute("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
+  try {
+    // Before the first access to the WAL: the exclusive mode keeps the WAL index in heap memory.
+    if (mode == OpenMode::exclusive) execute("PRAGMA locking_mode=EXCLUSIVE");
+    // Writers wait for each other rather than failing; readers never block writers in WAL mode.
+    sqlite3_busy_timeout(db_, 10000);
+    // synchronous=FULL: a commit is on disk (WAL fsynced) before it returns, so a kill -9 or power
+    // loss after an iteration's commit cannot lose that iteration.
+    execute("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
+  } catch (...) {
+    sqlite3_close_v2(db_);
+    throw;
+  }
 }
 
 Connection::~Connection() { sqlite3_close_v2(db_); }
 
 void Connection::execute(const std::string& sql) {
   char* error = nullptr;
-  if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &error) != SQLITE_OK) {
+  const int rc = sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &error);
+  if (rc != SQLITE_OK) {
     const std::string message = error != nullptr ? error : "unknown error";
     sqlite3_free(error);
-    throw StoreError("SQL failed: " + message);
+    throw StoreError("SQL failed: " + message, rc & 0xff);
   }
 }
 

@@ -14,10 +14,24 @@
 
 namespace saasgaps::service {
 
-/// A database failure (I/O, corruption, a constraint the code did not expect).
+/// A database failure (I/O, corruption, a constraint the code did not expect), with SQLite's primary
+/// result code (SQLITE_FULL, SQLITE_IOERR, SQLITE_CORRUPT, ...; 0 when not from SQLite).
 class StoreError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit StoreError(const std::string& what, int code = 0) : std::runtime_error(what), code_(code) {}
+  [[nodiscard]] int code() const { return code_; }
+  /// The file system refused to store more (disk full, quota, I/O error while writing).
+  [[nodiscard]] bool no_space() const { return code_ == SQLITE_FULL || code_ == SQLITE_IOERR; }
+
+ private:
+  int code_;
+};
+
+/// How a connection opens its file.
+enum class OpenMode {
+  shared,     ///< WAL with shared memory: many connections, readers beside the writer
+  exclusive,  ///< WAL with the index in heap memory (locking_mode=EXCLUSIVE): one connection only,
+              ///< and no -shm file to create, so it opens on a full disk
 };
 
 class Statement;
@@ -26,7 +40,7 @@ class Connection {
  public:
   /// Opens (creating if needed) the database file in WAL mode with full-sync commits and a busy
   /// timeout, and foreign keys on.
-  explicit Connection(const std::string& path);
+  explicit Connection(const std::string& path, OpenMode mode = OpenMode::shared);
   ~Connection();
   Connection(const Connection&) = delete;
   Connection& operator=(const Connection&) = delete;

@@ -47,7 +47,9 @@ auto decoded(const httplib::Request& req, Decode decode) {
 void install_worker_api(httplib::Server& server, JobStore& store, EventHub& hub) {
   server.Post(R"(/v1/jobs/(\d+)/lease)", [&store, &hub](const httplib::Request& req, httplib::Response& res) {
     const std::string who = req.get_header_value("User-Agent");
-    const ClaimedJob claimed = store.claim_job(path_job(req), "worker " + req.remote_addr + (who.empty() ? "" : " " + who));
+    const std::string worker = "worker " + req.remote_addr + (who.empty() ? "" : " " + who);
+    const ClaimedJob claimed = store.claim_job(path_job(req), worker);
+    note_run_started(claimed, worker);
     res.status = 201;
     res.set_content(nlohmann::json{{"attempt", claimed.lease.attempt}, {"secret", claimed.lease.secret}}.dump(),
                     "application/json");
@@ -62,6 +64,7 @@ void install_worker_api(httplib::Server& server, JobStore& store, EventHub& hub)
     const protocol::Iteration it = decoded(req, protocol::decode_iteration);
     store.record_iteration(id, it.iteration, it.row, it.state, &lease);
     hub.notify();
+    note_iteration(id, it.row);
     res.set_content(nlohmann::json{{"committed", it.iteration}, {"stop", store.cancel_requested(id)}}.dump(),
                     "application/json");
   });
@@ -71,6 +74,7 @@ void install_worker_api(httplib::Server& server, JobStore& store, EventHub& hub)
     const protocol::Finish f = decoded(req, protocol::decode_finish);
     store.finish(id, f.state, f.result, f.message, f.error, &lease);
     hub.notify();
+    note_finished(store, id, f.state, f.message, f.error);
     res.status = 204;
   });
 }

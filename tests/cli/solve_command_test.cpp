@@ -154,3 +154,40 @@ TEST_F(SolveCommand, UnreadableFileExitsOne) {
 }
 
 }  // namespace
+
+TEST_F(SolveCommand, ExactModeSolvesAndItsResultPlotsAndExports) {
+  const Outcome r = saasgaps("solve " + example("report-problem3-case1-exact.json") + " -o " + path("result.json"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("exact contact: 1 of 19 node pairs in contact"), std::string::npos) << r.err;
+  for (const char* column : {"pairs", "complement.", "sets"}) EXPECT_NE(r.err.find(column), std::string::npos) << column;
+  const nlohmann::json result = json_of(path("result.json"));
+  EXPECT_EQ(result["history"][0]["contact_pairs"], 1);
+  EXPECT_LT(result["history"][0]["complementarity"].get<double>(), 1e-12);
+  for (const auto& gap : result["gaps"]) EXPECT_EQ(gap["state"], gap["id"] == 81 ? "closed" : "open") << gap["id"];
+  for (const char* field : {"closure", "effective", "convergence"}) {
+    EXPECT_EQ(saasgaps("plot " + path("result.json") + " --field " + field + " -o " + path(std::string(field) + ".png")).exit_code, 0)
+        << field;
+  }
+  EXPECT_EQ(saasgaps("export-vtu " + path("result.json") + " -o " + path("result.vtu")).exit_code, 0);
+}
+
+TEST_F(SolveCommand, ClassicRunWithLoadedGapsShortOfContactSuggestsTheExactMethod) {
+  const Outcome beam = saasgaps("solve " + example("report-problem3-case1.json") + " -q -o " + path("beam.json"));
+  EXPECT_EQ(beam.exit_code, 0) << beam.err;
+  EXPECT_NE(beam.err.find("\"method\": \"exact\""), std::string::npos) << beam.err;
+  EXPECT_NE(json_of(path("beam.json"))["message"].get<std::string>().find("do not touch"), std::string::npos);
+  // Problem 1 ends with every loaded gap at 99 % closure: nothing to warn about.
+  const Outcome block = saasgaps("solve " + example("report-problem1.json") + " -q -o " + path("block.json"));
+  EXPECT_EQ(block.exit_code, 0) << block.err;
+  EXPECT_EQ(block.err.find("exact"), std::string::npos) << block.err;
+}
+
+TEST_F(SolveCommand, ExactModeGapThatCannotBePairedIsABadModel) {
+  nlohmann::json model = json_of(example("report-problem3-case1-exact.json"));
+  model["gaps"]["elements"][2]["angle"] = 45.0;  // no two opposite edges across M
+  std::ofstream(path("unpairable.json")) << model.dump();
+  const Outcome r = saasgaps("validate " + path("unpairable.json"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("/gaps/elements/2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("gap element 83 cannot be paired"), std::string::npos) << r.err;
+}

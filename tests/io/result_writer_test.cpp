@@ -131,6 +131,11 @@ IterationRecord random_row(std::mt19937_64& rng, int iteration, std::size_t gaps
   for (std::size_t g = 0; g < gaps; ++g) r.gap_closures.push_back(random_value(rng));
   r.seconds = random_value(rng);
   r.attempt = 1 + static_cast<int>(rng() % 3);
+  if (iteration % 2 == 0) {  // an exact-contact row: three more members
+    r.active_set_iterations = 1 + static_cast<int>(rng() % 5);
+    r.contact_pairs = static_cast<int>(rng() % 100);
+    r.complementarity = random_value(rng);
+  }
   return r;
 }
 

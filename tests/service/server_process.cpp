@@ -7,8 +7,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <fcntl.h>
+
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <stdexcept>
 #include <thread>
 
@@ -44,26 +47,54 @@ pid_t spawn(const std::vector<std::string>& arguments, int& read_end, bool merge
 
 }  // namespace
 
-ServerProcess::ServerProcess(const std::filesystem::path& database, const std::vector<std::string>& arguments) {
+ServerProcess::ServerProcess(const std::filesystem::path& database, const std::vector<std::string>& arguments,
+                             const std::filesystem::path& log_file)
+    : log_path_(log_file.empty() ? std::filesystem::path(database.string() + ".log") : log_file) {
   std::vector<std::string> command = {SAASGAPS_BINARY, "serve", "--db", database.string()};
   // A caller that needs the same port across a restart gives --port itself.
   if (std::find(arguments.begin(), arguments.end(), "--port") == arguments.end()) {
     command.insert(command.end(), {"--port", "0"});
   }
   command.insert(command.end(), arguments.begin(), arguments.end());
-  int out = -1;
-  pid_ = spawn(command, out, true);
-  // The first line says where it listens: "... listening on http://127.0.0.1:PORT (...)".
-  std::string line;
-  char c = 0;
-  while (read(out, &c, 1) == 1 && c != '\n') line += c;
-  close(out);
-  const auto at = line.find("127.0.0.1:");
-  if (at == std::string::npos) {
-    kill_hard();
-    throw std::runtime_error("the server did not start: " + line);
+  const int log_fd = ::open(log_path_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (log_fd < 0) throw std::runtime_error("cannot open " + log_path_.string());
+  const auto start_offset = static_cast<std::size_t>(lseek(log_fd, 0, SEEK_END));
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, log_fd, STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, log_fd, STDERR_FILENO);
+  std::vector<char*> argv;
+  for (const std::string& a : command) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const int rc = posix_spawnp(&pid_, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(log_fd);
+  if (rc != 0) throw std::runtime_error("cannot start " + command[0]);
+  // The server prints where it listens: "... listening on http://127.0.0.1:PORT (...)".
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  for (;;) {
+    const std::string text = log().substr(std::min(start_offset, log().size()));
+    const auto at = text.find("listening on http://127.0.0.1:");
+    if (at != std::string::npos && text.find('\n', at) != std::string::npos) {
+      port_ = std::stoi(text.substr(at + 30));
+      return;
+    }
+    int status = 0;
+    if (waitpid(pid_, &status, WNOHANG) == pid_) {
+      pid_ = -1;
+      throw std::runtime_error("the server did not start: " + text);
+    }
+    if (std::chrono::steady_clock::now() > deadline) {
+      kill_hard();
+      throw std::runtime_error("the server did not start within 60 s: " + text);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  port_ = std::stoi(line.substr(at + 10));
+}
+
+std::string ServerProcess::log() const {
+  std::ifstream in(log_path_);
+  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 ServerProcess::~ServerProcess() {

@@ -1,6 +1,7 @@
 #pragma once
 /// A real `saasgaps serve` process for service tests: started on an ephemeral loopback port with its
-/// own database file, stopped gracefully or killed with SIGKILL.
+/// own database file, stopped gracefully or killed with SIGKILL. Its standard output and error (the
+/// JSON-lines log) go to "<database>.log", which log() reads.
 
 #include <httplib.h>
 #include <sys/types.h>
@@ -15,13 +16,18 @@ namespace saasgaps::testing {
 
 class ServerProcess {
  public:
-  /// Starts the server on `database` with extra arguments; waits until it listens.
-  ServerProcess(const std::filesystem::path& database, const std::vector<std::string>& arguments = {});
+  /// Starts the server on `database` with extra arguments; waits until it listens. The log goes to
+  /// `log_file`, by default "<database>.log".
+  ServerProcess(const std::filesystem::path& database, const std::vector<std::string>& arguments = {},
+                const std::filesystem::path& log_file = {});
   ~ServerProcess();
   ServerProcess(const ServerProcess&) = delete;
   ServerProcess& operator=(const ServerProcess&) = delete;
 
   [[nodiscard]] int port() const { return port_; }
+  [[nodiscard]] pid_t pid() const { return pid_; }
+  /// Everything the server wrote so far (stdout and stderr).
+  [[nodiscard]] std::string log() const;
   [[nodiscard]] httplib::Client client() const;
   void kill_hard();  ///< SIGKILL, then reap
   int stop();        ///< SIGTERM, then the exit status
@@ -29,6 +35,7 @@ class ServerProcess {
  private:
   pid_t pid_ = -1;
   int port_ = 0;
+  std::filesystem::path log_path_;
 };
 
 /// A free loopback port, for a program that cannot report one it picked itself (chromedriver) or a

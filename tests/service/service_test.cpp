@@ -12,6 +12,7 @@
 #include "service/job_client.hpp"
 #include "service/long_job_model.hpp"
 #include "service/server_process.hpp"
+#include "service/service_fixture.hpp"
 
 namespace saasgaps::testing {
 namespace {
@@ -19,39 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-class Service : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("saasgaps-service-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  [[nodiscard]] fs::path database() const { return dir_ / "jobs.db"; }
-
-  /// POST a model; returns the job id (asserting 202).
-  static std::int64_t submit(httplib::Client& client, const std::string& body, const httplib::Headers& headers = {}) {
-    const httplib::Result r = client.Post("/v1/jobs", headers, body, "application/json");
-    EXPECT_TRUE(r) << httplib::to_string(r.error());
-    EXPECT_EQ(r->status, 202) << r->body;
-    EXPECT_EQ(r->get_header_value("Location"), "/v1/jobs/" + std::to_string(json::parse(r->body)["id"].get<int>()));
-    return json::parse(r->body)["id"].get<std::int64_t>();
-  }
-
-  /// `saasgaps solve` of the same document: the reference every service result must equal.
-  [[nodiscard]] json solve_locally(const std::string& body) const { return testing::solve_locally(dir_, body); }
-
-  static json problem(const httplib::Result& r, int status) {
-    EXPECT_TRUE(r);
-    EXPECT_EQ(r->status, status) << r->body;
-    EXPECT_EQ(r->get_header_value("Content-Type"), "application/problem+json") << r->body;
-    return json::parse(r->body);
-  }
-
-  fs::path dir_;
-};
+/// The shared fixture (a directory per test, submit, problem, solve_locally); the job helpers of
+/// job_client.hpp are shared with the worker and Slurm tests.
+class Service : public ServiceFixture {};
 
 TEST_F(Service, ReportProblem3GivesTheSameResultAsSolve) {
   ServerProcess server(database());
@@ -74,6 +45,51 @@ TEST_F(Service, ReportProblem3GivesTheSameResultAsSolve) {
   const json rows = get_json(client, "/v1/jobs/" + std::to_string(job) + "/iterations?after=10")["iterations"];
   ASSERT_FALSE(rows.empty());
   EXPECT_EQ(rows.front()["iteration"], 11);
+}
+
+/// POST /v1/imports: an assembly and its mesh as multipart/form-data give the model document that
+/// `saasgaps import` writes; with ?submit=true a job; a bad group is a 422 naming its pointer.
+TEST_F(Service, ImportsAnUploadedAssembly) {
+  ServerProcess server(database());
+  httplib::Client client = server.client();
+  const std::string assembly = example_text("assemblies/ring-fit.assembly.json");
+  const std::string geo = example_text("assemblies/ring-fit.geo");
+  const httplib::MultipartFormDataItems upload{{"assembly", assembly, "", "application/json"},
+                                              {"mesh", geo, "ring-fit.geo", "text/plain"}};
+  const httplib::Result imported = client.Post("/v1/imports", upload);
+  ASSERT_TRUE(imported);
+  ASSERT_EQ(imported->status, 200) << imported->body;
+  const fs::path model = dir_ / "model.json";
+  const CommandResult cli = run_command({SAASGAPS_BINARY, "import",
+                                         std::string(SAASGAPS_EXAMPLES_DIR) + "/assemblies/ring-fit.assembly.json",
+                                         "-o", model.string()});
+  ASSERT_EQ(cli.exit_code, 0) << cli.output;
+  std::ifstream in(model);
+  EXPECT_EQ(json::parse(imported->body), json::parse(in));
+
+  const httplib::Result queued = client.Post("/v1/imports?submit=true", upload);
+  ASSERT_TRUE(queued);
+  ASSERT_EQ(queued->status, 202) << queued->body;
+  const std::int64_t job = json::parse(queued->body)["id"].get<std::int64_t>();
+  EXPECT_EQ(wait_for_state(client, job, {"converged", "not_converged", "failed"})["state"], "converged");
+
+  json bad = json::parse(assembly);
+  bad["regions"][0]["group"] = "inner_rin";
+  const json invalid = problem(client.Post("/v1/imports", httplib::MultipartFormDataItems{
+                                                              {"assembly", bad.dump(), "", "application/json"},
+                                                              {"mesh", geo, "ring-fit.geo", "text/plain"}}),
+                               422);
+  ASSERT_EQ(invalid["errors"].size(), 1u) << invalid.dump();
+  EXPECT_EQ(invalid["errors"][0]["pointer"], "/regions/0/group");
+
+  bad = json::parse(assembly);
+  bad["mesh"] = "../../etc/passwd.msh";
+  const json escaped = problem(client.Post("/v1/imports", httplib::MultipartFormDataItems{
+                                                              {"assembly", bad.dump(), "", "application/json"},
+                                                              {"mesh", geo, "ring-fit.geo", "text/plain"}}),
+                               422);
+  EXPECT_EQ(escaped["errors"][0]["pointer"], "/mesh");
+  problem(client.Post("/v1/imports", assembly, "application/json"), 400);
 }
 
 TEST_F(Service, PlotsAndVtuOfAStoredResult) {

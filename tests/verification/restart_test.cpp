@@ -85,7 +85,7 @@ TEST_P(ExactRestart, StopAfterKResumeFromTheSavedStateGivesTheSameNumbers) {
 
 INSTANTIATE_TEST_SUITE_P(ReportProblems, ExactRestart,
                          ::testing::Values("report-problem2.json", "report-problem3-case1.json",
-                                           "report-problem3-case3.json"));
+                                           "report-problem3-case3.json", "report-problem3-case3-exact.json"));
 
 TEST(Restart, ANotConvergedRunResumesWithMoreIterations) {
   const Model model = testing::example_model("report-problem3-case3.json");

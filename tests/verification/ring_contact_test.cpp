@@ -1,37 +1,21 @@
 // Our own closed-form check of the gap iteration: two concentric steel rings, the inner one heated
-// across a small radial gap into the outer one, in plane strain along z. Lame's solution gives the
-// contact pressure p from
-//   u_inner(b1) - u_outer(a2) = closure * delta,
-//   u_inner(b1) = (1 + nu) alpha dT b1 + (1 + nu)/E [(1 - 2 nu) A_i b1 + B_i / b1],  A_i = -p b1^2/(b1^2 - a1^2),
-//                                                                                    B_i = A_i a1^2,
-//   u_outer(a2) = (1 + nu)/E [(1 - 2 nu) A_o a2 + B_o / a2],  A_o = p a2^2/(b2^2 - a2^2), B_o = A_o b2^2,
-// (plane strain: u = (1 + nu)/E [(1 - 2 nu) A r + B / r] for sigma_r = A - B/r^2). The gaps' normal
-// stress must be within 2 % of -p and every gap's closure within the tolerance, both in axisymmetry
-// (a slice of the rings held in z) and in plane strain (a quarter annulus, gap elements at many angles).
+// across a small radial gap into the outer one (support/lame_rings.hpp states Lame's solution). The
+// gaps' normal stress must be within 2 % of -p and every gap's closure within the tolerance, both in
+// axisymmetry (a slice of the rings held in z) and in plane strain (a quarter annulus, gap elements
+// at many angles).
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "analysis.hpp"
+#include "support/lame_rings.hpp"
 #include "support/mesh_builder.hpp"
+#include "support/ring_fit.hpp"
 
 namespace saasgaps {
 namespace {
 
-constexpr double E = 30.0e6, nu = 0.3, alpha = 6.5e-6, dT = 400.0;
-constexpr double a1 = 1.0, b1 = 1.5, delta = 0.002, a2 = b1 + delta, b2 = 2.2;
-
-/// Lame contact pressure when the gap closes to `closure` (fraction) of delta.
-double lame_contact_pressure(double closure) {
-  const double free_growth = (1.0 + nu) * alpha * dT * b1;
-  // Radial displacements per unit pressure.
-  const double Ai = -b1 * b1 / (b1 * b1 - a1 * a1), Bi = Ai * a1 * a1;
-  const double inner = (1.0 + nu) / E * ((1.0 - 2.0 * nu) * Ai * b1 + Bi / b1);
-  const double Ao = a2 * a2 / (b2 * b2 - a2 * a2), Bo = Ao * b2 * b2;
-  const double outer = (1.0 + nu) / E * ((1.0 - 2.0 * nu) * Ao * a2 + Bo / a2);
-  return (closure * delta - free_growth) / (inner - outer);
-}
+using testing::lame_rings::expect_contact;
 
 void set_gaps(Model& m, double xfact) {
   m.gaps->initial_modulus = 100.0;
@@ -40,87 +24,26 @@ void set_gaps(Model& m, double xfact) {
   m.solver.max_iterations = 40;
 }
 
-void heat_inner_ring(Model& m, const testing::Grid& inner) {
-  testing::fill_temperatures(m, 0.0);
-  for (int n : inner.nodes) m.loads.node_temperature[n] = dT;
-}
-
 Model axisymmetric_rings(int radial_elements) {
-  Model m;
-  m.analysis = AnalysisType::axisymmetric;
-  m.materials = {testing::isotropic_material(1, E, nu, alpha)};
-  const double h = 0.05;
-  const auto slab = [h](double r0, double r1) { return [=](double s, double t) { return Vec2(r0 + s * (r1 - r0), t * h); }; };
-  const testing::Grid inner = testing::add_grid(m, radial_elements, 1, slab(a1, b1), 0);
-  const testing::Grid outer = testing::add_grid(m, radial_elements, 1, slab(a2, b2), 0);
-  m.gaps.emplace();
-  GapElement g;
-  g.id = 1000;
-  g.nodes = {inner.at(radial_elements, 0), outer.at(0, 0), outer.at(0, 1), inner.at(radial_elements, 1)};
-  g.angle_deg = 0.0;  // M along r
-  m.gaps->elements.push_back(g);
+  Model m = testing::axisymmetric_ring_fit(radial_elements, 0.05);
   set_gaps(m, 0.0);
-  heat_inner_ring(m, inner);
-  for (int n = 0; n < static_cast<int>(m.nodes.size()); ++n) testing::constrain(m, n, std::nullopt, 0.0);
   return m;
 }
 
 Model quarter_annulus_rings(int radial_elements, int hoop_elements, double xfact) {
-  Model m;
-  m.analysis = AnalysisType::plane_strain;
-  m.materials = {testing::isotropic_material(1, E, nu, alpha)};
-  const auto annulus = [](double r0, double r1) {
-    return [=](double s, double t) {
-      const double r = r0 + s * (r1 - r0), angle = t * std::numbers::pi / 2.0;
-      return Vec2(r * std::cos(angle), r * std::sin(angle));
-    };
-  };
-  const testing::Grid inner = testing::add_grid(m, radial_elements, hoop_elements, annulus(a1, b1), 0);
-  const testing::Grid outer = testing::add_grid(m, radial_elements, hoop_elements, annulus(a2, b2), 0);
-  m.gaps.emplace();
-  int id = 1000;
-  for (int j = 0; j < hoop_elements; ++j) {
-    GapElement g;
-    g.id = ++id;
-    g.nodes = {inner.at(radial_elements, j), outer.at(0, j), outer.at(0, j + 1), inner.at(radial_elements, j + 1)};
-    g.angle_deg = 90.0 * (j + 0.5) / hoop_elements;  // M radial, at the element's mid angle
-    m.gaps->elements.push_back(g);
-  }
+  Model m = testing::quarter_ring_fit(AnalysisType::plane_strain, radial_elements, hoop_elements);
   set_gaps(m, xfact);
-  heat_inner_ring(m, inner);
-  for (const testing::Grid* ring : {&inner, &outer}) {
-    for (int i = 0; i <= radial_elements; ++i) {
-      testing::constrain(m, ring->at(i, 0), std::nullopt, 0.0);              // x axis: symmetric in y
-      testing::constrain(m, ring->at(i, hoop_elements), 0.0, std::nullopt);  // y axis: symmetric in x
-    }
-  }
   return m;
-}
-
-void expect_lame_contact(const Model& m, const Solution& s) {
-  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
-  const double tolerance = m.gaps->closure_tolerance;
-  double closure_sum = 0.0;
-  for (const GapResult& g : s.gaps) {
-    EXPECT_GT(g.eps_m, -1.0 - tolerance) << "gap " << g.id;
-    EXPECT_LT(g.eps_m, -1.0 + tolerance) << "gap " << g.id;
-    closure_sum += g.closure / 100.0;
-  }
-  const double p = lame_contact_pressure(closure_sum / static_cast<double>(s.gaps.size()));
-  ASSERT_GT(p, 0.0);
-  for (const GapResult& g : s.gaps) {
-    EXPECT_LT(std::abs(-g.sigma_m - p) / p, 0.02) << "gap " << g.id << ": " << g.sigma_m << " vs " << -p;
-  }
 }
 
 TEST(RingContact, AxisymmetricContactPressureMatchesLame) {
   const Model m = axisymmetric_rings(12);
-  expect_lame_contact(m, solve(m));
+  expect_contact(m, solve(m));
 }
 
 TEST(RingContact, PlaneStrainQuarterAnnulusWithGapsAtManyAngles) {
   const Model m = quarter_annulus_rings(8, 24, 0.0);
-  expect_lame_contact(m, solve(m));
+  expect_contact(m, solve(m));
 }
 
 TEST(RingContact, ExtrapolationReachesTheSameContactSooner) {
@@ -128,7 +51,7 @@ TEST(RingContact, ExtrapolationReachesTheSameContactSooner) {
   const Model extrapolating = quarter_annulus_rings(8, 24, 0.5);
   const Solution without = solve(plain);
   const Solution with = solve(extrapolating);
-  expect_lame_contact(extrapolating, with);
+  expect_contact(extrapolating, with);
   bool used = false;
   for (const IterationRecord& row : with.history) used = used || row.extrapolated;
   EXPECT_TRUE(used);

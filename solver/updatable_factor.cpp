@@ -1,0 +1,93 @@
+#include "updatable_factor.hpp"
+
+#include <cholmod.h>
+
+#include "cholmod_solve.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <stdexcept>
+#include <string>
+
+namespace saasgaps {
+
+struct UpdatableFactor::Impl {
+  cholmod_common common{};
+  cholmod_factor* L = nullptr;
+  CholmodSolveWorkspace work;
+  std::vector<Index> inverse;  // permuted position of each original row
+  std::vector<Index> colptr, rowind;
+  std::vector<double> values;
+  std::vector<std::pair<Index, double>> column;
+
+  Impl() {
+    cholmod_l_start(&common);
+    common.print = 0;
+  }
+  ~Impl() {
+    cholmod_l_free_factor(&L, &common);
+    work.release(common);
+    cholmod_l_finish(&common);
+  }
+  void fail(const char* what) const {
+    throw std::runtime_error(std::string("CHOLMOD ") + what + " failed (status " + std::to_string(common.status) + ")");
+  }
+};
+
+UpdatableFactor::UpdatableFactor() : impl_(std::make_unique<Impl>()) {}
+UpdatableFactor::~UpdatableFactor() = default;
+
+void UpdatableFactor::copy(const SparseCholesky& factored) {
+  Impl& m = *impl_;
+  cholmod_l_free_factor(&m.L, &m.common);
+  m.L = cholmod_l_copy_factor(const_cast<cholmod_factor*>(factored.factor()), &m.common);
+  if (m.L == nullptr) m.fail("copy_factor");
+  // Simplicial LDL', packed and monotonic: the form cholmod_updown works on.
+  if (!cholmod_l_change_factor(CHOLMOD_REAL, false, false, true, true, m.L, &m.common)) m.fail("change_factor");
+  const auto n = static_cast<Index>(m.L->n);
+  const auto* perm = static_cast<const Index*>(m.L->Perm);
+  m.inverse.resize(static_cast<std::size_t>(n));
+  for (Index k = 0; k < n; ++k) m.inverse[perm[k]] = k;
+}
+
+void UpdatableFactor::update(std::span<const UpdateColumn> columns, bool add) {
+  if (columns.empty()) return;
+  Impl& m = *impl_;
+  // W with its rows permuted like L (updown wants P W), sorted within each column.
+  m.colptr.assign(1, 0);
+  m.rowind.clear();
+  m.values.clear();
+  for (const UpdateColumn& w : columns) {
+    m.column.clear();
+    for (int k = 0; k < w.count; ++k) m.column.emplace_back(m.inverse[w.row[k]], w.value[k]);
+    std::sort(m.column.begin(), m.column.end());
+    for (const auto& [row, value] : m.column) {
+      m.rowind.push_back(row);
+      m.values.push_back(value);
+    }
+    m.colptr.push_back(static_cast<Index>(m.rowind.size()));
+  }
+  cholmod_sparse W{};
+  W.nrow = m.L->n;
+  W.ncol = columns.size();
+  W.nzmax = m.rowind.size();
+  W.p = m.colptr.data();
+  W.i = m.rowind.data();
+  W.x = m.values.data();
+  W.stype = 0;
+  W.itype = CHOLMOD_LONG;
+  W.xtype = CHOLMOD_REAL;
+  W.dtype = CHOLMOD_DOUBLE;
+  W.sorted = 1;
+  W.packed = 1;
+  if (!cholmod_l_updown(add, &W, m.L, &m.common)) m.fail("updown");
+  if (m.common.status == CHOLMOD_NOT_POSDEF) {
+    throw NotPositiveDefinite("a downdate lost positive definiteness", {});
+  }
+}
+
+void UpdatableFactor::solve(std::span<const double> b, std::span<double> x) {
+  cholmod_solve_into(impl_->L, b, x, impl_->work, impl_->common);
+}
+
+}  // namespace saasgaps

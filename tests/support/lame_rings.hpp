@@ -1,0 +1,26 @@
+#pragma once
+/// The closed form of the verification suite's shrink fit: two concentric steel rings, the inner one
+/// heated across a small radial gap into the outer one, in plane strain along z. Lame's solution
+/// gives the contact pressure p from
+///   u_inner(b1) - u_outer(a2) = closure * delta,
+///   u_inner(b1) = (1 + nu) alpha dT b1 + (1 + nu)/E [(1 - 2 nu) A_i b1 + B_i / b1],
+///                 A_i = -p b1^2/(b1^2 - a1^2), B_i = A_i a1^2,
+///   u_outer(a2) = (1 + nu)/E [(1 - 2 nu) A_o a2 + B_o / a2],  A_o = p a2^2/(b2^2 - a2^2), B_o = A_o b2^2,
+/// (plane strain: u = (1 + nu)/E [(1 - 2 nu) A r + B / r] for sigma_r = A - B/r^2).
+
+#include "model.hpp"
+#include "solution.hpp"
+
+namespace saasgaps::testing::lame_rings {
+
+constexpr double E = 30.0e6, nu = 0.3, alpha = 6.5e-6, dT = 400.0;
+constexpr double a1 = 1.0, b1 = 1.5, delta = 0.002, a2 = b1 + delta, b2 = 2.2;
+
+/// Lame contact pressure when the gap closes to `closure` (fraction) of delta.
+double contact_pressure(double closure);
+
+/// The run converged, every gap's closure is within the tolerance of 100 %, and every gap's normal
+/// stress is within 2 % of -p at the mean closure reached (gtest expectations).
+void expect_contact(const Model& m, const Solution& s);
+
+}  // namespace saasgaps::testing::lame_rings

@@ -1,0 +1,313 @@
+// The exact contact mode (gaps.method = "exact") against closed forms, the report's answers, an
+// independent penalty method written only here, and bad input.
+//
+// Hertz, plane strain (Johnson, Contact Mechanics, 4.3): two bodies whose initial gap is
+// g(x) = g_c + x^2 / (2 R), pressed together by P per unit length, touch over |x| < a with
+//   p(x) = p0 sqrt(1 - x^2 / a^2),  p0 = sqrt(P E* / (pi R)),  a = sqrt(4 P R / (pi E*)),
+//   1 / E* = (1 - nu1^2) / E1 + (1 - nu2^2) / E2,
+// for bodies large against a (here 20 a) and a mesh fine against a (a / 25 near the contact).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include "analysis.hpp"
+#include "contact_pairs.hpp"
+#include "dof_map.hpp"
+#include "errors.hpp"
+#include "io/model_reader.hpp"
+#include "sparse_cholesky.hpp"
+#include "stiffness_system.hpp"
+#include "support/examples.hpp"
+#include "support/mesh_builder.hpp"
+#include "support/ring_fit.hpp"
+
+namespace saasgaps {
+namespace {
+
+// ---- Hertz: a cylinder-like body (bottom z = g_c + x^2 / 2R) pressed onto a block, half model.
+
+constexpr double hertz_E = 1.0e7, hertz_nu = 0.3, hertz_R = 10.0, hertz_a = 0.2, hertz_size = 20.0 * hertz_a;
+const double hertz_E_star = hertz_E / (2.0 * (1.0 - hertz_nu * hertz_nu));
+const double hertz_P = hertz_a * hertz_a * std::numbers::pi * hertz_E_star / (4.0 * hertz_R);  // full model
+const double hertz_p0 = std::sqrt(hertz_P * hertz_E_star / (std::numbers::pi * hertz_R));
+
+/// Node coordinates 0..size: uniform steps h up to 1.6 a, then growing by 15 % per element.
+std::vector<double> graded(double h) {
+  std::vector<double> x{0.0};
+  while (x.back() < 1.6 * hertz_a - 1e-12) x.push_back(x.back() + h);
+  double step = h;
+  while (x.back() + step < hertz_size) {
+    step *= 1.15;
+    x.push_back(std::min(x.back() + step, hertz_size));
+  }
+  if (hertz_size - x.back() < 0.5 * step) x.back() = hertz_size; else x.push_back(hertz_size);
+  return x;
+}
+
+struct Hertz {
+  Model model;
+  std::vector<int> contact_nodes;  // block surface nodes, x = xs[k]
+  std::vector<double> xs;
+};
+
+Hertz hertz_model(double h) {
+  Hertz H;
+  Model& m = H.model;
+  m.analysis = AnalysisType::plane_strain;
+  m.materials = {testing::isotropic_material(1, hertz_E, hertz_nu)};
+  H.xs = graded(h);
+  const std::vector<double>& xs = H.xs;
+  const int n = static_cast<int>(xs.size()) - 1;
+  const auto at = [&xs, n](double s) { return xs[static_cast<std::size_t>(std::lround(s * n))]; };
+  const double gap_c = 1.0e-4;
+  const auto bottom = [gap_c](double x) { return gap_c + x * x / (2.0 * hertz_R); };
+  const testing::Grid block = testing::add_grid(m, n, n, [&](double s, double t) { return Vec2(at(s), -at(1.0 - t)); }, 0);
+  const testing::Grid body = testing::add_grid(
+      m, n, n,
+      [&](double s, double t) {
+        const double x = at(s), z0 = bottom(x);
+        return Vec2(x, z0 + at(t) * (hertz_size - z0) / hertz_size);
+      },
+      0);
+  std::vector<int> surface, face;
+  for (int i = 0; i <= n; ++i) {
+    surface.push_back(block.at(i, n));
+    face.push_back(body.at(i, 0));
+  }
+  m.gaps.emplace();
+  testing::add_gap_row(m, surface, face, [](int) { return 90.0; });
+  m.gaps->method = GapMethod::exact;
+  m.gaps->initial_modulus = 1.0;
+  m.gaps->tensile_schedule = {1.0};
+  testing::fill_temperatures(m, 0.0);
+  for (int i = 0; i <= n; ++i) testing::constrain(m, block.at(i, 0), std::nullopt, 0.0);
+  for (int j = 0; j <= n; ++j) {
+    testing::constrain(m, block.at(0, j), 0.0, std::nullopt);  // symmetry about x = 0
+    testing::constrain(m, body.at(0, j), 0.0, std::nullopt);
+  }
+  // Half the load, a uniform pressure on the body's top as consistent nodal forces.
+  const double q = 0.5 * hertz_P / hertz_size;
+  for (int i = 0; i <= n; ++i) {
+    const double left = i > 0 ? xs[i] - xs[i - 1] : 0.0, right = i < n ? xs[i + 1] - xs[i] : 0.0;
+    m.loads.nodal_forces.push_back({body.at(i, n), 0.0, -q * 0.5 * (left + right)});
+  }
+  H.contact_nodes = surface;
+  return H;
+}
+
+/// Node pressures along the contact: -sigma_m is per gap; the pair pressure at node k comes from the
+/// gap's mean of its two pairs, so take the gaps' values at their centres.
+TEST(ExactHertz, PeakPressureAndHalfWidthWithinTwoPercent) {
+  const Hertz H = hertz_model(hertz_a / 25.0);
+  const Solution s = solve(H.model);
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  // Pressure at the gap centres, x_c; fit p^2 = p0^2 (1 - x^2 / a^2) over the gaps well inside contact.
+  double sxx = 0, sx = 0, sy = 0, sxy = 0, count = 0, peak = 0.0;
+  double last_closed = 0.0;
+  for (std::size_t k = 0; k < s.gaps.size(); ++k) {
+    const double xc = 0.5 * (H.xs[k] + H.xs[k + 1]), p = -s.gaps[k].sigma_m;
+    if (k == 0) peak = p;
+    if (s.gaps[k].state == GapState::closed) last_closed = xc;
+    if (s.gaps[k].state != GapState::closed || xc > 0.8 * hertz_a) continue;
+    const double X = xc * xc, Y = p * p;
+    sx += X, sy += Y, sxx += X * X, sxy += X * Y, count += 1;
+  }
+  const double slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
+  const double intercept = (sy - slope * sx) / count;
+  const double p0 = std::sqrt(intercept), a = std::sqrt(-intercept / slope);
+  // The first gap's centre is at h/2: p(h/2) = p0 (1 - h^2/8a^2), 0.02 % below p0.
+  std::printf("Hertz: %d active sets, %.3f s; ", s.history.back().active_set_iterations, s.history.back().seconds);
+  std::printf("Hertz: p0 %.1f (fit %.1f) vs %.1f, a %.4f (last closed gap centre %.4f) vs %.4f, %zu gaps\n", peak, p0,
+              hertz_p0, a, last_closed, hertz_a, s.gaps.size());
+  EXPECT_LT(std::abs(peak / hertz_p0 - 1.0), 0.02);
+  EXPECT_LT(std::abs(p0 / hertz_p0 - 1.0), 0.02);
+  EXPECT_LT(std::abs(a / hertz_a - 1.0), 0.02);
+  EXPECT_NEAR(last_closed, hertz_a, 1.5 * hertz_a / 25.0);
+}
+
+// ---- The report's Problems 1 and 2 in exact mode.
+
+Model exact_example(const std::string& name) {
+  nlohmann::json doc = testing::example_document(name);
+  doc["gaps"]["method"] = "exact";
+  return io::read_model(doc);
+}
+
+TEST(ExactReport, Problem1BodyRestsOnItsGapsAtAThousandPsi) {
+  const Model m = exact_example("report-problem1.json");
+  const Solution s = solve(m);
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  for (const GapResult& g : s.gaps) {
+    if (g.id == 10 || g.id == 20) {
+      EXPECT_EQ(g.state, GapState::open) << "side gap " << g.id;
+      continue;
+    }
+    EXPECT_EQ(g.state, GapState::closed) << "gap " << g.id;
+    EXPECT_NEAR(g.sigma_m, -1000.0, 1.0) << "gap " << g.id;
+    EXPECT_NEAR(g.closure, 100.0, 1e-6) << "gap " << g.id;
+  }
+  for (const ElementResult& e : s.elements) EXPECT_NEAR(e.stress[zz], -1000.0, 1.0) << "element " << e.id;
+}
+
+TEST(ExactReport, Problem2ThermalGrowthClosesGap20AtTenThousandPsi) {
+  const Model m = exact_example("report-problem2.json");
+  const Solution s = solve(m);
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  for (const GapResult& g : s.gaps) {
+    if (g.id != 20) continue;
+    EXPECT_EQ(g.state, GapState::closed);
+    EXPECT_NEAR(g.sigma_m, -10000.0, 10.0);
+  }
+  for (const ElementResult& e : s.elements) EXPECT_NEAR(e.stress[rr], -10000.0, 10.0) << "element " << e.id;
+}
+
+// ---- An independent second method: penalty springs on the ordinary assembled system.
+
+/// Vertical node pairs of gap quads laid out like the report's and the Hertz generator's:
+/// nodes (a0, a1, b1, b0), M at 90 degrees, a below b.
+struct VerticalPair {
+  int a = 0, b = 0;
+  double g0 = 0.0;
+};
+
+std::vector<VerticalPair> vertical_pairs(const Model& m) {
+  std::set<std::pair<int, int>> seen;
+  std::vector<VerticalPair> out;
+  for (const GapElement& g : m.gaps->elements) {
+    for (const auto& [a, b] : {std::pair{g.nodes[0], g.nodes[3]}, std::pair{g.nodes[1], g.nodes[2]}}) {
+      if (seen.insert({a, b}).second) out.push_back({a, b, m.nodes[b].z - m.nodes[a].z});
+    }
+  }
+  return out;
+}
+
+/// u (two per node) of the contact problem solved with penalty springs k (g < 0 only), the active set
+/// iterated to a fixed point, k raised until the displacements stop changing.
+std::vector<double> penalty_solution(const Model& m) {
+  DofMap dofs(m);
+  StiffnessSystem system(m, dofs);
+  testing::assemble_with_gaps_at_floor(m, system);
+  SparseCholesky cholesky(system.pattern());
+  const auto values = system.values();
+  double stiffest = 0.0;
+  for (Index j = 0; j < dofs.size(); ++j) stiffest = std::max(stiffest, values[system.pattern().find(j, j)]);
+
+  const std::vector<VerticalPair> pairs = vertical_pairs(m);
+  std::vector<char> active(pairs.size(), 0);
+  std::vector<double> u(static_cast<std::size_t>(dofs.size()), 0.0), work(values.begin(), values.end());
+  std::vector<double> rhs(u.size());
+  const auto gap = [&](const VerticalPair& p) {
+    const Index ea = dofs.equation(p.a, 1), eb = dofs.equation(p.b, 1);
+    return p.g0 + (eb >= 0 ? u[eb] : 0.0) - (ea >= 0 ? u[ea] : 0.0);
+  };
+  for (double k : {1e4 * stiffest, 1e6 * stiffest}) {
+    for (int round = 0; round < 50; ++round) {
+      std::copy(values.begin(), values.end(), work.begin());
+      std::copy(system.rhs().begin(), system.rhs().end(), rhs.begin());
+      for (std::size_t i = 0; i < pairs.size(); ++i) {
+        if (!active[i]) continue;
+        // Energy k g^2 / 2 with g = g0 + u_b - u_a: adds k c c^T and -k g0 c.
+        const Index ea = dofs.equation(pairs[i].a, 1), eb = dofs.equation(pairs[i].b, 1);
+        if (ea >= 0) work[system.pattern().find(ea, ea)] += k, rhs[ea] += k * pairs[i].g0;
+        if (eb >= 0) work[system.pattern().find(eb, eb)] += k, rhs[eb] -= k * pairs[i].g0;
+        if (ea >= 0 && eb >= 0) work[system.pattern().find(ea, eb)] -= k;
+      }
+      cholesky.factorize(work);
+      cholesky.solve(rhs, u);
+      bool changed = false;
+      for (std::size_t i = 0; i < pairs.size(); ++i) {
+        const char now = gap(pairs[i]) < 0.0;
+        changed = changed || now != active[i];
+        active[i] = now;
+      }
+      if (!changed) break;
+    }
+  }
+  std::vector<double> full(2 * m.nodes.size(), 0.0);
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) {
+    for (int dir = 0; dir < 2; ++dir) {
+      const Index eq = dofs.equation(static_cast<int>(n), dir);
+      full[2 * n + dir] = eq >= 0 ? u[eq] : dofs.prescribed(static_cast<int>(n), dir);
+    }
+  }
+  return full;
+}
+
+void expect_same_displacements(const Model& m, const Solution& s, double tolerance) {
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  const std::vector<double> reference = penalty_solution(m);
+  double largest = 0.0, worst = 0.0;
+  for (double v : reference) largest = std::max(largest, std::abs(v));
+  for (std::size_t n = 0; n < s.nodes.size(); ++n) {
+    worst = std::max({worst, std::abs(s.nodes[n].u_r - reference[2 * n]), std::abs(s.nodes[n].u_z - reference[2 * n + 1])});
+  }
+  std::printf("exact vs penalty: largest displacement %.6e, worst difference %.3e\n", largest, worst);
+  EXPECT_LT(worst, tolerance * largest);
+}
+
+TEST(ExactCrossCheck, PenaltyMethodAgreesOnTheReportBeam) {
+  const Model m = testing::example_model("report-problem3-case1-exact.json");
+  expect_same_displacements(m, solve(m), 1e-5);
+}
+
+TEST(ExactCrossCheck, PenaltyMethodAgreesOnHertz) {
+  const Hertz H = hertz_model(hertz_a / 8.0);
+  expect_same_displacements(H.model, solve(H.model), 1e-5);
+}
+
+// ---- Bad input and problems without a solution.
+
+TEST(ExactInput, AGapThatCannotBePairedIsAModelErrorAtItsPointer) {
+  nlohmann::json doc = testing::example_document("report-problem1.json");
+  doc["gaps"]["method"] = "exact";
+  doc["gaps"]["elements"][3]["angle"] = 45.0;  // no two opposite edges across M
+  try {
+    io::read_model(doc);
+    FAIL() << "accepted";
+  } catch (const ModelError& e) {
+    ASSERT_EQ(e.issues().size(), 1U);
+    EXPECT_EQ(e.issues()[0].pointer, "/gaps/elements/3");
+    EXPECT_NE(e.issues()[0].detail.find("gap element 13 cannot be paired"), std::string::npos) << e.issues()[0].detail;
+  }
+  // The same document in classic mode is fine: pairing is the exact mode's rule.
+  doc["gaps"]["method"] = "classic";
+  EXPECT_NO_THROW(io::read_model(doc));
+}
+
+TEST(ExactInput, ZeroSeparationAndANodeFacingNothingAreNamed) {
+  Model m;
+  m.nodes = {{1, 0.0, 0.0}, {2, 1.0, 0.0}, {3, 1.0, 0.01}, {4, 0.0, 0.0}, {5, 3.0, 0.01}, {6, 0.0, 0.01}};
+  m.gaps.emplace();
+  m.gaps->tensile_schedule = {1.0};
+  m.gaps->elements.push_back({7, {0, 1, 2, 3}, 4, 90.0});  // nodes 1 and 4 coincide
+  m.gaps->elements.push_back({8, {0, 1, 4, 5}, 4, 90.0});  // node 2 "faces" node 5, two lengths away
+  const std::vector<PairingIssue> issues = contact_pairing_issues(m);
+  ASSERT_EQ(issues.size(), 2U);
+  EXPECT_EQ(issues[0].gap, 0U);
+  EXPECT_NE(issues[0].detail.find("zero separation"), std::string::npos) << issues[0].detail;
+  EXPECT_EQ(issues[1].gap, 1U);
+  EXPECT_NE(issues[1].detail.find("does not face"), std::string::npos) << issues[1].detail;
+  EXPECT_THROW(contact_pairs(m), GapPairingError);
+}
+
+TEST(ExactInput, ABodyPulledAwayFromEverySupportHasNoSolution) {
+  nlohmann::json doc = testing::example_document("report-problem1.json");
+  doc["gaps"]["method"] = "exact";
+  for (auto& p : doc["loads"]["pressures"]) p["normal"] = -p["normal"].get<double>();  // pull, not push
+  const Model m = io::read_model(doc);
+  try {
+    solve(m);
+    FAIL() << "solved";
+  } catch (const SolverError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("has no solution"), std::string::npos) << what;
+    EXPECT_NE(what.find("pushed away from every support"), std::string::npos) << what;
+    EXPECT_NE(what.find("gap 1"), std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace saasgaps
