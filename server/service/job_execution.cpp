@@ -116,7 +116,7 @@ void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& 
       // Even the failure cannot be recorded (a full disk, the database gone): the job stays running
       // in the file and the next server start marks it interrupted and resumes it.
       Metrics::global().count_store_error();
-      log_error("job_not_recorded", {{"error", e.what()}, {"store_error", again.what()},
+      log_error("job_not_recorded", {{"job", input.job}, {"error", e.what()}, {"store_error", again.what()},
                                      {"note", "the job stays in the database as running; the next start resumes it"}});
     }
   }

@@ -21,6 +21,7 @@ struct RunInput {
   std::string model;                               ///< the submitted document
   std::optional<std::vector<std::uint8_t>> state;  ///< the latest committed restart state (CBOR)
   RunSettings settings;                            ///< resume changes in force
+  std::int64_t job = 0;                            ///< the job's id, for log lines
 };
 
 /// Where a run's iterations and its end go.

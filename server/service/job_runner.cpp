@@ -114,7 +114,7 @@ void JobRunner::work(const std::string& name) {
 
 void JobRunner::run(const ClaimedJob& claimed) {
   StoreSink sink(store_, hub_, claimed.job.id);
-  execute_run({claimed.model, claimed.state, claimed.job.settings}, sink, stopping_);
+  execute_run({claimed.model, claimed.state, claimed.job.settings, claimed.job.id}, sink, stopping_);
 }
 
 }  // namespace saasgaps::service

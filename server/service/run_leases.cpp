@@ -128,6 +128,7 @@ std::string settings_to_text(const RunSettings& settings) { return settings_json
 RunSettings settings_from_text(const std::string& text) { return parse_settings(text); }
 
 ClaimedJob JobStore::claim_job(std::int64_t id, const std::string& worker) {
+  require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   const JobRecord job = require_job(*db, id);
@@ -156,6 +157,7 @@ ClaimedJob JobStore::work(std::int64_t id, const Lease& lease) {
 
 bool JobStore::set_slurm_job(std::int64_t id, int attempt, const std::string& slurm_job_id,
                              const std::string& slurm_state) {
+  require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   db->prepare(
@@ -186,6 +188,7 @@ std::vector<SlurmRun> JobStore::slurm_runs() {
 }
 
 void JobStore::set_slurm_state(std::int64_t id, int attempt, const std::string& slurm_state) {
+  require_writable();
   auto db = pool_->lease();
   db->prepare("UPDATE jobs SET slurm_state = ? WHERE id = ? AND attempts = ? AND slurm_job_id IS NOT NULL")
       .bind(1, slurm_state)
@@ -195,6 +198,7 @@ void JobStore::set_slurm_state(std::int64_t id, int attempt, const std::string& 
 }
 
 void JobStore::slurm_run_ended(std::int64_t id, int attempt, const std::string& slurm_state) {
+  require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   const JobRecord job = require_job(*db, id);
@@ -206,6 +210,7 @@ void JobStore::slurm_run_ended(std::int64_t id, int attempt, const std::string& 
 }
 
 void JobStore::interrupt_run(std::int64_t id, int attempt, const std::string& what) {
+  require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   const JobRecord job = require_job(*db, id);
@@ -215,6 +220,7 @@ void JobStore::interrupt_run(std::int64_t id, int attempt, const std::string& wh
 }
 
 void JobStore::slurm_run_cancelled(std::int64_t id, int attempt, const std::string& why) {
+  require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   const JobRecord job = require_job(*db, id);

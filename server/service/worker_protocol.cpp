@@ -70,6 +70,7 @@ Work decode_work(const std::string& body) {
   work.input.model = field<std::string>(j, "model");
   if (!j.at("state").is_null()) work.input.state = bytes(j, "state");
   work.input.settings = settings_from_text(field<std::string>(j, "settings"));
+  work.input.job = work.job;
   return work;
 }
 
