@@ -11,7 +11,7 @@ SAASGAPS_BUILD="${SAASGAPS_BUILD:-$SAASGAPS_ROOT/build}"
 BUILD_PACKAGES=(
   build-essential cmake pkg-config
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread
-  libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev libcli11-dev libcairo2-dev
+  libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev libcli11-dev libcairo2-dev zlib1g-dev
   libgmsh-dev libexpat1-dev
 )
 # What the tests need on top.

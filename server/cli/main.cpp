@@ -100,26 +100,42 @@ int main(int argc, char** argv) {
   saasgaps::cli::PlotOptions plot;
   CLI::App* plot_cmd = app.add_subcommand("plot", "Draw a contour, closure or convergence plot of a result (PNG or SVG)");
   plot_cmd->add_option("result", plot.result_path, "Result document (JSON) written by solve")->required();
-  plot_cmd->add_option("-o,--output", plot.output_path, "Image file; the format follows the extension: .png or .svg")
+  plot_cmd->add_option("-o,--output", plot.output_path,
+                       "Image file; the format follows the extension: .png or .svg (.csv: the numbers of a path "
+                       "or contact_pressure plot)")
       ->required();
-  plot_cmd->add_option("--field", plot.field, "A field to contour, or closure, or convergence")->capture_default_str();
+  plot_cmd->add_option("--field", plot.field, "A field to contour, or closure, contact_pressure, convergence")
+      ->capture_default_str();
   plot_cmd->add_option("--deformed", plot.deformed, "Draw the deformed mesh, displacements times SCALE (or 'auto')");
   plot_cmd->add_flag("--mesh", plot.mesh, "Draw the element edges");
   plot_cmd->add_option("--width", plot.width, "Image width, px")->check(CLI::Range(16, 8000))->capture_default_str();
   plot_cmd->add_option("--height", plot.height, "Image height, px")->check(CLI::Range(16, 8000))->capture_default_str();
   plot_cmd->add_option("--bands", plot.bands, "At most this many colour bands")->check(CLI::Range(2, 40))
       ->capture_default_str();
-  plot_cmd->add_option("--colormap", plot.color_map, "rainbow or viridis")
-      ->check(CLI::IsMember({"rainbow", "viridis"}))
+  plot_cmd->add_option("--levels", plot.levels, "Band levels: quantile (bands of equal area) or even (equal width)")
+      ->check(CLI::IsMember({"quantile", "even"}))
       ->capture_default_str();
-  plot_cmd->add_option("--along", plot.along, "Closure plot x axis: gap index or position along the gaps")
-      ->check(CLI::IsMember({"index", "position"}))
+  plot_cmd->add_option("--colormap", plot.color_map, "viridis, cividis or rainbow")
+      ->check(CLI::IsMember({"viridis", "cividis", "rainbow"}))
+      ->capture_default_str();
+  plot_cmd->add_option("--gaps", plot.gaps, "The row of gaps for closure and contact_pressure, in order: ids and "
+                                            "ranges, e.g. 81-98 or 5,7,9-12 (default: every gap)");
+  plot_cmd->add_option("--along", plot.along, "Gap row x axis: index, position (arc length), r or z")
+      ->check(CLI::IsMember({"index", "position", "r", "z"}))
+      ->capture_default_str();
+  plot_cmd->add_option("--path", plot.path, "Plot the field along this polyline of points: 'r0,z0;r1,z1;...'");
+  plot_cmd->add_option("--samples", plot.samples, "Points sampled along --path")->check(CLI::Range(2, 100000))
       ->capture_default_str();
 
   saasgaps::cli::ExportVtuOptions vtu;
   CLI::App* vtu_cmd = app.add_subcommand("export-vtu", "Write a result as a VTK unstructured grid (.vtu) for ParaView");
   vtu_cmd->add_option("result", vtu.result_path, "Result document (JSON) written by solve")->required();
-  vtu_cmd->add_option("-o,--output", vtu.output_path, "VTU file")->required();
+  vtu_cmd->add_option("-o,--output", vtu.output_path,
+                      "VTU file; a .pvd name writes every iteration's gap closures as a ParaView collection")
+      ->required();
+  vtu_cmd->add_option("--format", vtu.format, "binary (zlib-compressed) or ascii")
+      ->check(CLI::IsMember({"binary", "ascii"}))
+      ->capture_default_str();
 
   CLI11_PARSE(app, argc, argv);
 

@@ -238,12 +238,16 @@ plot::PlotRequest plot_request(const httplib::Request& req) {
   request.height = static_cast<int>(integer_parameter(req, "height", 16, 4000).value_or(request.height));
   request.contour.max_bands = static_cast<int>(integer_parameter(req, "bands", 2, 40).value_or(request.contour.max_bands));
   request.contour.mesh = req.get_param_value("mesh") == "1" || req.get_param_value("mesh") == "true";
+  const int samples = static_cast<int>(integer_parameter(req, "samples", 2, 100000).value_or(201));
   try {
     plot::set_deformation(req.get_param_value("deformed"), request.contour);
     if (req.has_param("colormap")) request.contour.color_map = req.get_param_value("colormap");
-    if (req.has_param("along")) request.closure.along = plot::closure_axis(req.get_param_value("along"));
+    if (req.has_param("levels")) request.contour.levels = plot::level_rule(req.get_param_value("levels"));
+    plot::set_gap_row(req.get_param_value("gaps"), req.get_param_value("along"), request.row);
+    if (req.has_param("path")) request.path = plot::PathOptions{plot::parse_path(req.get_param_value("path")), samples};
   } catch (const std::invalid_argument& e) {
-    throw HttpError(400, "Bad Request", std::string("query parameters deformed, colormap, along: ") + e.what());
+    throw HttpError(400, "Bad Request",
+                    std::string("query parameters deformed, colormap, levels, gaps, along, path: ") + e.what());
   }
   return request;
 }
@@ -409,9 +413,15 @@ void HttpApi::install(httplib::Server& server) {
       throw HttpError(409, "Conflict", "job " + std::to_string(id) + " failed; there is no solution to export");
     }
     res.set_header("Content-Disposition", "attachment; filename=\"job-" + std::to_string(id) + ".vtu\"");
-    res.set_content(io::result_to_vtu(result), "application/xml");
+    io::VtuFormat format = io::VtuFormat::binary;
+    try {
+      if (req.has_param("format")) format = io::vtu_format(req.get_param_value("format"));
+    } catch (const std::invalid_argument& e) {
+      throw HttpError(400, "Bad Request", std::string("query parameter format: ") + e.what());
+    }
+    res.set_content(io::result_to_vtu(result, format), "application/xml");
   });
-  server.Get(R"(/v1/jobs/(\d+)/plots/(\w+)\.(png|svg))", [this](const httplib::Request& req, httplib::Response& res) {
+  server.Get(R"(/v1/jobs/(\d+)/plots/(\w+)\.(png|svg|csv))", [this](const httplib::Request& req, httplib::Response& res) {
     const std::int64_t id = job_id(req);
     const plot::PlotRequest request = plot_request(req);
     try {
@@ -423,14 +433,15 @@ void HttpApi::install(httplib::Server& server) {
     // when the client already has it.
     if (not_modified(req, res, result_tag(store_, id, 0, req.target))) return;
     const json result = stored_result(store_, id);
-    std::string image;
+    const bool table = req.matches[3] == "csv";
+    std::string body;
     try {
-      image = plot::render_plot(result, request);
+      body = table ? plot::render_table(result, request) : plot::render_plot(result, request);
     } catch (const std::invalid_argument& e) {
       // The name is fine but this result cannot show it: a failed run, a closure plot without gaps.
       throw HttpError(409, "Conflict", "job " + std::to_string(id) + ": " + e.what());
     }
-    res.set_content(image, request.format == plot::ImageFormat::svg ? "image/svg+xml" : "image/png");
+    res.set_content(body, table ? "text/csv; charset=utf-8" : plot::media_type(request.format));
   });
   for (const web::Asset& asset : web::assets()) {
     server.Get(std::string(asset.path), [asset](const httplib::Request&, httplib::Response& res) {

@@ -104,7 +104,7 @@ def main():
             ("p3", "effective", ["--deformed", "50", "--mesh"], (1000, 600), True),
             ("p3", "sigma_r", [], (800, 500), True),
             ("ring", "sigma_theta", ["--mesh"], (900, 700), True),
-            ("ring", "temperature", [], (700, 700), True),
+            ("ring", "temperature", ["--levels", "even"], (700, 700), True),
             ("ring", "displacement", ["--deformed", "auto"], (900, 700), True),
             ("p3", "closure", [], (900, 600), False),
             ("ring", "closure", ["--along", "position"], (900, 600), False),

@@ -122,7 +122,7 @@ TEST_F(PlotRender, ClosureAndConvergencePngs) {
     EXPECT_GT(png_colours(render_plot(*result, request("convergence", ImageFormat::png, 640, 480)), 640, 480), 30U);
   }
   PlotRequest along = request("closure", ImageFormat::png);
-  along.closure.along = ClosureAxis::position;
+  along.row.along = RowAxis::position;
   EXPECT_GT(png_colours(render_plot(ring_, along), 900, 600), 30U);
 }
 

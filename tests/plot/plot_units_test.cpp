@@ -6,6 +6,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "plot/band_levels.hpp"
 #include "plot/contour_bands.hpp"
 #include "plot/field.hpp"
 #include "plot/nice_scale.hpp"
@@ -206,6 +207,49 @@ TEST(RenderPlot, BadOptionsAreInvalidArguments) {
   EXPECT_THROW(image_format_for_path("plot.jpg"), std::invalid_argument);
   EXPECT_THROW(image_format_for_path("png"), std::invalid_argument);
   EXPECT_EQ(image_format_for_path("out/Plot.SVG"), ImageFormat::svg);
+}
+
+}  // namespace
+}  // namespace saasgaps::plot
+
+namespace saasgaps::plot {
+namespace {
+
+TEST(BandLevels, QuantileLevelsSplitTheAreaNotTheRange) {
+  // 90 % of the area between 0 and 9, a peak at 1000 on the rest: even levels put the 90 % in one
+  // band; quantile levels give it all bands but the last.
+  std::vector<double> values, weights;
+  for (int i = 0; i < 90; ++i) {
+    values.push_back(i * 0.1);
+    weights.push_back(1.0);
+  }
+  for (int i = 0; i < 10; ++i) {
+    values.push_back(900.0 + 10.0 * i);
+    weights.push_back(1.0);
+  }
+  const BandLevels even = band_levels(values, weights, 10, LevelRule::even);
+  const BandLevels quantile = band_levels(values, weights, 10, LevelRule::quantile);
+  const auto bands_below = [](const BandLevels& b, double v) {
+    return std::count_if(b.levels.begin(), b.levels.end(), [v](double l) { return l <= v; });
+  };
+  EXPECT_LE(bands_below(even, 9.0), 1) << "even: the 90 % sits in the first band";
+  EXPECT_GE(bands_below(quantile, 9.0), 8) << "quantile: the 90 % gets most bands";
+  EXPECT_LE(quantile.levels.front(), 0.0);
+  EXPECT_GE(quantile.levels.back(), 990.0);
+  EXPECT_TRUE(std::is_sorted(quantile.levels.begin(), quantile.levels.end()));
+  EXPECT_EQ(std::adjacent_find(quantile.levels.begin(), quantile.levels.end()), quantile.levels.end());
+}
+
+TEST(BandLevels, ATwoValuedFieldGetsALevelBetweenItsValues) {
+  const BandLevels b = band_levels({0.0, 0.0, 0.0, 400.0, 400.0, NAN}, {1.0, 1.0, 1.0, 1.0, 1.0, 1.0}, 12,
+                                   LevelRule::quantile);
+  ASSERT_EQ(b.levels.size(), 3U);
+  EXPECT_EQ(b.levels[0], 0.0);
+  EXPECT_GT(b.levels[1], 0.0);
+  EXPECT_LT(b.levels[1], 400.0);
+  EXPECT_EQ(b.levels[2], 400.0);
+  EXPECT_TRUE(band_levels({5.0, 5.0}, {1.0, 1.0}, 12, LevelRule::quantile).uniform);
+  EXPECT_THROW(band_levels({NAN}, {1.0}, 12, LevelRule::quantile), std::invalid_argument);
 }
 
 }  // namespace
