@@ -100,6 +100,26 @@ json job_json(const JobRecord& j) {
             {"model", self + "/model"}}}};
 }
 
+/// A job as GET /v1/jobs lists it: the job resource without per-gap arrays (the last row's
+/// gap_closures), which grow with the model and belong on the job and its iterations.
+json job_list_item(const JobRecord& j) {
+  json item = job_json(j);
+  if (item["last_row"].is_object()) item["last_row"].erase("gap_closures");
+  return item;
+}
+
+/// The names of the model's units (its top-level "units" object; {} when it names none), read
+/// from the stored model text without building the rest of it: the parser's callback drops every
+/// other top-level member as it goes.
+json model_units(const std::string& model_text) {
+  const json model = json::parse(model_text, [](int depth, json::parse_event_t event, json& parsed) {
+    if (depth == 1 && event == json::parse_event_t::key) return parsed == "units";
+    return true;
+  });
+  const auto units = model.find("units");
+  return units != model.end() && units->is_object() ? *units : json::object();
+}
+
 void send_json(httplib::Response& res, int status, const json& body) {
   res.status = status;
   res.set_content(io::json_text(body), "application/json");
@@ -393,6 +413,9 @@ void HttpApi::install(httplib::Server& server) {
     if (not_modified(req, res, entity_tag(model))) return;
     res.set_content(std::move(model), "application/json");
   });
+  server.Get(R"(/v1/jobs/(\d+)/units)", [this](const httplib::Request& req, httplib::Response& res) {
+    send_json(res, 200, model_units(store_.model(job_id(req))));
+  });
   server.Post(R"(/v1/jobs/(\d+)/cancel)", [this](const httplib::Request& req, httplib::Response& res) {
     const JobRecord job = store_.cancel(job_id(req));
     log_info("job_cancel_requested", {{"job", job.id}, {"request_id", res.get_header_value("X-Request-Id")},
@@ -498,7 +521,7 @@ void HttpApi::list(const httplib::Request& req, httplib::Response& res) {
   const auto before = integer_parameter(req, "page_token", 1, INT64_MAX);
   const JobStore::Page page = store_.list(state, static_cast<int>(page_size), before);
   json jobs = json::array();
-  for (const JobRecord& j : page.jobs) jobs.push_back(job_json(j));
+  for (const JobRecord& j : page.jobs) jobs.push_back(job_list_item(j));
   send_json(res, 200, {{"jobs", jobs},
                        {"next_page_token", page.next_before ? json(std::to_string(*page.next_before)) : json(nullptr)}});
 }
