@@ -333,6 +333,16 @@ TEST(Dashboard, FollowsARunningJobAndShowsItsPlots) {
                         "return r.children[r.children.length - 2].textContent;")
                 .get<std::string>(),
             closure);
+  // The contact pressure's numbers, the model's units (none named), the VTU in either form.
+  const httplib::Result table = client.Get("/v1/jobs/" + std::to_string(job) + "/plots/contact_pressure.csv?gaps=" + gap_id);
+  ASSERT_EQ(table->status, 200);
+  EXPECT_EQ(table->get_header_value("Content-Type").rfind("text/csv", 0), 0U);
+  EXPECT_NE(table->body.find("\n" + gap_id + ","), std::string::npos) << table->body;
+  EXPECT_EQ(get_json(client, "/v1/jobs/" + std::to_string(job) + "/units"), json::object());
+  EXPECT_EQ(client.Get("/v1/jobs/" + std::to_string(job) + "/plots/effective.csv")->status, 409);
+  EXPECT_EQ(client.Get("/v1/jobs/" + std::to_string(job) + "/plots/contact_pressure.png?gaps=x")->status, 400);
+  EXPECT_EQ(client.Get("/v1/jobs/" + std::to_string(job) + "/result.vtu?format=ascii")->status, 200);
+  EXPECT_EQ(client.Get("/v1/jobs/" + std::to_string(job) + "/result.vtu?format=text")->status, 400);
   // The job carries its per-gap closures; the job list does not.
   EXPECT_EQ(last["gap_closures"].size(), model["gaps"]["elements"].size());
   const httplib::Result list = client.Get("/v1/jobs");
