@@ -16,7 +16,6 @@ checks:
   a field along a path: every sample's value is the value of the element that holds the point.
 """
 
-import argparse
 import csv
 import json
 import math
@@ -27,7 +26,7 @@ import tempfile
 import numpy
 from PIL import Image
 
-from checking import check, failures, run
+from checking import arguments, check, failures, run
 
 # matplotlib's viridis at 0, 0.2, .., 1 (a different sampling from the plot library's tenths).
 VIRIDIS_FIFTHS = [(68, 1, 84), (64, 67, 135), (41, 120, 142), (34, 167, 132), (121, 209, 81), (253, 231, 36)]
@@ -191,10 +190,7 @@ def check_path(out, saasgaps, result):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--saasgaps", required=True)
-    parser.add_argument("--examples", required=True, type=pathlib.Path)
-    args = parser.parse_args()
+    args = arguments(__doc__)
     with tempfile.TemporaryDirectory(prefix="saasgaps-decoded-") as tmp:
         out = pathlib.Path(tmp)
         model = json.loads((args.examples / "report-problem3-case1.json").read_text())

@@ -13,7 +13,6 @@ reads back to the same values and is larger; a .pvd export holds one file per it
 closures are that iteration's history row.
 """
 
-import argparse
 import json
 import pathlib
 import sys
@@ -23,7 +22,7 @@ import meshio
 import numpy
 
 STATE_CODES = {"open": 0, "partial": 1, "closed": 2, "overclosed": 3}
-from checking import check, failures, run
+from checking import arguments, check, failures, run
 
 
 def cell_array(mesh, name):
@@ -31,10 +30,7 @@ def cell_array(mesh, name):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--saasgaps", required=True)
-    parser.add_argument("--examples", required=True, type=pathlib.Path)
-    args = parser.parse_args()
+    args = arguments(__doc__)
     model_path = args.examples / "report-problem3-case1.json"
     model = json.loads(model_path.read_text())
     with tempfile.TemporaryDirectory(prefix="saasgaps-vtu-") as tmp:

@@ -1,5 +1,7 @@
 """What the plot checks share: recording failures, and running the saasgaps binary."""
 
+import argparse
+import pathlib
 import subprocess
 import sys
 
@@ -18,3 +20,11 @@ def run(saasgaps, *args):
     done = subprocess.run([saasgaps, *args], capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit(f"saasgaps {' '.join(args)} failed ({done.returncode}): {done.stderr}")
+
+
+def arguments(doc):
+    """--saasgaps BINARY --examples DIR, as every check takes them; doc's first line describes them."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("--saasgaps", required=True)
+    parser.add_argument("--examples", required=True, type=pathlib.Path)
+    return parser.parse_args()

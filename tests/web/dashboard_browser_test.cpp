@@ -158,15 +158,21 @@ bool wait_until(Browser& browser, const std::string& script, std::chrono::millis
   return false;
 }
 
+/// An empty directory of this test process for a server's database and a browser profile.
+fs::path fresh_directory(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("saasgaps-browser-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
 void save_artifact(const std::string& name, const std::string& png) {
   fs::create_directories(SAASGAPS_ARTIFACTS_DIR);
   std::ofstream(fs::path(SAASGAPS_ARTIFACTS_DIR) / name, std::ios::binary) << png;
 }
 
 TEST(Dashboard, LargeResultPageIsInteractiveWithinTwoSeconds) {
-  const fs::path dir = fs::temp_directory_path() / ("saasgaps-browser-large-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("large");
   ServerProcess server(dir / "jobs.db");
   httplib::Client client = server.client();
   client.set_read_timeout(std::chrono::seconds(120));
@@ -235,9 +241,7 @@ TEST(Dashboard, LargeResultPageIsInteractiveWithinTwoSeconds) {
 }
 
 TEST(Dashboard, FailedJobsSayWhyAndJobsCanBeDeleted) {
-  const fs::path dir = fs::temp_directory_path() / ("saasgaps-browser-fail-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("fail");
   ServerProcess server(dir / "jobs.db");
   httplib::Client client = server.client();
   // Valid, but a mechanism: only one node is held, and only along r. The solver reports it singular.
@@ -274,9 +278,7 @@ TEST(Dashboard, FailedJobsSayWhyAndJobsCanBeDeleted) {
 }
 
 TEST(Dashboard, FollowsARunningJobAndShowsItsPlots) {
-  const fs::path dir = fs::temp_directory_path() / ("saasgaps-browser-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("follow");
   ServerProcess server(dir / "jobs.db");
   httplib::Client client = server.client();
   json model = tilted_block_document(200);
