@@ -57,7 +57,7 @@ void draw_closure_plot(const Canvas& canvas, const json& result, const GapRowOpt
                        const ClosureOptions& options) {
   const ResultMesh mesh = ResultMesh::from_result(result);
   if (mesh.gaps.empty()) throw std::invalid_argument("the result has no gap elements: there is no closure to plot");
-  const GapRow row = select_gap_row(mesh, row_options);
+  const GapRow row = select_gap_row(mesh, row_options, gap_labels_that_fit(canvas, mesh));
   const std::vector<Curve> all = closure_curves(result, mesh, row);
   const std::vector<Curve> curves = thin_out(all, options.max_curves);
   const std::vector<double>& x = row.x;

@@ -51,7 +51,7 @@ std::vector<int> parse_gap_ids(const std::string& text) {
   return ids;
 }
 
-GapRow select_gap_row(const ResultMesh& mesh, const GapRowOptions& options) {
+GapRow select_gap_row(const ResultMesh& mesh, const GapRowOptions& options, int max_labels) {
   GapRow row;
   if (options.gap_ids.empty()) {
     for (std::size_t g = 0; g < mesh.gaps.size(); ++g) row.gaps.push_back(g);
@@ -89,7 +89,8 @@ GapRow select_gap_row(const ResultMesh& mesh, const GapRowOptions& options) {
       row.axis.min = 0.5;
       row.axis.max = n + 0.5;
       // Every gap labelled by its id while the labels fit, else every k-th.
-      const int every = std::max(1, (n + 23) / 24);
+      max_labels = std::max(2, max_labels);
+      const int every = std::max(1, (n + max_labels - 1) / max_labels);
       for (int i = 0; i < n; i += every) {
         row.axis.ticks.push_back(i + 1);
         row.axis.labels.push_back(std::to_string(mesh.gaps[row.gaps[i]].id));

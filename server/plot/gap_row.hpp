@@ -37,7 +37,9 @@ struct GapRow {
   Axis axis;                      ///< the x axis: ticks and title (with the length unit)
 };
 
-/// The row: an id that is not a gap element of the result is a std::invalid_argument naming it.
-GapRow select_gap_row(const ResultMesh& mesh, const GapRowOptions& options);
+/// The row: an id that is not a gap element of the result is a std::invalid_argument naming it. On
+/// the index axis at most max_labels gap ids are written (every k-th gap), so that they do not
+/// overlap on a narrow image.
+GapRow select_gap_row(const ResultMesh& mesh, const GapRowOptions& options, int max_labels = 24);
 
 }  // namespace saasgaps::plot
