@@ -212,8 +212,8 @@ async function showJob(id) {
     const hasResult = !["queued", "running"].includes(job.state);
     if (job.last_row && Array.isArray(job.last_row.gap_closures)) hasGaps = job.last_row.gap_closures.length > 0;
     $("#links").replaceChildren(...[["model", base + "/model"], ["iterations", base + "/iterations"]]
-      .concat(hasResult ? [["result (JSON)", base + "/result"], ["result (VTU for ParaView)", base + "/result.vtu"],
-                           ["contact pressure (CSV)", base + "/plots/contact_pressure.csv"]] : [])
+      .concat(hasResult ? [["result (JSON)", base + "/result"], ["result (VTU for ParaView)", base + "/result.vtu"]] : [])
+      .concat(hasResult && hasGaps ? [["contact pressure (CSV)", base + "/plots/contact_pressure.csv"]] : [])
       .map(([label, href]) => Object.assign(document.createElement("a"), { href: withToken(href), textContent: label })));
     if (hasResult && !plotsShown) showPlots();
   }
