@@ -192,9 +192,10 @@ TEST(Dashboard, LargeResultPageIsInteractiveWithinTwoSeconds) {
   const std::string base = "http://127.0.0.1:" + std::to_string(server.port());
   // Open the list first, so that the job page is measured as a user reaches it: a new page load.
   browser.open(base + "/#/");
-  ASSERT_TRUE(wait_until(browser, "return document.body.dataset.ready === 'list';", std::chrono::seconds(10)));
+  ASSERT_TRUE(wait_until(browser, "return document.body.dataset.ready === 'list';", std::chrono::seconds(30)));
   browser.open(base + "/?large#/jobs/" + std::to_string(job));
-  ASSERT_TRUE(wait_until(browser, "return document.body.dataset.ready === 'job';", std::chrono::seconds(10)));
+  // Waited for generously: the measure is the page's own clock below, not this wait.
+  ASSERT_TRUE(wait_until(browser, "return document.body.dataset.ready === 'job';", std::chrono::seconds(30)));
   // From the start of navigation to the job's state, table and controls shown (performance.now()
   // counts from the navigation's start).
   const double ready_ms = browser.run("return window.saasgapsReadyAt;").get<double>();
