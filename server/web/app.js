@@ -220,8 +220,9 @@ async function showJob(id) {
 
   // Plots are drawn for the space they get: the figure's width in device pixels, so a PNG is sharp
   // and no larger than the screen needs (a 10^5-element SVG is tens of MB; its PNG is not).
-  const plots = [["#contour-plot", () => $("#plot-field").value, true], ["#contact-plot", () => "contact_pressure"],
-                 ["#closure-plot", () => "closure"], ["#convergence-plot", () => "convergence"]];
+  // [image, plot name, the options it takes]
+  const plots = [["#contour-plot", () => $("#plot-field").value, contourOptions], ["#contact-plot", () => "contact_pressure", rowOptions],
+                 ["#closure-plot", () => "closure", rowOptions], ["#convergence-plot", () => "convergence", () => ({})]];
   let plotsShown = false;
   let plotStamp = -1;
 
@@ -229,6 +230,14 @@ async function showJob(id) {
     const format = $("#plot-format").value;
     const params = new URLSearchParams(Object.assign({ width: String(width), height: String(height) }, extra || {}));
     return withToken(`${base}/plots/${name}.${format}?${params}`);
+  }
+
+  // The gap row of the contact and closure plots: which gaps, in which order, against what.
+  function rowOptions() {
+    const options = { along: $("#plot-along").value };
+    const gaps = $("#plot-gaps").value.replace(/\s+/g, "");
+    if (gaps) options.gaps = gaps;
+    return options;
   }
 
   function contourOptions() {
@@ -246,18 +255,25 @@ async function showJob(id) {
     plotStamp = rows.size;
     const ratio = window.devicePixelRatio || 1;
     // A model without gaps has no gap plots: their figures go before the others are measured.
-    for (const [selector, , contour] of plots) $(selector).parentElement.hidden = !contour && !hasGaps;
-    for (const [selector, name, contour] of plots) {
+    const gapPlot = selector => selector === "#contact-plot" || selector === "#closure-plot";
+    for (const [selector] of plots) $(selector).parentElement.hidden = gapPlot(selector) && !hasGaps;
+    for (const [selector, name, optionsOf] of plots) {
       const img = $(selector);
-      if (!contour && !hasGaps) continue;
+      if (gapPlot(selector) && !hasGaps) continue;
       const width = Math.min(4000, Math.max(320, Math.round(img.parentElement.clientWidth * ratio)));
       const height = Math.round(width * 0.62);
-      const extra = Object.assign({ t: String(rows.size) }, contour ? contourOptions() : {});  // new rows: a new picture
+      const options = optionsOf();
+      const extra = Object.assign({ t: String(rows.size) }, options);  // new rows: a new picture
       img.onload = () => { img.hidden = false; img.parentElement.hidden = false; $("#plot-note").textContent = ""; };
-      img.onerror = () => { img.hidden = true; img.parentElement.hidden = name() !== $("#plot-field").value; };
+      img.onerror = () => {
+        img.hidden = true;
+        img.parentElement.hidden = selector !== "#contour-plot";
+        // Say why, e.g. a gap row naming a gap the model does not have.
+        fetch(img.src).then(r => r.json()).then(p => { $("#plot-note").textContent = `${name()}: ${p.detail}`; }).catch(() => {});
+      };
       img.dataset.plot = name();
       img.dataset.width = String(width);
-      img.dataset.extra = JSON.stringify(contour ? contourOptions() : {});
+      img.dataset.extra = JSON.stringify(options);
       img.src = plotUrl(name(), width, height, extra);
     }
   }
@@ -284,7 +300,8 @@ async function showJob(id) {
     } catch (error) { $("#action-status").textContent = error.message; }
   });
 
-  for (const control of ["#plot-field", "#plot-deformed", "#plot-mesh", "#plot-levels", "#plot-format"]) {
+  for (const control of ["#plot-field", "#plot-deformed", "#plot-mesh", "#plot-levels", "#plot-format", "#plot-gaps",
+                         "#plot-along"]) {
     $(control).addEventListener("change", showPlots);
   }
   $("#cancel").addEventListener("click", async () => {

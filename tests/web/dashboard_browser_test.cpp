@@ -336,6 +336,21 @@ TEST(Dashboard, FollowsARunningJobAndShowsItsPlots) {
                         "return r.children[r.children.length - 2].textContent;")
                 .get<std::string>(),
             closure);
+  // The analyst picks the gap row and its axis: the contact plot is drawn again for them; a gap the
+  // model does not have is named in the note.
+  const std::string row = gap_id + "-" + std::to_string(std::stoi(gap_id) + 9);
+  browser.run("const g = document.querySelector('#plot-gaps'); g.value = '" + row + "';"
+              "const a = document.querySelector('#plot-along'); a.value = 'position';"
+              "a.dispatchEvent(new Event('change')); return true;");
+  EXPECT_TRUE(wait_until(browser,
+                         "const i = document.querySelector('#contact-plot');"
+                         "return i.src.includes('gaps=" + row + "') && i.src.includes('along=position') &&"
+                         " i.complete && i.naturalWidth > 0 && !i.hidden;",
+                         std::chrono::seconds(30)));
+  browser.run("const g = document.querySelector('#plot-gaps'); g.value = '7';"
+              "g.dispatchEvent(new Event('change')); return true;");
+  EXPECT_TRUE(wait_until(browser, "return document.querySelector('#plot-note').textContent.includes('gap 7 is not a gap element');",
+                         std::chrono::seconds(30)));
   // The contact pressure's numbers, the model's units (none named), the VTU in either form.
   const httplib::Result table = client.Get("/v1/jobs/" + std::to_string(job) + "/plots/contact_pressure.csv?gaps=" + gap_id);
   ASSERT_EQ(table->status, 200);
