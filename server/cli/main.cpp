@@ -98,7 +98,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 36500.0));
 
   saasgaps::cli::PlotOptions plot;
-  CLI::App* plot_cmd = app.add_subcommand("plot", "Draw a contour, closure or convergence plot of a result (PNG or SVG)");
+  CLI::App* plot_cmd = app.add_subcommand("plot", "Draw a contour, path, closure, contact-pressure or convergence plot "
+                                                  "of a result (PNG, SVG, or its numbers as CSV)");
   plot_cmd->add_option("result", plot.result_path, "Result document (JSON) written by solve")->required();
   plot_cmd->add_option("-o,--output", plot.output_path,
                        "Image file; the format follows the extension: .png or .svg (.csv: the numbers of a path "
