@@ -102,8 +102,8 @@ int main(int argc, char** argv) {
                                                   "of a result (PNG, SVG, or its numbers as CSV)");
   plot_cmd->add_option("result", plot.result_path, "Result document (JSON) written by solve")->required();
   plot_cmd->add_option("-o,--output", plot.output_path,
-                       "Image file; the format follows the extension: .png or .svg (.csv: the numbers of a path "
-                       "or contact_pressure plot)")
+                       "Image file; the format follows the extension: .png or .svg (.csv: the numbers of a path, "
+                       "closure or contact_pressure plot)")
       ->required();
   plot_cmd->add_option("--field", plot.field, "A field to contour, or closure, contact_pressure, convergence")
       ->capture_default_str();

@@ -3,7 +3,7 @@
 /// the field along a path (--path), the closure plot (--field closure), contact pressure and closure
 /// along a row of gaps (--field contact_pressure, --gaps, --along) or the convergence plot (--field
 /// convergence), drawn from a result document. The format follows the extension of -o; .csv writes
-/// the numbers of a path or contact_pressure plot instead of the picture.
+/// the numbers of a path, closure or contact_pressure plot instead of the picture.
 
 #include <string>
 

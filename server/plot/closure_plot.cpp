@@ -53,8 +53,8 @@ std::vector<Curve> thin_out(std::vector<Curve> curves, int count) {
 
 }  // namespace
 
-void draw_closure_plot(const Canvas& canvas, const json& result, const GapRowOptions& row_options,
-                       const ClosureOptions& options) {
+DataTable draw_closure_plot(const Canvas& canvas, const json& result, const GapRowOptions& row_options,
+                            const ClosureOptions& options) {
   const ResultMesh mesh = ResultMesh::from_result(result);
   if (mesh.gaps.empty()) throw std::invalid_argument("the result has no gap elements: there is no closure to plot");
   const GapRow row = select_gap_row(mesh, row_options, gap_labels_that_fit(canvas, mesh));
@@ -100,6 +100,22 @@ void draw_closure_plot(const Canvas& canvas, const json& result, const GapRowOpt
   chart.draw_reference(100.0, contact_color);
   for (const Series& s : series) chart.draw(s);
   chart.draw_legend();
+
+  // The table holds every iteration, drawn or not, and where the last curve's markers are.
+  std::vector<std::string> columns{"gap", "x"};
+  for (const Curve& c : all) columns.push_back(c.iteration > 0 ? "iteration_" + std::to_string(c.iteration) : "final");
+  columns.insert(columns.end(), {"px", "py_last"});
+  DataTable table(columns);
+  table.note("SAASGAPS gap closure per iteration: " + mesh.title);
+  table.note("x: " + row.axis.title + "; closures in % of each gap's width, 100 = contact");
+  for (std::size_t i = 0; i < row.gaps.size(); ++i) {
+    std::vector<std::string> cells{std::to_string(mesh.gaps[row.gaps[i]].id), DataTable::number(x[i])};
+    for (const Curve& c : all) cells.push_back(DataTable::number(c.closures[i]));
+    const Point p = chart.to_device(x[i], all.back().closures[i]);
+    cells.insert(cells.end(), {DataTable::number(p.x), DataTable::number(p.y)});
+    table.add_row(std::move(cells));
+  }
+  return table;
 }
 
 }  // namespace saasgaps::plot

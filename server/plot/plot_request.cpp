@@ -58,7 +58,7 @@ std::optional<DataTable> draw(const Canvas& canvas, const nlohmann::json& result
   } else if (request.name == "contact_pressure") {
     return draw_contact_plot(canvas, result, request.row);
   } else if (request.name == "closure") {
-    draw_closure_plot(canvas, result, request.row, request.closure);
+    return draw_closure_plot(canvas, result, request.row, request.closure);
   } else {
     ContourOptions contour = request.contour;
     contour.field = request.name;
@@ -80,8 +80,8 @@ std::string render_table(const nlohmann::json& result, const PlotRequest& reques
   Canvas canvas(ImageFormat::png, request.width, request.height);
   const std::optional<DataTable> table = draw(canvas, result, request);
   if (!table) {
-    throw std::invalid_argument("a data table (.csv) is made for contact_pressure and for a field along a path, not for '" +
-                                request.name + "'");
+    throw std::invalid_argument("a data table (.csv) is made for closure, contact_pressure and a field along a path, "
+                                "not for '" + request.name + "'");
   }
   return table->csv();
 }

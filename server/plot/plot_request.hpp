@@ -60,7 +60,7 @@ void require_plot_name(const std::string& name);
 std::string render_plot(const nlohmann::json& result, const PlotRequest& request);
 
 /// The numbers the plot draws, as CSV (data_table.hpp), laid out for the request's image size: for
-/// contact_pressure and for a field along a path. Other plots: std::invalid_argument.
+/// closure, contact_pressure and a field along a path. Other plots: std::invalid_argument.
 std::string render_table(const nlohmann::json& result, const PlotRequest& request);
 
 }  // namespace saasgaps::plot

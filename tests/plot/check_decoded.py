@@ -7,6 +7,7 @@ Solves report problem 3 case 1 with a units block added, and the shrink-fit ring
 checks:
   the result document: `units` as the model names them (absent when it names none); every gap's
     contact_pressure = max(0, -sigma_m), exactly;
+  the closure plot's table holds every iteration's closures, exactly as the history rows do;
   the contact-pressure plot: its data table (.csv) holds the result's contact pressures and
     closures exactly; in the PNG, a marker of the pressure curve's colour sits at each point's px,
     the y tick marks sit where the table says, and each marker's height is its value on that axis;
@@ -159,6 +160,16 @@ def check_contact(out, saasgaps, result):
           "the highest marker is not the largest contact pressure")
 
 
+def check_closure_table(out, saasgaps, result):
+    """The closure plot's table: every iteration's closures are the history rows' gap_closures."""
+    run(saasgaps, "plot", str(out / "p3.json"), "--field", "closure", "-o", str(out / "closure.csv"))
+    _, rows = read_table(out / "closure.csv")
+    check([int(r["gap"]) for r in rows] == [g["id"] for g in result["gaps"]], "closure table: gaps in model order")
+    for h in result["history"]:
+        column = [float(r[f"iteration_{h['iteration']}"]) for r in rows]
+        check(column == h["gap_closures"], f"closure table: iteration {h['iteration']} differs from its history row")
+
+
 def inside(point, corners):
     """Point in a convex polygon (either orientation), boundary included."""
     signs = set()
@@ -209,6 +220,7 @@ def main():
               "problem 3's closed gaps carry contact pressure")
 
         check_contact(out, args.saasgaps, result)
+        check_closure_table(out, args.saasgaps, result)
         check_path(out, args.saasgaps, result)
 
         for name, extra in (("viridis", []), ("rainbow", ["--colormap", "rainbow"])):
