@@ -245,9 +245,13 @@ TEST(Dashboard, FailedJobsSayWhyAndJobsCanBeDeleted) {
   const fs::path dir = fresh_directory("fail");
   ServerProcess server(dir / "jobs.db");
   httplib::Client client = server.client();
-  // Valid, but a mechanism: only one node is held, and only along r. The solver reports it singular.
-  json model = plain_block_document(2, 2);
-  model["constraints"] = {{{"node", 1}, {"r", 0.0}}};
+  // Valid, but a mechanism: a held square and a second square hinged to it at one corner. The
+  // model passes validation (its one body is restrained); the solver finds it singular.
+  json model = plain_block_document(1, 1);
+  model["nodes"].push_back({{"id", 5}, {"r", 2.0}, {"z", 1.0}});
+  model["nodes"].push_back({{"id", 6}, {"r", 2.0}, {"z", 2.0}});
+  model["nodes"].push_back({{"id", 7}, {"r", 1.0}, {"z", 2.0}});
+  model["elements"].push_back({{"id", 2}, {"nodes", {4, 5, 6, 7}}, {"material", 1}});
   const httplib::Result submitted = client.Post("/v1/jobs", model.dump(), "application/json");
   ASSERT_EQ(submitted->status, 202) << submitted->body;
   const auto job = json::parse(submitted->body)["id"].get<std::int64_t>();
