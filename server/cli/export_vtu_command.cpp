@@ -7,6 +7,7 @@
 namespace saasgaps::cli {
 
 int run_export_vtu(const ExportVtuOptions& options) {
+  require_writable(options.output_path, "-o");
   const io::VtuFormat format = io::vtu_format(options.format);
   const std::string& out = options.output_path;
   if (out.size() > 4 && out.compare(out.size() - 4, 4, ".pvd") == 0) {

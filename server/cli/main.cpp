@@ -1,36 +1,25 @@
 /// saasgaps: thermal stress analysis of plane and axisymmetric bodies in contact across gaps.
-/// Subcommands: solve, validate, import, serve, plot, export-vtu. Exit codes (service.md): 0 converged or valid,
-/// 3 not converged, 2 bad model, 1 any other failure. Exceptions become exit codes here only.
+/// Subcommands: solve, validate, import, serve, plot, export-vtu. Exit codes (cli/usage.hpp,
+/// docs/cli.md): 0 converged or valid, 3 not converged, 2 bad model, 1 any other failure, 64 a usage
+/// error. Usage errors and exceptions become exit codes in cli/usage.cpp only.
 
 #include <CLI/CLI.hpp>
 
-#include <iostream>
+#include <optional>
 
-#include "errors.hpp"
 #include "cli/export_vtu_command.hpp"
 #include "cli/import_command.hpp"
 #include "cli/plot_command.hpp"
 #include "cli/serve_command.hpp"
 #include "cli/solve_command.hpp"
+#include "cli/usage.hpp"
 #include "thread_environment.hpp"
 #include "cli/validate_command.hpp"
-
-namespace {
-
-int report_model_error(const saasgaps::ModelError& e, const char* what) {
-  std::cerr << "invalid " << what << ": " << e.issues().size() << (e.issues().size() == 1 ? " error\n" : " errors\n");
-  for (const saasgaps::InputIssue& issue : e.issues()) {
-    std::cerr << (issue.pointer.empty() ? "(document)" : issue.pointer) << ": " << issue.detail << '\n';
-  }
-  return 2;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   saasgaps::ensure_thread_environment(argv);
 
-  CLI::App app{"SAASGAPS: thermal stress analysis of plane and axisymmetric bodies in contact across gaps"};
+  CLI::App app{"SAASGAPS: thermal stress analysis of plane and axisymmetric bodies in contact across gaps", "saasgaps"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "saasgaps " SAASGAPS_VERSION);
 
@@ -41,16 +30,16 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--state-out", solve.state_out, "Write the restart state here after every iteration");
   solve_cmd->add_option("--resume", solve.resume_from, "Continue from a restart state written by --state-out");
   solve_cmd->add_option("--max-iterations", solve.max_iterations, "Iteration limit (overrides the model's)")
-      ->check(CLI::PositiveNumber);
+      ->check(saasgaps::cli::integer_range(1, 100000));
   solve_cmd->add_option("--schedule", solve.tensile_schedule,
                         "New tensile modulus schedule, absolute moduli, comma separated (with --resume: "
                         "started afresh at the next iteration)")
       ->delimiter(',')
-      ->check(CLI::PositiveNumber);
+      ->check(saasgaps::cli::positive_number());
   solve_cmd->add_option("--extrapolation", solve.extrapolation_factor, "Extrapolation factor XFACT, 0 <= f < 1")
       ->check(CLI::Range(0.0, 0.999999999));
   solve_cmd->add_option("--stop-after", solve.stop_after, "Stop after this many iterations, keeping the state")
-      ->check(CLI::PositiveNumber);
+      ->check(saasgaps::cli::integer_range(1, 100000));
   solve_cmd->add_flag("-q,--quiet", solve.quiet, "No progress table");
   solve_cmd->add_flag("--pretty", solve.pretty, "Indent the result document (default: compact)");
   solve_cmd->add_option("--vtu", solve.vtu_path, "Also write the result as a VTK unstructured grid (.vtu)");
@@ -138,24 +127,15 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"binary", "ascii"}))
       ->capture_default_str();
 
-  CLI11_PARSE(app, argc, argv);
+  if (const std::optional<int> done = saasgaps::cli::parse_command_line(app, argc, argv)) return *done;
 
-  try {
+  return saasgaps::cli::run_command([&] {
     if (solve_cmd->parsed()) return saasgaps::cli::run_solve(solve);
     if (validate_cmd->parsed()) return saasgaps::cli::run_validate(validate_path);
     if (import_cmd->parsed()) return saasgaps::cli::run_import(import);
     if (serve_cmd->parsed()) return saasgaps::cli::run_serve(serve);
     if (plot_cmd->parsed()) return saasgaps::cli::run_plot(plot);
     if (vtu_cmd->parsed()) return saasgaps::cli::run_export_vtu(vtu);
-  } catch (const saasgaps::ModelError& e) {
-    return report_model_error(e, import_cmd->parsed() ? "assembly" : "model");
-  } catch (const saasgaps::SingularModelError& e) {
-    // A mechanism is a defect of the model (model-format.md: "the model is restrained").
-    std::cerr << "invalid model: " << e.what() << '\n';
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return 1;
-  }
-  return 1;
+    return saasgaps::cli::exit_code::failure;
+  }, import_cmd->parsed() ? "assembly" : "model");
 }

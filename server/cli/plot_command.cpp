@@ -18,6 +18,7 @@ int run_plot(const PlotOptions& options) {
   const bool table = options.output_path.size() >= 4 &&
                      options.output_path.compare(options.output_path.size() - 4, 4, ".csv") == 0;
   if (!table) request.format = plot::image_format_for_path(options.output_path);
+  require_writable(options.output_path, "-o");
   request.width = options.width;
   request.height = options.height;
   try {

@@ -59,6 +59,10 @@ void write_result(const SolveOptions& options, const Write& write) {
 }  // namespace
 
 int run_solve(const SolveOptions& options) {
+  // Every output is checked before the solve: a typo in a directory should not cost the run.
+  require_writable(options.result_path, "-o");
+  require_writable(options.state_out, "--state-out");
+  require_writable(options.vtu_path, "--vtu");
   // The model is read straight from the text (no tree of the document); the digest that restart
   // states carry is computed on the way, when there is a state to write or read.
   std::string digest;

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -45,7 +46,11 @@ std::int64_t job_id(const httplib::Request& req) {
   std::int64_t id = 0;
   const std::string text = req.matches[1];
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), id);
-  if (error != std::errc() || end != text.data() + text.size()) throw JobNotFound(0);
+  // The route matched digits only, so the one failure is a number beyond int64: no such job.
+  if (error != std::errc() || end != text.data() + text.size()) {
+    throw HttpError(404, "Not Found", "no job " + text + " (job ids run from 1 to " +
+                                          std::to_string(std::numeric_limits<std::int64_t>::max()) + ")");
+  }
   return id;
 }
 
