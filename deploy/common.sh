@@ -14,8 +14,11 @@ BUILD_PACKAGES=(
   libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev libcli11-dev libcairo2-dev zlib1g-dev
   libgmsh-dev libexpat1-dev
 )
+# What the README's examples use: the model generators in schemas/examples (python3) and the
+# service walk-through (curl).
+EXAMPLE_PACKAGES=(python3 curl)
 # What the tests need on top.
-TEST_PACKAGES=(googletest libgtest-dev python3 python3-jsonschema python3-pil python3-meshio chromium chromium-driver)
+TEST_PACKAGES=(googletest libgtest-dev python3-jsonschema python3-pil python3-meshio chromium chromium-driver)
 
 # install_packages PKG...: apt-get installs the ones dpkg does not report as installed.
 install_packages() {
