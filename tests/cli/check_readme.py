@@ -14,7 +14,8 @@ holds the binary under test, schemas/ is a copy of the repository's, docs/images
 (`saasgaps serve` on an ephemeral port, a fresh database) stands in for the one `./deploy/run.sh`
 starts: 127.0.0.1:8080 in a command becomes its address. curl is run with --fail-with-body, so an
 HTTP error answer fails the command. Afterwards the walk-through's result.json must show that the
-cancel and the resume took effect: a converged result whose history has rows of two runs.
+cancel and the resume took effect: a converged result whose history has rows of two runs. Links in
+README.md and docs/*.md must stay inside the repository and name files that exist.
 """
 
 import argparse
@@ -157,16 +158,24 @@ def check_walk_through(directory):
     check(schedule[:2] == [2.0, 1.0], f"the resumed run's tensile moduli begin {schedule[:2]}, expected the new schedule [2, 1]")
 
 
+def check_links(repo):
+    """README.md and docs/*.md link only inside the repository, to files that exist."""
+    for document in [repo / "README.md", *sorted((repo / "docs").glob("*.md"))]:
+        text = document.read_text()
+        name = document.relative_to(repo)
+        check("../shared" not in text, f"{name} refers outside the repository (../shared)")
+        for target in re.findall(r"\]\(([^)#\s]+)[^)]*\)", text):
+            if not re.match(r"^[a-z]+:", target):
+                check((document.parent / target).exists(), f"{name} links to {target}, which does not exist")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--saasgaps", required=True)
     parser.add_argument("--repo", required=True, type=pathlib.Path)
     args = parser.parse_args()
     readme = (args.repo / "README.md").read_text()
-    check("../shared" not in readme, "README.md links outside the repository (../shared)")
-    for target in re.findall(r"\]\(([^)#]+)\)", readme):
-        if not re.match(r"^[a-z]+://", target):
-            check((args.repo / target).exists(), f"README.md links to {target}, which does not exist")
+    check_links(args.repo)
     with tempfile.TemporaryDirectory(prefix="saasgaps-readme-") as tmp:
         workspace = Workspace(args.saasgaps, args.repo, pathlib.Path(tmp))
         try:
