@@ -28,16 +28,12 @@ import sys
 import tempfile
 import time
 
+# check() and failures are shared with the plot checks.
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "plot"))
+from checking import check, failures  # noqa: E402
+
 SKIP = re.compile(r"<!--\s*readme-test:\s*skip\b")
 EXPECTED_EXIT = re.compile(r"#\s*exit (\d+)")
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL:", message)
-    return condition
 
 
 def blocks(readme):

@@ -9,10 +9,11 @@ failures = []
 
 
 def check(condition, message):
-    """Records a failed check and goes on, so one run reports every failure."""
+    """Records a failed check and goes on, so one run reports every failure; returns the condition."""
     if not condition:
         failures.append(message)
         print("FAIL:", message)
+    return condition
 
 
 def run(saasgaps, *args):

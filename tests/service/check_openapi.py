@@ -21,17 +21,12 @@ import sys
 import tempfile
 import time
 
-from jsonschema import Draft202012Validator, RefResolver
+# check() and failures are shared with the plot checks.
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "plot"))
+from checking import check, failures  # noqa: E402
+from jsonschema import Draft202012Validator, RefResolver  # noqa: E402
 
-failures = []
 covered = {}  # (path template, method) -> set of statuses seen
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL:", message)
-    return condition
 
 
 def sample(value, keep=10):
