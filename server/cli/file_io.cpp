@@ -37,6 +37,13 @@ void require_writable(const std::string& path, const std::string& option) {
   if (path.empty()) return;
   const std::string where = option + " " + path + ": ";
   if (fs::is_directory(path)) throw std::runtime_error(where + "is a directory; give a file name");
+  // A device or a pipe is written in place (see write_file_atomically): only it must be writable.
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (!error && fs::exists(status) && !fs::is_regular_file(status)) {
+    if (access(path.c_str(), W_OK) != 0) throw std::runtime_error(where + "not writable: " + std::strerror(errno));
+    return;
+  }
   const fs::path parent = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
   if (!fs::exists(parent)) throw std::runtime_error(where + "the directory " + parent.string() + " does not exist");
   if (!fs::is_directory(parent)) throw std::runtime_error(where + parent.string() + " is not a directory");

@@ -225,6 +225,10 @@ def exercise(client, repo, document_bytes, directory):
     client.request("GET", f"/v1/jobs/{job}/plots/effective.png?width=1", expect=400)
     client.request("POST", f"/v1/jobs/{job}/cancel", body="", expect=409)
     client.request("POST", f"/v1/jobs/{job}/resume", body="", expect=409)
+    # A result submitted as a model is named as such.
+    _, _, result = client.request("GET", f"/v1/jobs/{job}/result")
+    named = client.json("POST", "/v1/jobs", body=result, headers={"Content-Type": "application/json"}, expect=422)
+    check(named["errors"][0]["detail"].startswith("this is a result document"), f"a result as a model: {named}")
 
     # Jobs that do not exist, including an id beyond 64 bits.
     for missing in ("424242", "99999999999999999999"):
