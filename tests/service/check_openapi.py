@@ -176,6 +176,17 @@ class Client:
         sys.exit(f"job {job} did not reach {states} in {seconds} s")
 
 
+def multipart(parts):
+    """Request arguments for a multipart/form-data body of (field, file name, bytes) parts."""
+    boundary = "saasgaps-openapi-check"
+    body = b""
+    for field, filename, data in parts:
+        body += (f"--{boundary}\r\nContent-Disposition: form-data; name=\"{field}\"; filename=\"{filename}\"\r\n"
+                 f"Content-Type: application/octet-stream\r\n\r\n").encode() + data + b"\r\n"
+    body += f"--{boundary}--\r\n".encode()
+    return {"body": body, "headers": {"Content-Type": f"multipart/form-data; boundary={boundary}"}}
+
+
 def exercise(client, repo, document_bytes, directory):
     examples = repo / "schemas" / "examples"
     problem1 = (examples / "report-problem1.json").read_bytes()
@@ -272,6 +283,15 @@ def exercise(client, repo, document_bytes, directory):
     client.request("GET", f"/v1/jobs/{failed}/result", expect=200)
     client.request("GET", f"/v1/jobs/{failed}/result.vtu", expect=409)
     client.request("GET", f"/v1/jobs/{failed}/plots/effective.png", expect=409)
+
+    # Imports: an assembly and the mesh it names, as multipart/form-data.
+    assemblies = examples / "assemblies"
+    ring_fit = [("assembly", "ring-fit.assembly.json", (assemblies / "ring-fit.assembly.json").read_bytes()),
+                ("mesh", "ring-fit.geo", (assemblies / "ring-fit.geo").read_bytes())]
+    client.request("POST", "/v1/imports", **multipart(ring_fit), expect=200)
+    client.request("POST", "/v1/imports?submit=true", **multipart(ring_fit), expect=202)
+    client.request("POST", "/v1/imports", **multipart(ring_fit[1:]), expect=400)
+    client.request("POST", "/v1/imports", **multipart([("assembly", "a.json", b'{"mesh": 1}')]), expect=422)
 
     client.request("DELETE", f"/v1/jobs/{job}", expect=204)
     client.request("GET", f"/v1/jobs/{job}", expect=404)
