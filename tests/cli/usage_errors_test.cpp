@@ -31,7 +31,8 @@ TEST_F(UsageErrors, MistypedCommandIsNamedWithTheNearestOne) {
 TEST_F(UsageErrors, NoCommandListsTheCommands) {
   const Outcome r = saasgaps("");
   EXPECT_EQ(r.exit_code, usage);
-  EXPECT_CONTAINS(r.err, "a command is required (solve, validate, serve, plot, export-vtu");
+  EXPECT_CONTAINS(r.err, "a command is required (solve, validate, ");
+  EXPECT_CONTAINS(r.err, "serve, plot, export-vtu");
 }
 
 TEST_F(UsageErrors, MistypedOptionIsNamedWithTheNearestOneAndTheCommandsHelp) {
