@@ -13,12 +13,9 @@
 #include "cli/serve_command.hpp"
 #include "cli/solve_command.hpp"
 #include "cli/usage.hpp"
-#include "thread_environment.hpp"
 #include "cli/validate_command.hpp"
 
 int main(int argc, char** argv) {
-  saasgaps::ensure_thread_environment(argv);
-
   CLI::App app{"SAASGAPS: thermal stress analysis of plane and axisymmetric bodies in contact across gaps", "saasgaps"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "saasgaps " SAASGAPS_VERSION);
@@ -43,6 +40,9 @@ int main(int argc, char** argv) {
   solve_cmd->add_flag("-q,--quiet", solve.quiet, "No progress table");
   solve_cmd->add_flag("--pretty", solve.pretty, "Indent the result document (default: compact)");
   solve_cmd->add_option("--vtu", solve.vtu_path, "Also write the result as a VTK unstructured grid (.vtu)");
+  solve_cmd->add_option("--cache", solve.cache_dir,
+                        "Directory keeping fill-reducing orderings between runs: a mesh solved before skips "
+                        "its ordering (created if missing)");
 
   std::string validate_path;
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check a model and print every error with its JSON Pointer");

@@ -85,9 +85,11 @@ int run_solve(const SolveOptions& options) {
   changes.extrapolation_factor = options.extrapolation_factor;
 
   CommandLineObserver observer(options, digest);
+  std::optional<OrderingCache> cache;
+  if (!options.cache_dir.empty()) cache.emplace(options.cache_dir);
   std::optional<Solution> solution;
   try {
-    solution = solve(model, &observer, resume ? &*resume : nullptr, changes);
+    solution = solve(model, &observer, resume ? &*resume : nullptr, changes, cache ? &*cache : nullptr);
   } catch (const std::exception& e) {
     // The failure is reported by main(); the result document records it too.
     if (!options.result_path.empty()) {
