@@ -1,7 +1,6 @@
 #include "cholmod_memory.hpp"
 
 #include <SuiteSparse_config.h>
-#include <dlfcn.h>
 #include <malloc.h>
 #include <sys/mman.h>
 
@@ -85,12 +84,6 @@ void use_huge_pages_for_cholmod() {
     SuiteSparse_config.realloc_func = reallocate;
     SuiteSparse_config.free_func = release;
   });
-}
-
-void set_blas_threads(int threads) {
-  using SetThreads = void (*)(int);
-  static const auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-  if (set != nullptr) set(threads);
 }
 
 }  // namespace saasgaps

@@ -1,5 +1,5 @@
 #pragma once
-/// Process-wide settings for the BLAS and the memory CHOLMOD uses.
+/// Process-wide settings for the memory CHOLMOD uses.
 
 namespace saasgaps {
 
@@ -8,9 +8,5 @@ namespace saasgaps {
 /// the first numeric factorization 2 s slower than the next ones on a virtual machine. Installed
 /// once, before CHOLMOD allocates anything; later calls do nothing.
 void use_huge_pages_for_cholmod();
-
-/// Sets OpenBLAS's thread count when OpenBLAS provides the BLAS (Debian's libblas.so.3 alternative);
-/// does nothing with another BLAS.
-void set_blas_threads(int threads);
 
 }  // namespace saasgaps

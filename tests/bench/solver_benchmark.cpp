@@ -25,7 +25,6 @@
 #include "sparse_cholesky.hpp"
 #include "stiffness_system.hpp"
 #include "support/mesh_builder.hpp"
-#include "thread_environment.hpp"
 
 using namespace saasgaps;
 
@@ -111,7 +110,6 @@ double triplet_assembly_seconds(const Model& m, const DofMap& dofs, const SolidM
 }  // namespace
 
 int main(int argc, char** argv) {
-  ensure_thread_environment(argv);
   CLI::App app{"Times the SAASGAPS solver stages on a generated structured plane-strain model"};
   double target_dofs = 1.0e5;
   bool with_gaps = false;
