@@ -14,6 +14,7 @@
 #include "io/state_codec.hpp"
 #include "service/log.hpp"
 #include "service/metrics.hpp"
+#include "io/stored_state.hpp"
 
 namespace saasgaps::service {
 
@@ -26,13 +27,21 @@ class CommittingObserver final : public IterationObserver {
                      const std::atomic<bool>& stopping)
       : store_(store), hub_(hub), job_(job), digest_(std::move(digest)), stopping_(stopping) {}
 
+  /// Encodes and commits the row and state; the time that takes is recorded as the row's
+  /// commit_seconds in the next commit (a row cannot contain the duration of its own commit).
   void on_iteration(const IterationRecord& row, const RestartState& state) override {
-    store_.record_iteration(job_, row.iteration, io::history_row_text(row), io::state_to_cbor(state, digest_));
+    const auto started = std::chrono::steady_clock::now();
+    store_.record_iteration(job_, row.iteration, io::history_row_text(row), io::encode_stored_state(state, digest_),
+                            last_commit_);
+    last_commit_ = {row.iteration, std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()};
     hub_.notify();
     Metrics::global().count_iteration(row.seconds);
     log_info("job_iteration", {{"job", job_}, {"iteration", row.iteration}, {"attempt", row.attempt},
                                {"seconds", row.seconds}});
   }
+
+  /// The last committed iteration's commit time, for finish().
+  [[nodiscard]] const std::optional<CommitTime>& last_commit() const { return last_commit_; }
 
   bool stop_requested() override { return stopping_ || store_.cancel_requested(job_); }
 
@@ -42,6 +51,7 @@ class CommittingObserver final : public IterationObserver {
   std::int64_t job_;
   std::string digest_;
   const std::atomic<bool>& stopping_;
+  std::optional<CommitTime> last_commit_;
 };
 
 bool trim_after_jobs() {
@@ -73,7 +83,9 @@ ResumeOptions resume_options(const RunSettings& settings) {
 
 }  // namespace
 
-JobRunner::JobRunner(JobStore& store, EventHub& hub, int workers) : store_(store), hub_(hub) {
+JobRunner::JobRunner(JobStore& store, EventHub& hub, int workers, const std::filesystem::path& ordering_cache)
+    : store_(store), hub_(hub) {
+  if (!ordering_cache.empty()) ordering_cache_.emplace(ordering_cache);
   const std::string host = "pid " + std::to_string(::getpid());
   for (int w = 0; w < workers; ++w) {
     threads_.emplace_back([this, name = host + " worker " + std::to_string(w + 1)] { work(name); });
@@ -137,10 +149,11 @@ void JobRunner::run(const ClaimedJob& claimed) {
     std::string digest;
     const Model model = io::parse_model(claimed.model, &digest);
     std::optional<RestartState> state;
-    if (claimed.state) state = io::state_from_cbor(*claimed.state, digest);
+    if (claimed.state) state = io::decode_stored_state(*claimed.state, digest);
 
     CommittingObserver observer(store_, hub_, id, digest, stopping_);
-    const Solution solution = solve(model, &observer, state ? &*state : nullptr, resume_options(claimed.job.settings));
+    const Solution solution = solve(model, &observer, state ? &*state : nullptr, resume_options(claimed.job.settings),
+                                    ordering_cache_ ? &*ordering_cache_ : nullptr);
 
     JobState final_state = JobState::converged;
     std::string message = solution.message;
@@ -152,7 +165,8 @@ void JobRunner::run(const ClaimedJob& claimed) {
                                 "; resumes from there"
                           : "cancelled after iteration " + std::to_string(solution.iterations);
     }
-    store_.finish(id, final_state, io::result_text(model, solution), message, std::nullopt);
+    store_.finish(id, final_state, io::result_text(model, solution), message, std::nullopt,
+                  observer.last_commit());
     Metrics::global().count_finished(final_state);
     log_info("job_finished", {{"job", id}, {"state", to_string(final_state)}, {"iterations", solution.iterations},
                               {"message", message}});

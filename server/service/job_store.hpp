@@ -79,6 +79,12 @@ struct ClaimedJob {
   std::optional<std::vector<std::uint8_t>> state;  ///< the latest restart state, when resuming
 };
 
+/// How long an iteration's commit took (encoding its state, writing and committing it), in s.
+struct CommitTime {
+  int iteration = 0;
+  double seconds = 0.0;
+};
+
 struct JobEvent {
   std::int64_t id = 0;
   std::string kind;  ///< "state" or "iteration"
@@ -141,13 +147,16 @@ class JobStore {
   /// The oldest queued or interrupted job, now running (attempts + 1), or nothing.
   std::optional<ClaimedJob> claim(const std::string& worker);
   /// One finished iteration: its history row, its restart state (only the latest two are kept) and
-  /// its event, in one transaction.
+  /// its event, in one transaction. previous: the commit time of the iteration before, added to
+  /// its stored row as commit_seconds in the same transaction.
   void record_iteration(std::int64_t id, int iteration, const std::string& row,
-                        const std::vector<std::uint8_t>& state);
+                        const std::vector<std::uint8_t>& state, const std::optional<CommitTime>& previous = {});
   [[nodiscard]] bool cancel_requested(std::int64_t id);
-  /// A run ended: its final state, result document and message.
+  /// A run ended: its final state, result document and message (and the commit time of its last
+  /// iteration, added to that row as commit_seconds).
   void finish(std::int64_t id, JobState state, const std::optional<std::string>& result,
-              const std::optional<std::string>& message, const std::optional<std::string>& error);
+              const std::optional<std::string>& message, const std::optional<std::string>& error,
+              const std::optional<CommitTime>& last_commit = {});
 
   /// Cancels a queued or interrupted job at once, or asks a running one to stop at its next
   /// iteration boundary. JobConflict for a finished job.
