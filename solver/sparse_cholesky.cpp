@@ -40,7 +40,7 @@ struct SparseCholesky::Impl {
   double factor_entries = 0.0;
 
   Impl(const CscPattern& p, std::span<const Index> groups, const OrderingCache* cache) : pattern(p) {
-    use_huge_pages_for_cholmod();
+    use_mapped_memory_for_cholmod();
     configure_solver_threads();
     cholmod_l_start(&common);
     common.print = 0;
@@ -129,63 +129,22 @@ struct SparseCholesky::Impl {
   /// METIS on the graph whose vertices are the groups of unknowns, expanded to the unknowns (a
   /// group's members stay together, in order). Empty when METIS fails.
   std::vector<Index> group_order(std::span<const Index> groups) {
-    assert(static_cast<Index>(groups.size()) == pattern.n);
-    const Index count = groups.empty() ? 0 : *std::max_element(groups.begin(), groups.end()) + 1;
-    // Members of each group, CSR layout.
-    std::vector<Index> member_start(static_cast<size_t>(count) + 1, 0), members(groups.size());
-    for (Index g : groups) ++member_start[g + 1];
-    for (Index g = 0; g < count; ++g) member_start[g + 1] += member_start[g];
-    {
-      std::vector<Index> fill(member_start.begin(), member_start.end() - 1);
-      for (Index j = 0; j < pattern.n; ++j) members[fill[groups[j]]++] = j;
-    }
-    // The group graph, upper triangle by columns: group h is adjacent to g when some unknown of g
-    // couples to some unknown of h. Each unknown's column holds its couplings to lower unknowns and
-    // the upper ones see it from their own columns, so both directions are covered.
-    std::vector<std::vector<Index>> adjacency(static_cast<size_t>(count));
-    std::vector<Index> marker(static_cast<size_t>(count), -1);
-    for (Index g = 0; g < count; ++g) {
-      marker[g] = g;
-      for (Index m = member_start[g]; m < member_start[g + 1]; ++m) {
-        const Index j = members[m];
-        for (Index k = pattern.colptr[j]; k < pattern.colptr[j + 1]; ++k) {
-          const Index h = groups[pattern.rowind[k]];
-          if (marker[h] == g) continue;
-          marker[h] = g;
-          if (h < g) adjacency[g].push_back(h); else adjacency[h].push_back(g);
-        }
-      }
-    }
-    std::vector<Index> colptr(static_cast<size_t>(count) + 1, 0), rowind;
-    for (Index g = 0; g < count; ++g) {
-      std::sort(adjacency[g].begin(), adjacency[g].end());
-      adjacency[g].erase(std::unique(adjacency[g].begin(), adjacency[g].end()), adjacency[g].end());
-      colptr[g + 1] = colptr[g] + static_cast<Index>(adjacency[g].size());
-    }
-    rowind.reserve(static_cast<size_t>(colptr[count]));
-    for (auto& column : adjacency) {
-      rowind.insert(rowind.end(), column.begin(), column.end());
-      std::vector<Index>().swap(column);
-    }
+    const IndexGroups members = IndexGroups::of(groups);
+    CscPattern graph = group_pattern(pattern, groups, members);
     cholmod_sparse G{};
-    G.nrow = G.ncol = static_cast<size_t>(count);
-    G.nzmax = rowind.size();
-    G.p = colptr.data();
-    G.i = rowind.data();
+    G.nrow = G.ncol = static_cast<size_t>(graph.n);
+    G.nzmax = graph.rowind.size();
+    G.p = graph.colptr.data();
+    G.i = graph.rowind.data();
     G.stype = 1;
     G.itype = CHOLMOD_LONG;
     G.xtype = CHOLMOD_PATTERN;
     G.dtype = CHOLMOD_DOUBLE;
     G.sorted = 1;
     G.packed = 1;
-    std::vector<Index> group_perm(static_cast<size_t>(count));
+    std::vector<Index> group_perm(static_cast<size_t>(graph.n));
     if (!cholmod_l_metis(&G, nullptr, 0, 0, group_perm.data(), &common)) return {};
-    std::vector<Index> order;
-    order.reserve(groups.size());
-    for (Index g : group_perm) {
-      for (Index m = member_start[g]; m < member_start[g + 1]; ++m) order.push_back(members[m]);
-    }
-    return order;
+    return expand(group_perm, members);
   }
 
   ~Impl() {

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "analysis.hpp"
+#include "cholmod_memory.hpp"
 #include "dof_map.hpp"
 #include "element_data.hpp"
 #include "gap_closure.hpp"
@@ -182,7 +183,10 @@ int main(int argc, char** argv) {
   app.add_flag("--end-to-end", end_to_end,
                "Also time one whole iteration as saasgaps solve runs it (fresh objects; symbolic analysis "
                "beside the assembly; stress recovery)");
+  bool huge_pages = false;
+  app.add_flag("--huge-pages", huge_pages, "Advise CHOLMOD's large blocks to use transparent huge pages");
   CLI11_PARSE(app, argc, argv);
+  advise_huge_pages(huge_pages);
 
   const int n = std::max(2, static_cast<int>(std::lround(std::sqrt(target_dofs / 2.0))) - 1);
   const Model m = block_model(n, with_gaps);
@@ -256,7 +260,8 @@ int main(int argc, char** argv) {
     });
   }
   stages.print();
-  std::printf("threads in the process at the end: %.0f\n", status_field("Threads"));
+  std::printf("threads in the process at the end: %.0f; huge-page advice %s\n", status_field("Threads"),
+              huge_pages ? "on" : "off");
   std::printf("ratio assembly / repeated factorization: %.3f\n", assembly_s / numeric_s);
   if (with_gaps) std::printf("ratio gap iteration / repeated factorization: %.3f\n", gap_iteration_s / numeric_s);
   const auto first_over_later = [](const std::vector<double>& s) {
