@@ -160,7 +160,8 @@ int run_serve(const ServeOptions& options) {
                              " (is another server using it?)");
   }
 
-  service::JobRunner runner(store, hub, options.workers);
+  // Orderings live beside the database: resumes and jobs on a mesh solved before skip METIS.
+  service::JobRunner runner(store, hub, options.workers, options.database + ".orderings");
   std::thread signal_waiter([&server, read_end = shutdown_pipe[0]] {
     char byte = 0;
     while (read(read_end, &byte, 1) < 0 && errno == EINTR) {
