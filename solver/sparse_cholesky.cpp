@@ -242,6 +242,7 @@ void SparseCholesky::factorize(std::span<const double> values) {
   assert(static_cast<Index>(values.size()) == m.pattern.nnz());
   m.reference.resize(static_cast<size_t>(m.pattern.n));
   for (Index j = 0; j < m.pattern.n; ++j) m.reference[j] = std::abs(values[m.diagonal[j]]);
+  configure_solver_threads();  // this thread may not be the one that made the analysis
   // Parallel BLAS for this factorization only: outside it the workers would spin beside us.
   const BlasThreads threads(m.flops >= parallel_blas_flops ? max_blas_threads.load() : 1);
   Index worst = -1;
@@ -251,6 +252,7 @@ void SparseCholesky::factorize(std::span<const double> values) {
 }
 
 void SparseCholesky::solve(std::span<const double> b, std::span<double> x) {
+  configure_solver_threads();
   cholmod_solve_into(impl_->L, b, x, impl_->solve_work, impl_->common);
 }
 

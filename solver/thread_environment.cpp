@@ -18,14 +18,15 @@ Function* optional_function(const char* name) {
 }  // namespace
 
 void configure_solver_threads() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    // libgomp keeps max-active-levels process-wide: with 0, no parallel region is active, so each
-    // runs on the thread that reaches it and no OpenMP worker is ever created.
-    static auto* const set_levels = optional_function<void(int)>("omp_set_max_active_levels");
-    if (set_levels != nullptr) set_levels(0);
-    set_blas_threads(1);
-  });
+  static std::once_flag process_once;
+  std::call_once(process_once, [] { set_blas_threads(1); });
+  thread_local bool thread_done = false;
+  if (thread_done) return;
+  thread_done = true;
+  // With max-active-levels 0 no parallel region is active: each runs on the thread that reaches
+  // it and no OpenMP worker is created for it.
+  static auto* const set_levels = optional_function<void(int)>("omp_set_max_active_levels");
+  if (set_levels != nullptr) set_levels(0);
 }
 
 void set_blas_threads(int threads) {
