@@ -45,41 +45,46 @@ def lame_contact_pressure():
     return (DELTA - free_growth) / (inner - outer)
 
 
-def node_id(first, i, j):
-    return first + i + (RADIAL + 1) * j
+def node_id(first, i, j, radial=RADIAL):
+    return first + i + (radial + 1) * j
 
 
-def ring(first_node, first_element, r0, r1):
+def ring(first_node, first_element, r0, r1, radial=RADIAL, hoop=HOOP):
+    """Nodes and elements of one ring, radial x hoop quads (tests/bench/make_annulus.py scales it)."""
     nodes, elements = [], []
-    for j in range(HOOP + 1):
-        angle = 0.5 * math.pi * j / HOOP
+    for j in range(hoop + 1):
+        angle = 0.5 * math.pi * j / hoop
         # Exact zeros on the symmetry axes: the constraints there must hold the nodes that lie on them.
-        c = 1.0 if j == 0 else 0.0 if j == HOOP else math.cos(angle)
-        s = 0.0 if j == 0 else 1.0 if j == HOOP else math.sin(angle)
-        for i in range(RADIAL + 1):
-            r = r0 + (r1 - r0) * i / RADIAL
-            nodes.append({"id": node_id(first_node, i, j), "r": round(r * c, 9), "z": round(r * s, 9)})
-    for j in range(HOOP):
-        for i in range(RADIAL):
+        c = 1.0 if j == 0 else 0.0 if j == hoop else math.cos(angle)
+        s = 0.0 if j == 0 else 1.0 if j == hoop else math.sin(angle)
+        for i in range(radial + 1):
+            r = r0 + (r1 - r0) * i / radial
+            nodes.append({"id": node_id(first_node, i, j, radial), "r": round(r * c, 9), "z": round(r * s, 9)})
+    for j in range(hoop):
+        for i in range(radial):
             # Outward, then counter-clockwise round the axis: counter-clockwise in (x, y).
-            elements.append({"id": first_element + i + RADIAL * j, "material": 1,
-                             "nodes": [node_id(first_node, i, j), node_id(first_node, i + 1, j),
-                                       node_id(first_node, i + 1, j + 1), node_id(first_node, i, j + 1)]})
+            elements.append({"id": first_element + i + radial * j, "material": 1,
+                             "nodes": [node_id(first_node, i, j, radial), node_id(first_node, i + 1, j, radial),
+                                       node_id(first_node, i + 1, j + 1, radial),
+                                       node_id(first_node, i, j + 1, radial)]})
     return nodes, elements
 
 
-def model():
-    inner_nodes, inner_elements = ring(INNER_NODE, INNER_ELEMENT, A1, B1)
-    outer_nodes, outer_elements = ring(OUTER_NODE, OUTER_ELEMENT, A2, B2)
-    gaps = [{"id": GAP_ELEMENT + j,
-             "nodes": [node_id(INNER_NODE, RADIAL, j), node_id(OUTER_NODE, 0, j),
-                       node_id(OUTER_NODE, 0, j + 1), node_id(INNER_NODE, RADIAL, j + 1)],
-             "angle": round(90.0 * (j + 0.5) / HOOP, 6)}
-            for j in range(HOOP)]
+def model(radial=RADIAL, hoop=HOOP, ids=(INNER_NODE, OUTER_NODE, INNER_ELEMENT, OUTER_ELEMENT, GAP_ELEMENT)):
+    """The document; radial, hoop and the first ids (inner node, outer node, inner element, outer
+    element, gap) are parameters so that tests/bench/make_annulus.py can scale the mesh up."""
+    inner_node, outer_node, inner_element, outer_element, gap_element = ids
+    inner_nodes, inner_elements = ring(inner_node, inner_element, A1, B1, radial, hoop)
+    outer_nodes, outer_elements = ring(outer_node, outer_element, A2, B2, radial, hoop)
+    gaps = [{"id": gap_element + j,
+             "nodes": [node_id(inner_node, radial, j, radial), node_id(outer_node, 0, j, radial),
+                       node_id(outer_node, 0, j + 1, radial), node_id(inner_node, radial, j + 1, radial)],
+             "angle": round(90.0 * (j + 0.5) / hoop, 6)}
+            for j in range(hoop)]
     constraints = []
-    for first in (INNER_NODE, OUTER_NODE):
-        constraints += [{"node": node_id(first, i, 0), "z": 0.0} for i in range(RADIAL + 1)]
-        constraints += [{"node": node_id(first, i, HOOP), "r": 0.0} for i in range(RADIAL + 1)]
+    for first in (inner_node, outer_node):
+        constraints += [{"node": node_id(first, i, 0, radial), "z": 0.0} for i in range(radial + 1)]
+        constraints += [{"node": node_id(first, i, hoop, radial), "r": 0.0} for i in range(radial + 1)]
     p = lame_contact_pressure()
     description = (
         f"Shrink fit by heating, checked against Lame's thick-cylinder solution. Two concentric steel rings "
@@ -108,8 +113,8 @@ def model():
         "loads": {"temperatures": {"default": 0.0,
                                    "nodal": [{"node": n["id"], "T": DT} for n in inner_nodes]}},
         "solver": {"max_iterations": 40},
-        "output": {"watch_elements": [RADIAL, OUTER_ELEMENT],
-                   "watch_gaps": [GAP_ELEMENT, GAP_ELEMENT + HOOP // 2, GAP_ELEMENT + HOOP - 1]},
+        "output": {"watch_elements": [inner_element + radial - 1, outer_element],
+                   "watch_gaps": [gap_element, gap_element + hoop // 2, gap_element + hoop - 1]},
     }
 
 
