@@ -220,7 +220,7 @@ class GapContactAnalysis {
   }
 
   void store_displacements(std::vector<double>& u) const {
-    u.assign(2 * model_.nodes.size(), 0.0);
+    u.resize(2 * model_.nodes.size());  // every entry is written below
     for (std::size_t n = 0; n < model_.nodes.size(); ++n) {
       for (int dir = 0; dir < 2; ++dir) {
         const Index eq = dofs_.equation(static_cast<int>(n), dir);
