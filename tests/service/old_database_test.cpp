@@ -148,7 +148,7 @@ TEST_F(OldDatabase, MigratesAndItsInterruptedJobResumesFromTheOldState) {
   EXPECT_EQ(job.attempts, 2);
   const Solution uninterrupted = solve(model);
   EXPECT_EQ(without_wall_times(json::parse(*store.result(1))),
-            without_wall_times(io::result_document(model, uninterrupted)));
+            without_wall_times(json::parse(io::result_text(model, uninterrupted))));
 
   // Rows of the resumed run carry their commit time; the old rows stay as they were.
   const std::vector<std::string> rows = store.iterations(1, 0);
