@@ -50,7 +50,7 @@ def node_id(first, i, j, radial=RADIAL):
 
 
 def ring(first_node, first_element, r0, r1, radial=RADIAL, hoop=HOOP):
-    """Nodes and elements of one ring, radial x hoop quads (tests/bench/make_annulus.py scales it)."""
+    """Nodes and elements of one ring, radial x hoop quads."""
     nodes, elements = [], []
     for j in range(hoop + 1):
         angle = 0.5 * math.pi * j / hoop
@@ -72,7 +72,7 @@ def ring(first_node, first_element, r0, r1, radial=RADIAL, hoop=HOOP):
 
 def model(radial=RADIAL, hoop=HOOP, ids=(INNER_NODE, OUTER_NODE, INNER_ELEMENT, OUTER_ELEMENT, GAP_ELEMENT)):
     """The document; radial, hoop and the first ids (inner node, outer node, inner element, outer
-    element, gap) are parameters so that tests/bench/make_annulus.py can scale the mesh up."""
+    element, gap) are parameters so that the benchmarks can scale the mesh up."""
     inner_node, outer_node, inner_element, outer_element, gap_element = ids
     inner_nodes, inner_elements = ring(inner_node, inner_element, A1, B1, radial, hoop)
     outer_nodes, outer_elements = ring(outer_node, outer_element, A2, B2, radial, hoop)
@@ -90,7 +90,7 @@ def model(radial=RADIAL, hoop=HOOP, ids=(INNER_NODE, OUTER_NODE, INNER_ELEMENT, 
         f"Shrink fit by heating, checked against Lame's thick-cylinder solution. Two concentric steel rings "
         f"(E = 30e6 psi, nu = 0.3, alpha = 6.5e-6 /degF) in plane strain, a quarter annulus with symmetry on "
         f"both axes: the inner ring (r {A1} to {B1} in) is heated by {DT:g} degF, the outer ring (r {A2} to {B2} "
-        f"in) stays at the reference 0 degF, and {HOOP} gap elements (M radial) span the {DELTA} in radial gap. "
+        f"in) stays at the reference 0 degF, and {hoop} gap elements (M radial) span the {DELTA} in radial gap. "
         f"Free thermal growth of the inner ring's outside, (1 + nu) alpha dT b1 = "
         f"{(1 + NU) * ALPHA * DT * B1:.5f} in, exceeds the gap, so the gap closes everywhere. With "
         f"u(r) = (1 + nu)/E [(1 - 2 nu) A r + B/r] for sigma_r = A - B/r^2 in each ring (plane strain), the "
@@ -119,7 +119,6 @@ def model(radial=RADIAL, hoop=HOOP, ids=(INNER_NODE, OUTER_NODE, INNER_ELEMENT, 
 
 
 def main():
-    global RADIAL, HOOP, OUTER_NODE, OUTER_ELEMENT, GAP_ELEMENT
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--radial", type=int, default=RADIAL, help="elements through each ring's thickness")
     parser.add_argument("--hoop", type=int, default=HOOP, help="elements round the quarter (= gap elements)")
@@ -130,12 +129,10 @@ def main():
         path.write_text(json.dumps(model(), indent=1) + "\n")
     else:
         # Ids must not collide: the outer ring and the gaps are numbered past the inner ring.
-        RADIAL, HOOP = args.radial, args.hoop
-        OUTER_NODE = 1 + (RADIAL + 1) * (HOOP + 1)
-        OUTER_ELEMENT = 1 + RADIAL * HOOP
-        GAP_ELEMENT = 1 + 2 * RADIAL * HOOP
+        radial, hoop = args.radial, args.hoop
+        ids = (1, 1 + (radial + 1) * (hoop + 1), 1, 1 + radial * hoop, 1 + 2 * radial * hoop)
         path = args.output
-        path.write_text(json.dumps(model(), separators=(",", ":")) + "\n")
+        path.write_text(json.dumps(model(radial, hoop, ids), separators=(",", ":")) + "\n")
     print("wrote", path, f"(Lame contact pressure {lame_contact_pressure():.1f} psi)")
 
 

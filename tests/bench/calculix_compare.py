@@ -2,7 +2,7 @@
 """saasgaps against CalculiX (ccx, Debian's calculix-ccx) on the same gap problem: wall time and
 contact pressure.
 
-    python3 tests/bench/make_annulus.py --radial 61 --hoop 600 -o /tmp/annulus-150k.json
+    python3 schemas/examples/make_ring_model.py --radial 61 --hoop 600 -o /tmp/annulus-150k.json
     python3 tests/bench/calculix_compare.py /tmp/annulus-150k.json --rounds 3
 
 The model document is converted to a CalculiX deck: one layer of C3D8 bricks, every node held in z

@@ -1,6 +1,6 @@
 // saasgaps_orderings: fill-reducing orderings for the symbolic analysis, compared on one model.
 //
-//   python3 tests/bench/make_annulus.py --radial 155 --hoop 1600 -o /tmp/annulus-1m.json
+//   python3 schemas/examples/make_ring_model.py --radial 155 --hoop 1600 -o /tmp/annulus-1m.json
 //   build/tests/bench/saasgaps_orderings --model /tmp/annulus-1m.json
 //
 // Every candidate orders the node graph (one vertex per node's unknowns, as SparseCholesky does) and

@@ -1,7 +1,7 @@
 // saasgaps_service_vs_cli: the service's submit-to-converged time against `saasgaps solve` on the
 // same model, and what the service writes to disk for it.
 //
-//   python3 tests/bench/make_annulus.py --radial 61 --hoop 600 -o /tmp/annulus-150k.json
+//   python3 schemas/examples/make_ring_model.py --radial 61 --hoop 600 -o /tmp/annulus-150k.json
 //   build/tests/bench/saasgaps_service_vs_cli --model /tmp/annulus-150k.json --rounds 3
 //
 // Each round runs, one after the other (interleaved, so both see the same machine load):
@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Service submit-to-converged against saasgaps solve on the same model"};
   std::string model_path;
   int rounds = 3;
-  app.add_option("--model", model_path, "Model document (tests/bench/make_annulus.py writes large ones)")->required();
+  app.add_option("--model", model_path, "Model document (make_ring_model.py -o writes large ones)")->required();
   app.add_option("--rounds", rounds, "Interleaved rounds of CLI and service")->check(CLI::Range(1, 20));
   CLI11_PARSE(app, argc, argv);
 
