@@ -11,11 +11,14 @@ SAASGAPS_BUILD="${SAASGAPS_BUILD:-$SAASGAPS_ROOT/build}"
 BUILD_PACKAGES=(
   build-essential cmake pkg-config
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread
-  libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev libcli11-dev libcairo2-dev
+  libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev libcli11-dev libcairo2-dev zlib1g-dev
   libgmsh-dev libexpat1-dev
 )
+# What the README's examples use: the model generators in schemas/examples (python3) and the
+# service walk-through (curl).
+EXAMPLE_PACKAGES=(python3 curl)
 # What the tests need on top.
-TEST_PACKAGES=(googletest libgtest-dev python3 python3-jsonschema python3-pil python3-meshio chromium chromium-driver
+TEST_PACKAGES=(googletest libgtest-dev python3-jsonschema python3-pil python3-meshio chromium chromium-driver
   slurm-wlm munge)
 
 # install_packages PKG...: apt-get installs the ones dpkg does not report as installed.

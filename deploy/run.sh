@@ -4,7 +4,7 @@
 #   ./deploy/run.sh --port 9000 --workers 2
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-install_packages "${BUILD_PACKAGES[@]}"
+install_packages "${BUILD_PACKAGES[@]}" "${EXAMPLE_PACKAGES[@]}"
 build_project saasgaps
 mkdir -p "$SAASGAPS_ROOT/var"
 exec "$SAASGAPS_BUILD/saasgaps" serve --db "$SAASGAPS_ROOT/var/saasgaps.db" "$@"

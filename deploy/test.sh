@@ -5,7 +5,7 @@
 #   ./deploy/test.sh -L unit    extra arguments go to ctest
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-install_packages "${BUILD_PACKAGES[@]}" "${TEST_PACKAGES[@]}"
+install_packages "${BUILD_PACKAGES[@]}" "${EXAMPLE_PACKAGES[@]}" "${TEST_PACKAGES[@]}"
 build_project
 cd "$SAASGAPS_BUILD"
 ctest --output-on-failure --timeout 600 -j "$(nproc)" "$@"

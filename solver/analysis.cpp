@@ -63,8 +63,9 @@ struct Evaluation {
 
 class GapContactAnalysis {
  public:
-  GapContactAnalysis(const Model& model, const ResumeOptions& options)
+  GapContactAnalysis(const Model& model, const ResumeOptions& options, const OrderingCache* cache)
       : model_(model),
+        ordering_cache_(cache),
         max_iterations_(options.max_iterations.value_or(model.solver.max_iterations)),
         gap_settings_(effective_gap_settings(model, options)),
         dofs_(model),
@@ -175,7 +176,7 @@ class GapContactAnalysis {
     std::future<std::unique_ptr<SparseCholesky>> analysed;
     if (!cholesky_) {
       analysed = std::async(std::launch::async, [this] {
-        return std::make_unique<SparseCholesky>(system_.pattern(), dofs_.node_of_equation());
+        return std::make_unique<SparseCholesky>(system_.pattern(), dofs_.node_of_equation(), ordering_cache_);
       });
     }
     if (!assembled_solids_ || solid != assembled_materials_) {
@@ -219,7 +220,7 @@ class GapContactAnalysis {
   }
 
   void store_displacements(std::vector<double>& u) const {
-    u.assign(2 * model_.nodes.size(), 0.0);
+    u.resize(2 * model_.nodes.size());  // every entry is written below
     for (std::size_t n = 0; n < model_.nodes.size(); ++n) {
       for (int dir = 0; dir < 2; ++dir) {
         const Index eq = dofs_.equation(static_cast<int>(n), dir);
@@ -508,6 +509,7 @@ class GapContactAnalysis {
   }
 
   const Model& model_;
+  const OrderingCache* ordering_cache_;
   int max_iterations_;
   std::optional<GapSettings> gap_settings_;
   std::optional<GapClosure> gaps_;
@@ -528,8 +530,8 @@ class GapContactAnalysis {
 }  // namespace
 
 Solution solve(const Model& model, IterationObserver* observer, const RestartState* resume,
-               const ResumeOptions& options) {
-  GapContactAnalysis analysis(model, options);
+               const ResumeOptions& options, const OrderingCache* cache) {
+  GapContactAnalysis analysis(model, options, cache);
   return analysis.run(observer, resume);
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "iteration_record.hpp"
+#include "ordering_cache.hpp"
 #include "model.hpp"
 #include "restart_state.hpp"
 #include "solution.hpp"
@@ -29,8 +30,10 @@ struct ResumeOptions {
 };
 
 /// Runs a model from the start, or from `resume` when given. Throws SingularModelError for a
-/// mechanism, SolverError for a state that does not belong to the model.
+/// mechanism, SolverError for a state that does not belong to the model. cache (optional): where
+/// fill-reducing orderings are kept between runs (see OrderingCache); the answer does not depend
+/// on it.
 Solution solve(const Model& model, IterationObserver* observer = nullptr, const RestartState* resume = nullptr,
-               const ResumeOptions& options = {});
+               const ResumeOptions& options = {}, const OrderingCache* cache = nullptr);
 
 }  // namespace saasgaps

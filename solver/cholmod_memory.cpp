@@ -1,11 +1,11 @@
 #include "cholmod_memory.hpp"
 
 #include <SuiteSparse_config.h>
-#include <dlfcn.h>
 #include <malloc.h>
 #include <sys/mman.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -16,6 +16,7 @@ namespace saasgaps {
 namespace {
 
 constexpr std::size_t huge_threshold = std::size_t{32} << 20;
+std::atomic<bool> huge_page_advice{false};
 
 /// The big blocks we mapped, with their sizes; everything else came from malloc.
 std::mutex mapped_mutex;
@@ -35,7 +36,7 @@ void* allocate(std::size_t size) {
   void* p = mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (p == MAP_FAILED) return nullptr;
   // Advice only: without transparent huge pages the mapping works as usual.
-  madvise(p, size, MADV_HUGEPAGE);
+  if (huge_page_advice) madvise(p, size, MADV_HUGEPAGE);
   std::lock_guard lock(mapped_mutex);
   mapped()[p] = size;
   return p;
@@ -77,7 +78,9 @@ void* reallocate(void* p, std::size_t size) {
 
 }  // namespace
 
-void use_huge_pages_for_cholmod() {
+void advise_huge_pages(bool on) { huge_page_advice = on; }
+
+void use_mapped_memory_for_cholmod() {
   static std::once_flag once;
   std::call_once(once, [] {
     SuiteSparse_config.malloc_func = allocate;
@@ -85,12 +88,6 @@ void use_huge_pages_for_cholmod() {
     SuiteSparse_config.realloc_func = reallocate;
     SuiteSparse_config.free_func = release;
   });
-}
-
-void set_blas_threads(int threads) {
-  using SetThreads = void (*)(int);
-  static const auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-  if (set != nullptr) set(threads);
 }
 
 }  // namespace saasgaps

@@ -68,4 +68,60 @@ CscPattern CscPattern::from_cliques(Index n, std::size_t clique_count,
   return p;
 }
 
+IndexGroups IndexGroups::of(std::span<const Index> groups) {
+  const Index count = groups.empty() ? 0 : *std::max_element(groups.begin(), groups.end()) + 1;
+  IndexGroups g;
+  g.start.assign(static_cast<std::size_t>(count) + 1, 0);
+  g.members.resize(groups.size());
+  for (Index h : groups) ++g.start[h + 1];
+  for (Index h = 0; h < count; ++h) g.start[h + 1] += g.start[h];
+  std::vector<Index> fill(g.start.begin(), g.start.end() - 1);
+  for (std::size_t j = 0; j < groups.size(); ++j) g.members[fill[groups[j]]++] = static_cast<Index>(j);
+  return g;
+}
+
+CscPattern group_pattern(const CscPattern& pattern, std::span<const Index> groups, const IndexGroups& members) {
+  assert(static_cast<Index>(groups.size()) == pattern.n);
+  const Index count = members.count();
+  // Each index's column holds its couplings to lower indices and the upper ones see it from their
+  // own columns, so both directions are covered.
+  std::vector<std::vector<Index>> adjacency(static_cast<std::size_t>(count));
+  std::vector<Index> marker(static_cast<std::size_t>(count), -1);
+  for (Index g = 0; g < count; ++g) {
+    marker[g] = g;
+    for (Index m = members.start[g]; m < members.start[g + 1]; ++m) {
+      const Index j = members.members[m];
+      for (Index k = pattern.colptr[j]; k < pattern.colptr[j + 1]; ++k) {
+        const Index h = groups[pattern.rowind[k]];
+        if (marker[h] == g) continue;
+        marker[h] = g;
+        if (h < g) adjacency[g].push_back(h); else adjacency[h].push_back(g);
+      }
+    }
+  }
+  CscPattern q;
+  q.n = count;
+  q.colptr.assign(static_cast<std::size_t>(count) + 1, 0);
+  for (Index g = 0; g < count; ++g) {
+    std::sort(adjacency[g].begin(), adjacency[g].end());
+    adjacency[g].erase(std::unique(adjacency[g].begin(), adjacency[g].end()), adjacency[g].end());
+    q.colptr[g + 1] = q.colptr[g] + static_cast<Index>(adjacency[g].size());
+  }
+  q.rowind.reserve(static_cast<std::size_t>(q.colptr[count]));
+  for (auto& column : adjacency) {
+    q.rowind.insert(q.rowind.end(), column.begin(), column.end());
+    std::vector<Index>().swap(column);
+  }
+  return q;
+}
+
+std::vector<Index> expand(std::span<const Index> group_order, const IndexGroups& members) {
+  std::vector<Index> order;
+  order.reserve(members.members.size());
+  for (Index g : group_order) {
+    for (Index m = members.start[g]; m < members.start[g + 1]; ++m) order.push_back(members.members[m]);
+  }
+  return order;
+}
+
 }  // namespace saasgaps

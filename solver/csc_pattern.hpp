@@ -28,4 +28,20 @@ struct CscPattern {
                                  const std::function<std::span<const Index>(std::size_t)>& cliques);
 };
 
+/// Indices grouped (groups[i] = the group of index i, 0 .. count-1), members listed per group in
+/// ascending order, CSR layout: members[start[g] .. start[g + 1]).
+struct IndexGroups {
+  std::vector<Index> start;
+  std::vector<Index> members;
+  [[nodiscard]] Index count() const { return static_cast<Index>(start.size()) - 1; }
+  static IndexGroups of(std::span<const Index> groups);
+};
+
+/// The quotient graph: one vertex per group, (g, h) coupled when some index of g couples to some
+/// index of h in `pattern`; upper triangle with the diagonal left out (a graph for an ordering).
+CscPattern group_pattern(const CscPattern& pattern, std::span<const Index> groups, const IndexGroups& members);
+
+/// An ordering of the groups expanded to their members (a group's members stay together, in order).
+std::vector<Index> expand(std::span<const Index> group_order, const IndexGroups& members);
+
 }  // namespace saasgaps

@@ -6,11 +6,13 @@
 #include <atomic>
 #include <cassert>
 #include <cmath>
+#include <chrono>
 #include <string>
 #include <thread>
 
 #include "cholmod_memory.hpp"
 #include "cholmod_solve.hpp"
+#include "thread_environment.hpp"
 
 namespace saasgaps {
 
@@ -32,11 +34,14 @@ struct SparseCholesky::Impl {
   std::vector<Index> diagonal;  // position of A_jj in the value array
   std::vector<double> reference;  // |A_jj| of the last factorization
   const char* ordering_name = "METIS";
+  bool ordering_cached = false;
+  double ordering_seconds = 0.0;
   double flops = 0.0;         // of one numeric factorization, from the analysis
   double factor_entries = 0.0;
 
-  Impl(const CscPattern& p, std::span<const Index> groups) : pattern(p) {
-    use_huge_pages_for_cholmod();
+  Impl(const CscPattern& p, std::span<const Index> groups, const OrderingCache* cache) : pattern(p) {
+    use_mapped_memory_for_cholmod();
+    configure_solver_threads();
     cholmod_l_start(&common);
     common.print = 0;
     common.supernodal = CHOLMOD_SUPERNODAL;
@@ -68,11 +73,14 @@ struct SparseCholesky::Impl {
     }
 
     if (!groups.empty()) {
-      std::vector<Index> order = group_order(groups);
+      const auto started = std::chrono::steady_clock::now();
+      std::vector<Index> order = cached_or_computed_group_order(groups, cache);
+      ordering_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
       if (!order.empty()) {
+        // The same call whether the order was loaded or computed: the same factor either way.
         common.method[0].ordering = CHOLMOD_GIVEN;
         L = cholmod_l_analyze_p(&A, order.data(), nullptr, 0, &common);
-        ordering_name = "METIS on node groups";
+        ordering_name = ordering_cached ? "METIS on node groups (cached)" : "METIS on node groups";
       }
     }
     if (L == nullptr) {
@@ -96,66 +104,47 @@ struct SparseCholesky::Impl {
     factor_entries = common.lnz;
   }
 
+  /// What computes the group ordering, for the cache key: a change of method, options or library
+  /// version makes a new key.
+  std::string group_ordering_method() {
+    int version[3] = {0, 0, 0};
+    cholmod_l_version(version);
+    return "METIS_NodeND on node groups, CHOLMOD defaults, postorder; CHOLMOD " + std::to_string(version[0]) + "." +
+           std::to_string(version[1]) + "." + std::to_string(version[2]);
+  }
+
+  /// The group ordering from the cache when it holds a valid one, else computed (and stored).
+  std::vector<Index> cached_or_computed_group_order(std::span<const Index> groups, const OrderingCache* cache) {
+    if (cache == nullptr) return group_order(groups);
+    const PatternKey key = pattern_key(pattern, groups, group_ordering_method());
+    if (std::optional<std::vector<Index>> loaded = cache->load(key, pattern.n)) {
+      ordering_cached = true;
+      return std::move(*loaded);
+    }
+    std::vector<Index> order = group_order(groups);
+    if (!order.empty()) cache->store(key, order);
+    return order;
+  }
+
   /// METIS on the graph whose vertices are the groups of unknowns, expanded to the unknowns (a
   /// group's members stay together, in order). Empty when METIS fails.
   std::vector<Index> group_order(std::span<const Index> groups) {
-    assert(static_cast<Index>(groups.size()) == pattern.n);
-    const Index count = groups.empty() ? 0 : *std::max_element(groups.begin(), groups.end()) + 1;
-    // Members of each group, CSR layout.
-    std::vector<Index> member_start(static_cast<size_t>(count) + 1, 0), members(groups.size());
-    for (Index g : groups) ++member_start[g + 1];
-    for (Index g = 0; g < count; ++g) member_start[g + 1] += member_start[g];
-    {
-      std::vector<Index> fill(member_start.begin(), member_start.end() - 1);
-      for (Index j = 0; j < pattern.n; ++j) members[fill[groups[j]]++] = j;
-    }
-    // The group graph, upper triangle by columns: group h is adjacent to g when some unknown of g
-    // couples to some unknown of h. Each unknown's column holds its couplings to lower unknowns and
-    // the upper ones see it from their own columns, so both directions are covered.
-    std::vector<std::vector<Index>> adjacency(static_cast<size_t>(count));
-    std::vector<Index> marker(static_cast<size_t>(count), -1);
-    for (Index g = 0; g < count; ++g) {
-      marker[g] = g;
-      for (Index m = member_start[g]; m < member_start[g + 1]; ++m) {
-        const Index j = members[m];
-        for (Index k = pattern.colptr[j]; k < pattern.colptr[j + 1]; ++k) {
-          const Index h = groups[pattern.rowind[k]];
-          if (marker[h] == g) continue;
-          marker[h] = g;
-          if (h < g) adjacency[g].push_back(h); else adjacency[h].push_back(g);
-        }
-      }
-    }
-    std::vector<Index> colptr(static_cast<size_t>(count) + 1, 0), rowind;
-    for (Index g = 0; g < count; ++g) {
-      std::sort(adjacency[g].begin(), adjacency[g].end());
-      adjacency[g].erase(std::unique(adjacency[g].begin(), adjacency[g].end()), adjacency[g].end());
-      colptr[g + 1] = colptr[g] + static_cast<Index>(adjacency[g].size());
-    }
-    rowind.reserve(static_cast<size_t>(colptr[count]));
-    for (auto& column : adjacency) {
-      rowind.insert(rowind.end(), column.begin(), column.end());
-      std::vector<Index>().swap(column);
-    }
+    const IndexGroups members = IndexGroups::of(groups);
+    CscPattern graph = group_pattern(pattern, groups, members);
     cholmod_sparse G{};
-    G.nrow = G.ncol = static_cast<size_t>(count);
-    G.nzmax = rowind.size();
-    G.p = colptr.data();
-    G.i = rowind.data();
+    G.nrow = G.ncol = static_cast<size_t>(graph.n);
+    G.nzmax = graph.rowind.size();
+    G.p = graph.colptr.data();
+    G.i = graph.rowind.data();
     G.stype = 1;
     G.itype = CHOLMOD_LONG;
     G.xtype = CHOLMOD_PATTERN;
     G.dtype = CHOLMOD_DOUBLE;
     G.sorted = 1;
     G.packed = 1;
-    std::vector<Index> group_perm(static_cast<size_t>(count));
+    std::vector<Index> group_perm(static_cast<size_t>(graph.n));
     if (!cholmod_l_metis(&G, nullptr, 0, 0, group_perm.data(), &common)) return {};
-    std::vector<Index> order;
-    order.reserve(groups.size());
-    for (Index g : group_perm) {
-      for (Index m = member_start[g]; m < member_start[g + 1]; ++m) order.push_back(members[m]);
-    }
-    return order;
+    return expand(group_perm, members);
   }
 
   ~Impl() {
@@ -241,8 +230,8 @@ struct SparseCholesky::Impl {
   }
 };
 
-SparseCholesky::SparseCholesky(const CscPattern& pattern, std::span<const Index> groups)
-    : impl_(std::make_unique<Impl>(pattern, groups)) {}
+SparseCholesky::SparseCholesky(const CscPattern& pattern, std::span<const Index> groups, const OrderingCache* cache)
+    : impl_(std::make_unique<Impl>(pattern, groups, cache)) {}
 
 void SparseCholesky::set_max_blas_threads(int threads) { max_blas_threads = std::max(1, threads); }
 
@@ -253,7 +242,9 @@ void SparseCholesky::factorize(std::span<const double> values) {
   assert(static_cast<Index>(values.size()) == m.pattern.nnz());
   m.reference.resize(static_cast<size_t>(m.pattern.n));
   for (Index j = 0; j < m.pattern.n; ++j) m.reference[j] = std::abs(values[m.diagonal[j]]);
-  set_blas_threads(m.flops >= parallel_blas_flops ? max_blas_threads.load() : 1);
+  configure_solver_threads();  // this thread may not be the one that made the analysis
+  // Parallel BLAS for this factorization only: outside it the workers would spin beside us.
+  const BlasThreads threads(m.flops >= parallel_blas_flops ? max_blas_threads.load() : 1);
   Index worst = -1;
   if (!m.factor_cleanly(values.data(), singular_pivot_ratio, worst)) {
     throw NotPositiveDefinite("the stiffness matrix is singular", m.breakdown_columns(values, worst));
@@ -261,6 +252,7 @@ void SparseCholesky::factorize(std::span<const double> values) {
 }
 
 void SparseCholesky::solve(std::span<const double> b, std::span<double> x) {
+  configure_solver_threads();
   cholmod_solve_into(impl_->L, b, x, impl_->solve_work, impl_->common);
 }
 
@@ -269,5 +261,7 @@ double SparseCholesky::factor_nonzeros() const { return impl_->factor_entries; }
 double SparseCholesky::factor_flops() const { return impl_->flops; }
 const char* SparseCholesky::ordering() const { return impl_->ordering_name; }
 const cholmod_factor_struct* SparseCholesky::factor() const { return impl_->L; }
+bool SparseCholesky::ordering_from_cache() const { return impl_->ordering_cached; }
+double SparseCholesky::ordering_seconds() const { return impl_->ordering_seconds; }
 
 }  // namespace saasgaps

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "csc_pattern.hpp"
+#include "ordering_cache.hpp"
 
 struct cholmod_factor_struct;
 
@@ -37,7 +38,10 @@ class SparseCholesky {
   /// groups (optional, one entry per unknown): unknowns with the same group share their sparsity
   /// (the two displacement components of a node). The fill-reducing ordering is then computed on
   /// the graph of groups, about four times smaller, and expanded; without groups, on the unknowns.
-  explicit SparseCholesky(const CscPattern& pattern, std::span<const Index> groups = {});
+  /// cache (optional, with groups): the node-graph ordering of a pattern seen before is loaded from
+  /// it instead of computed, and a computed one is saved there.
+  explicit SparseCholesky(const CscPattern& pattern, std::span<const Index> groups = {},
+                          const OrderingCache* cache = nullptr);
   ~SparseCholesky();
   SparseCholesky(const SparseCholesky&) = delete;
   SparseCholesky& operator=(const SparseCholesky&) = delete;
@@ -53,6 +57,8 @@ class SparseCholesky {
   [[nodiscard]] double factor_nonzeros() const;  ///< nnz(L)
   [[nodiscard]] double factor_flops() const;     ///< floating-point operations of one factorization
   [[nodiscard]] const char* ordering() const;    ///< the fill-reducing ordering in use
+  [[nodiscard]] bool ordering_from_cache() const;  ///< loaded from the OrderingCache, not computed
+  [[nodiscard]] double ordering_seconds() const;   ///< computing (or loading) the ordering
 
   /// The last factorization, read-only, for UpdatableFactor (updatable_factor.hpp) to copy.
   [[nodiscard]] const cholmod_factor_struct* factor() const;

@@ -55,7 +55,8 @@ StiffnessSystem::StiffnessSystem(const Model& model, const DofMap& dofs) : model
   gap_positions_.erase(std::unique(gap_positions_.begin(), gap_positions_.end()), gap_positions_.end());
   solid_at_gap_positions_.resize(gap_positions_.size());
 
-  values_.assign(static_cast<std::size_t>(pattern_.nnz()), 0.0);
+  // values_ is sized by the first assemble_solids(): one touch of its pages, not a zero fill here
+  // and another there.
   rhs_.assign(static_cast<std::size_t>(dofs.size()), 0.0);
   solid_rhs_.assign(rhs_.size(), 0.0);
   assemble_external_loads();
@@ -117,7 +118,11 @@ void StiffnessSystem::scatter(std::size_t slot, const ElementMatrices& m, std::v
 }
 
 void StiffnessSystem::assemble_solids(const LawOf& law_of) {
-  std::fill(values_.begin(), values_.end(), 0.0);
+  if (values_.empty()) {
+    values_.assign(static_cast<std::size_t>(pattern_.nnz()), 0.0);
+  } else {
+    std::fill(values_.begin(), values_.end(), 0.0);
+  }
   solid_rhs_ = external_;
   for (std::size_t e = 0; e < model_.elements.size(); ++e) {
     scatter(e, element_matrices(solid_element_data(model_, e, law_of(e))), solid_rhs_);
@@ -127,6 +132,7 @@ void StiffnessSystem::assemble_solids(const LawOf& law_of) {
 }
 
 void StiffnessSystem::assemble_gaps(const LawOf& law_of) {
+  assert(!values_.empty() && "assemble_solids() comes first");
   for (std::size_t k = 0; k < gap_positions_.size(); ++k) values_[gap_positions_[k]] = solid_at_gap_positions_[k];
   std::copy(solid_rhs_.begin(), solid_rhs_.end(), rhs_.begin());
   const std::size_t solids = model_.elements.size();

@@ -34,6 +34,7 @@ class StiffnessSystem {
   void assemble_gaps(const LawOf& law_of);
 
   [[nodiscard]] const CscPattern& pattern() const { return pattern_; }
+  /// The matrix values (empty before the first assemble_solids()).
   [[nodiscard]] std::span<const double> values() const { return values_; }
   [[nodiscard]] std::span<const double> rhs() const { return rhs_; }
 

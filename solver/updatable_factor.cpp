@@ -3,6 +3,7 @@
 #include <cholmod.h>
 
 #include "cholmod_solve.hpp"
+#include "thread_environment.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -21,6 +22,7 @@ struct UpdatableFactor::Impl {
   std::vector<std::pair<Index, double>> column;
 
   Impl() {
+    configure_solver_threads();  // CHOLMOD's OpenMP loops serial on this thread, as for SparseCholesky
     cholmod_l_start(&common);
     common.print = 0;
   }

@@ -45,47 +45,52 @@ def lame_contact_pressure():
     return (DELTA - free_growth) / (inner - outer)
 
 
-def node_id(first, i, j):
-    return first + i + (RADIAL + 1) * j
+def node_id(first, i, j, radial=RADIAL):
+    return first + i + (radial + 1) * j
 
 
-def ring(first_node, first_element, r0, r1):
+def ring(first_node, first_element, r0, r1, radial=RADIAL, hoop=HOOP):
+    """Nodes and elements of one ring, radial x hoop quads."""
     nodes, elements = [], []
-    for j in range(HOOP + 1):
-        angle = 0.5 * math.pi * j / HOOP
+    for j in range(hoop + 1):
+        angle = 0.5 * math.pi * j / hoop
         # Exact zeros on the symmetry axes: the constraints there must hold the nodes that lie on them.
-        c = 1.0 if j == 0 else 0.0 if j == HOOP else math.cos(angle)
-        s = 0.0 if j == 0 else 1.0 if j == HOOP else math.sin(angle)
-        for i in range(RADIAL + 1):
-            r = r0 + (r1 - r0) * i / RADIAL
-            nodes.append({"id": node_id(first_node, i, j), "r": round(r * c, 9), "z": round(r * s, 9)})
-    for j in range(HOOP):
-        for i in range(RADIAL):
+        c = 1.0 if j == 0 else 0.0 if j == hoop else math.cos(angle)
+        s = 0.0 if j == 0 else 1.0 if j == hoop else math.sin(angle)
+        for i in range(radial + 1):
+            r = r0 + (r1 - r0) * i / radial
+            nodes.append({"id": node_id(first_node, i, j, radial), "r": round(r * c, 9), "z": round(r * s, 9)})
+    for j in range(hoop):
+        for i in range(radial):
             # Outward, then counter-clockwise round the axis: counter-clockwise in (x, y).
-            elements.append({"id": first_element + i + RADIAL * j, "material": 1,
-                             "nodes": [node_id(first_node, i, j), node_id(first_node, i + 1, j),
-                                       node_id(first_node, i + 1, j + 1), node_id(first_node, i, j + 1)]})
+            elements.append({"id": first_element + i + radial * j, "material": 1,
+                             "nodes": [node_id(first_node, i, j, radial), node_id(first_node, i + 1, j, radial),
+                                       node_id(first_node, i + 1, j + 1, radial),
+                                       node_id(first_node, i, j + 1, radial)]})
     return nodes, elements
 
 
-def model():
-    inner_nodes, inner_elements = ring(INNER_NODE, INNER_ELEMENT, A1, B1)
-    outer_nodes, outer_elements = ring(OUTER_NODE, OUTER_ELEMENT, A2, B2)
-    gaps = [{"id": GAP_ELEMENT + j,
-             "nodes": [node_id(INNER_NODE, RADIAL, j), node_id(OUTER_NODE, 0, j),
-                       node_id(OUTER_NODE, 0, j + 1), node_id(INNER_NODE, RADIAL, j + 1)],
-             "angle": round(90.0 * (j + 0.5) / HOOP, 6)}
-            for j in range(HOOP)]
+def model(radial=RADIAL, hoop=HOOP, ids=(INNER_NODE, OUTER_NODE, INNER_ELEMENT, OUTER_ELEMENT, GAP_ELEMENT)):
+    """The document; radial, hoop and the first ids (inner node, outer node, inner element, outer
+    element, gap) are parameters so that the benchmarks can scale the mesh up."""
+    inner_node, outer_node, inner_element, outer_element, gap_element = ids
+    inner_nodes, inner_elements = ring(inner_node, inner_element, A1, B1, radial, hoop)
+    outer_nodes, outer_elements = ring(outer_node, outer_element, A2, B2, radial, hoop)
+    gaps = [{"id": gap_element + j,
+             "nodes": [node_id(inner_node, radial, j, radial), node_id(outer_node, 0, j, radial),
+                       node_id(outer_node, 0, j + 1, radial), node_id(inner_node, radial, j + 1, radial)],
+             "angle": round(90.0 * (j + 0.5) / hoop, 6)}
+            for j in range(hoop)]
     constraints = []
-    for first in (INNER_NODE, OUTER_NODE):
-        constraints += [{"node": node_id(first, i, 0), "z": 0.0} for i in range(RADIAL + 1)]
-        constraints += [{"node": node_id(first, i, HOOP), "r": 0.0} for i in range(RADIAL + 1)]
+    for first in (inner_node, outer_node):
+        constraints += [{"node": node_id(first, i, 0, radial), "z": 0.0} for i in range(radial + 1)]
+        constraints += [{"node": node_id(first, i, hoop, radial), "r": 0.0} for i in range(radial + 1)]
     p = lame_contact_pressure()
     description = (
         f"Shrink fit by heating, checked against Lame's thick-cylinder solution. Two concentric steel rings "
         f"(E = 30e6 psi, nu = 0.3, alpha = 6.5e-6 /degF) in plane strain, a quarter annulus with symmetry on "
         f"both axes: the inner ring (r {A1} to {B1} in) is heated by {DT:g} degF, the outer ring (r {A2} to {B2} "
-        f"in) stays at the reference 0 degF, and {HOOP} gap elements (M radial) span the {DELTA} in radial gap. "
+        f"in) stays at the reference 0 degF, and {hoop} gap elements (M radial) span the {DELTA} in radial gap. "
         f"Free thermal growth of the inner ring's outside, (1 + nu) alpha dT b1 = "
         f"{(1 + NU) * ALPHA * DT * B1:.5f} in, exceeds the gap, so the gap closes everywhere. With "
         f"u(r) = (1 + nu)/E [(1 - 2 nu) A r + B/r] for sigma_r = A - B/r^2 in each ring (plane strain), the "
@@ -108,13 +113,12 @@ def model():
         "loads": {"temperatures": {"default": 0.0,
                                    "nodal": [{"node": n["id"], "T": DT} for n in inner_nodes]}},
         "solver": {"max_iterations": 40},
-        "output": {"watch_elements": [RADIAL, OUTER_ELEMENT],
-                   "watch_gaps": [GAP_ELEMENT, GAP_ELEMENT + HOOP // 2, GAP_ELEMENT + HOOP - 1]},
+        "output": {"watch_elements": [inner_element + radial - 1, outer_element],
+                   "watch_gaps": [gap_element, gap_element + hoop // 2, gap_element + hoop - 1]},
     }
 
 
 def main():
-    global RADIAL, HOOP, OUTER_NODE, OUTER_ELEMENT, GAP_ELEMENT
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--radial", type=int, default=RADIAL, help="elements through each ring's thickness")
     parser.add_argument("--hoop", type=int, default=HOOP, help="elements round the quarter (= gap elements)")
@@ -125,12 +129,10 @@ def main():
         path.write_text(json.dumps(model(), indent=1) + "\n")
     else:
         # Ids must not collide: the outer ring and the gaps are numbered past the inner ring.
-        RADIAL, HOOP = args.radial, args.hoop
-        OUTER_NODE = 1 + (RADIAL + 1) * (HOOP + 1)
-        OUTER_ELEMENT = 1 + RADIAL * HOOP
-        GAP_ELEMENT = 1 + 2 * RADIAL * HOOP
+        radial, hoop = args.radial, args.hoop
+        ids = (1, 1 + (radial + 1) * (hoop + 1), 1, 1 + radial * hoop, 1 + 2 * radial * hoop)
         path = args.output
-        path.write_text(json.dumps(model(), separators=(",", ":")) + "\n")
+        path.write_text(json.dumps(model(radial, hoop, ids), separators=(",", ":")) + "\n")
     print("wrote", path, f"(Lame contact pressure {lame_contact_pressure():.1f} psi)")
 
 

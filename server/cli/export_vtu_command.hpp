@@ -1,6 +1,7 @@
 #pragma once
-/// `saasgaps export-vtu RESULT.json -o FILE.vtu`: the result as a VTK unstructured grid for ParaView
-/// (see io/vtu_writer.hpp for what it holds).
+/// `saasgaps export-vtu RESULT.json -o FILE.vtu|FILE.pvd [--format binary|ascii]`: the result as a
+/// VTK unstructured grid for ParaView (see io/vtu_writer.hpp for what it holds); to a .pvd, the
+/// iterations as a collection of .vtu files beside it (io::write_vtu_series).
 
 #include <string>
 
@@ -9,6 +10,7 @@ namespace saasgaps::cli {
 struct ExportVtuOptions {
   std::string result_path;
   std::string output_path;
+  std::string format = "binary";  ///< binary | ascii
 };
 
 /// Exit code 0. Throws for unreadable or unsuitable results; main() maps that to exit 1.

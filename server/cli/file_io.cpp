@@ -7,9 +7,13 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <unistd.h>
+
 namespace saasgaps::cli {
 
 std::string read_file(const std::string& path) {
+  // An ifstream opens a directory without complaint and then reads nothing.
+  if (std::filesystem::is_directory(path)) throw std::runtime_error("cannot read " + path + ": it is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
   // Straight into a string of the file's size (a model of 10^6 unknowns is 60 MB): no stream
@@ -26,6 +30,26 @@ std::string read_file(const std::string& path) {
   while (in.read(piece, sizeof piece) || in.gcount() > 0) text.append(piece, static_cast<std::size_t>(in.gcount()));
   if (in.bad()) throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
   return text;
+}
+
+void require_writable(const std::string& path, const std::string& option) {
+  namespace fs = std::filesystem;
+  if (path.empty()) return;
+  const std::string where = option + " " + path + ": ";
+  if (fs::is_directory(path)) throw std::runtime_error(where + "is a directory; give a file name");
+  // A device or a pipe is written in place (see write_file_atomically): only it must be writable.
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (!error && fs::exists(status) && !fs::is_regular_file(status)) {
+    if (access(path.c_str(), W_OK) != 0) throw std::runtime_error(where + "not writable: " + std::strerror(errno));
+    return;
+  }
+  const fs::path parent = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
+  if (!fs::exists(parent)) throw std::runtime_error(where + "the directory " + parent.string() + " does not exist");
+  if (!fs::is_directory(parent)) throw std::runtime_error(where + parent.string() + " is not a directory");
+  if (access(parent.c_str(), W_OK) != 0) {
+    throw std::runtime_error(where + "the directory " + parent.string() + " is not writable: " + std::strerror(errno));
+  }
 }
 
 void write_file_atomically(const std::string& path, const std::string& content) {

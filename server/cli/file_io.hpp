@@ -7,8 +7,12 @@
 
 namespace saasgaps::cli {
 
-/// Throws std::runtime_error naming the file when it cannot be read.
+/// Throws std::runtime_error naming the file when it cannot be read (or is a directory).
 std::string read_file(const std::string& path);
+
+/// Checks, before any work starts, that `path` can be written: not a directory, and its directory
+/// exists and is writable. Throws std::runtime_error naming `option` (e.g. "-o") and the path.
+void require_writable(const std::string& path, const std::string& option);
 
 /// Writes to a temporary file next to path and renames it over path, so a reader (or a crash)
 /// never sees half a file. Devices and pipes (/dev/null, /dev/stdout) are written in place.

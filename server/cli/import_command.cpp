@@ -10,6 +10,7 @@
 namespace saasgaps::cli {
 
 int run_import(const ImportOptions& options) {
+  require_writable(options.model_path, "-o");  // before Gmsh meshes anything
   const nlohmann::json assembly = io::parse_document(read_file(options.assembly_path));
   const std::filesystem::path base = std::filesystem::absolute(options.assembly_path).parent_path();
   const nlohmann::json model = io::import_assembly(assembly, base);

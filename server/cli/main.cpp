@@ -1,37 +1,23 @@
 /// saasgaps: thermal stress analysis of plane and axisymmetric bodies in contact across gaps.
-/// Subcommands: solve, validate, import, serve, worker, plot, export-vtu. Exit codes (service.md): 0 converged or valid,
-/// 3 not converged, 2 bad model, 1 any other failure. Exceptions become exit codes here only.
+/// Subcommands: solve, validate, import, serve, worker, plot, export-vtu. Exit codes (cli/usage.hpp,
+/// docs/cli.md): 0 converged or valid, 3 not converged, 2 bad model, 1 any other failure, 64 a usage
+/// error. Usage errors and exceptions become exit codes in cli/usage.cpp only.
 
 #include <CLI/CLI.hpp>
 
-#include <iostream>
+#include <optional>
 
-#include "errors.hpp"
 #include "cli/export_vtu_command.hpp"
 #include "cli/import_command.hpp"
 #include "cli/plot_command.hpp"
 #include "cli/serve_command.hpp"
 #include "cli/solve_command.hpp"
-#include "thread_environment.hpp"
+#include "cli/usage.hpp"
 #include "cli/validate_command.hpp"
 #include "cli/worker_command.hpp"
 
-namespace {
-
-int report_model_error(const saasgaps::ModelError& e, const char* what) {
-  std::cerr << "invalid " << what << ": " << e.issues().size() << (e.issues().size() == 1 ? " error\n" : " errors\n");
-  for (const saasgaps::InputIssue& issue : e.issues()) {
-    std::cerr << (issue.pointer.empty() ? "(document)" : issue.pointer) << ": " << issue.detail << '\n';
-  }
-  return 2;
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
-  saasgaps::ensure_thread_environment(argv);
-
-  CLI::App app{"SAASGAPS: thermal stress analysis of plane and axisymmetric bodies in contact across gaps"};
+  CLI::App app{"SAASGAPS: thermal stress analysis of plane and axisymmetric bodies in contact across gaps", "saasgaps"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "saasgaps " SAASGAPS_VERSION);
 
@@ -42,19 +28,22 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--state-out", solve.state_out, "Write the restart state here after every iteration");
   solve_cmd->add_option("--resume", solve.resume_from, "Continue from a restart state written by --state-out");
   solve_cmd->add_option("--max-iterations", solve.max_iterations, "Iteration limit (overrides the model's)")
-      ->check(CLI::PositiveNumber);
+      ->check(saasgaps::cli::integer_range(1, 100000));
   solve_cmd->add_option("--schedule", solve.tensile_schedule,
                         "New tensile modulus schedule, absolute moduli, comma separated (with --resume: "
                         "started afresh at the next iteration)")
       ->delimiter(',')
-      ->check(CLI::PositiveNumber);
+      ->check(saasgaps::cli::positive_number());
   solve_cmd->add_option("--extrapolation", solve.extrapolation_factor, "Extrapolation factor XFACT, 0 <= f < 1")
       ->check(CLI::Range(0.0, 0.999999999));
   solve_cmd->add_option("--stop-after", solve.stop_after, "Stop after this many iterations, keeping the state")
-      ->check(CLI::PositiveNumber);
+      ->check(saasgaps::cli::integer_range(1, 100000));
   solve_cmd->add_flag("-q,--quiet", solve.quiet, "No progress table");
   solve_cmd->add_flag("--pretty", solve.pretty, "Indent the result document (default: compact)");
   solve_cmd->add_option("--vtu", solve.vtu_path, "Also write the result as a VTK unstructured grid (.vtu)");
+  solve_cmd->add_option("--cache", solve.cache_dir,
+                        "Directory keeping fill-reducing orderings between runs: a mesh solved before skips "
+                        "its ordering (created if missing)");
 
   std::string validate_path;
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check a model and print every error with its JSON Pointer");
@@ -131,32 +120,49 @@ int main(int argc, char** argv) {
       ->capture_default_str();
 
   saasgaps::cli::PlotOptions plot;
-  CLI::App* plot_cmd = app.add_subcommand("plot", "Draw a contour, closure or convergence plot of a result (PNG or SVG)");
+  CLI::App* plot_cmd = app.add_subcommand("plot", "Draw a contour, path, closure, contact-pressure or convergence plot "
+                                                  "of a result (PNG, SVG, or its numbers as CSV)");
   plot_cmd->add_option("result", plot.result_path, "Result document (JSON) written by solve")->required();
-  plot_cmd->add_option("-o,--output", plot.output_path, "Image file; the format follows the extension: .png or .svg")
+  plot_cmd->add_option("-o,--output", plot.output_path,
+                       "Image file; the format follows the extension: .png or .svg (.csv: the numbers of a path, "
+                       "closure or contact_pressure plot)")
       ->required();
-  plot_cmd->add_option("--field", plot.field, "A field to contour, or closure, or convergence")->capture_default_str();
+  plot_cmd->add_option("--field", plot.field, "A field to contour, or closure, contact_pressure, convergence")
+      ->capture_default_str();
   plot_cmd->add_option("--deformed", plot.deformed, "Draw the deformed mesh, displacements times SCALE (or 'auto')");
   plot_cmd->add_flag("--mesh", plot.mesh, "Draw the element edges");
   plot_cmd->add_option("--width", plot.width, "Image width, px")->check(CLI::Range(16, 8000))->capture_default_str();
   plot_cmd->add_option("--height", plot.height, "Image height, px")->check(CLI::Range(16, 8000))->capture_default_str();
   plot_cmd->add_option("--bands", plot.bands, "At most this many colour bands")->check(CLI::Range(2, 40))
       ->capture_default_str();
-  plot_cmd->add_option("--colormap", plot.color_map, "rainbow or viridis")
-      ->check(CLI::IsMember({"rainbow", "viridis"}))
+  plot_cmd->add_option("--levels", plot.levels, "Band levels: quantile (bands of equal area) or even (equal width)")
+      ->check(CLI::IsMember({"quantile", "even"}))
       ->capture_default_str();
-  plot_cmd->add_option("--along", plot.along, "Closure plot x axis: gap index or position along the gaps")
-      ->check(CLI::IsMember({"index", "position"}))
+  plot_cmd->add_option("--colormap", plot.color_map, "viridis, cividis or rainbow")
+      ->check(CLI::IsMember({"viridis", "cividis", "rainbow"}))
+      ->capture_default_str();
+  plot_cmd->add_option("--gaps", plot.gaps, "The row of gaps for closure and contact_pressure, in order: ids and "
+                                            "ranges, e.g. 81-98 or 5,7,9-12 (default: every gap)");
+  plot_cmd->add_option("--along", plot.along, "Gap row x axis: index, position (arc length), r or z")
+      ->check(CLI::IsMember({"index", "position", "r", "z"}))
+      ->capture_default_str();
+  plot_cmd->add_option("--path", plot.path, "Plot the field along this polyline of points: 'r0,z0;r1,z1;...'");
+  plot_cmd->add_option("--samples", plot.samples, "Points sampled along --path")->check(CLI::Range(2, 100000))
       ->capture_default_str();
 
   saasgaps::cli::ExportVtuOptions vtu;
   CLI::App* vtu_cmd = app.add_subcommand("export-vtu", "Write a result as a VTK unstructured grid (.vtu) for ParaView");
   vtu_cmd->add_option("result", vtu.result_path, "Result document (JSON) written by solve")->required();
-  vtu_cmd->add_option("-o,--output", vtu.output_path, "VTU file")->required();
+  vtu_cmd->add_option("-o,--output", vtu.output_path,
+                      "VTU file; a .pvd name writes every iteration's gap closures as a ParaView collection")
+      ->required();
+  vtu_cmd->add_option("--format", vtu.format, "binary (zlib-compressed) or ascii")
+      ->check(CLI::IsMember({"binary", "ascii"}))
+      ->capture_default_str();
 
-  CLI11_PARSE(app, argc, argv);
+  if (const std::optional<int> done = saasgaps::cli::parse_command_line(app, argc, argv)) return *done;
 
-  try {
+  return saasgaps::cli::run_command([&] {
     if (solve_cmd->parsed()) return saasgaps::cli::run_solve(solve);
     if (validate_cmd->parsed()) return saasgaps::cli::run_validate(validate_path);
     if (import_cmd->parsed()) return saasgaps::cli::run_import(import);
@@ -164,15 +170,6 @@ int main(int argc, char** argv) {
     if (plot_cmd->parsed()) return saasgaps::cli::run_plot(plot);
     if (worker_cmd->parsed()) return saasgaps::cli::run_worker_command(worker);
     if (vtu_cmd->parsed()) return saasgaps::cli::run_export_vtu(vtu);
-  } catch (const saasgaps::ModelError& e) {
-    return report_model_error(e, import_cmd->parsed() ? "assembly" : "model");
-  } catch (const saasgaps::SingularModelError& e) {
-    // A mechanism is a defect of the model (model-format.md: "the model is restrained").
-    std::cerr << "invalid model: " << e.what() << '\n';
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return 1;
-  }
-  return 1;
+    return saasgaps::cli::exit_code::failure;
+  }, import_cmd->parsed() ? "assembly" : "model");
 }

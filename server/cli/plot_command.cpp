@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "cli/file_io.hpp"
 #include "cli/result_file.hpp"
 #include "plot/plot_request.hpp"
@@ -13,7 +15,10 @@ int run_plot(const PlotOptions& options) {
   request.name = options.field;
   // Checked before the result is read: a typo should not cost the parse of a large document.
   plot::require_plot_name(request.name);
-  request.format = plot::image_format_for_path(options.output_path);
+  const bool table = options.output_path.size() >= 4 &&
+                     options.output_path.compare(options.output_path.size() - 4, 4, ".csv") == 0;
+  if (!table) request.format = plot::image_format_for_path(options.output_path);
+  require_writable(options.output_path, "-o");
   request.width = options.width;
   request.height = options.height;
   try {
@@ -23,9 +28,23 @@ int run_plot(const PlotOptions& options) {
   }
   request.contour.mesh = options.mesh;
   request.contour.max_bands = options.bands;
+  request.contour.levels = plot::level_rule(options.levels);
   request.contour.color_map = options.color_map;
-  request.closure.along = plot::closure_axis(options.along);
-  write_file_atomically(options.output_path, plot::render_plot(read_result_document(options.result_path), request));
+  try {
+    plot::set_gap_row(options.gaps, options.along, request.row);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--gaps/--along: ") + e.what());
+  }
+  if (!options.path.empty()) {
+    try {
+      request.path = plot::PathOptions{plot::parse_path(options.path), options.samples};
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--path: ") + e.what());
+    }
+  }
+  const nlohmann::json result = read_result_document(options.result_path);
+  write_file_atomically(options.output_path,
+                        table ? plot::render_table(result, request) : plot::render_plot(result, request));
   return 0;
 }
 

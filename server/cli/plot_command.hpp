@@ -1,8 +1,9 @@
 #pragma once
-/// `saasgaps plot RESULT.json --field NAME [--deformed SCALE|auto] [--mesh] [--width W --height H]
-/// -o FILE.png|svg`: a contour plot of a field, the closure plot (--field closure) or the
-/// convergence plot (--field convergence), drawn from a result document. The format follows the
-/// extension of -o.
+/// `saasgaps plot RESULT.json --field NAME [options] -o FILE.png|svg|csv`: a contour plot of a field,
+/// the field along a path (--path), the closure plot (--field closure), contact pressure and closure
+/// along a row of gaps (--field contact_pressure, --gaps, --along) or the convergence plot (--field
+/// convergence), drawn from a result document. The format follows the extension of -o; .csv writes
+/// the numbers of a path, closure or contact_pressure plot instead of the picture.
 
 #include <string>
 
@@ -17,8 +18,12 @@ struct PlotOptions {
   int width = 1200;
   int height = 800;
   int bands = 12;
-  std::string color_map = "rainbow";
-  std::string along = "index";  ///< closure plot x axis: index | position
+  std::string levels = "quantile";  ///< quantile | even
+  std::string color_map = "viridis";
+  std::string gaps;             ///< the gap row: "81-98" etc.; empty: every gap
+  std::string along = "index";  ///< gap row x axis: index | position | r | z
+  std::string path;             ///< "r0,z0;r1,z1;..": plot the field along it
+  int samples = 201;
 };
 
 /// Exit code 0. An unknown field, a bad --deformed or output extension is a std::invalid_argument

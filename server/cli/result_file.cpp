@@ -3,15 +3,28 @@
 #include <stdexcept>
 
 #include "cli/file_io.hpp"
+#include "io/document_kind.hpp"
 
 namespace saasgaps::cli {
 
 nlohmann::json read_result_document(const std::string& path) {
+  nlohmann::json document;
   try {
-    return nlohmann::json::parse(read_file(path));
+    document = nlohmann::json::parse(read_file(path));
   } catch (const nlohmann::json::parse_error& e) {
     throw std::runtime_error(path + " is not a result document (JSON): " + e.what());
   }
+  switch (io::document_kind(document)) {
+    case io::DocumentKind::result: return document;
+    case io::DocumentKind::model:
+      throw std::runtime_error(path + " is a model, not a result; run solve first: saasgaps solve " + path +
+                               " -o RESULT.json");
+    case io::DocumentKind::restart_state:
+      throw std::runtime_error(path + " is a restart state, not a result; the result is what saasgaps solve -o writes");
+    case io::DocumentKind::unknown: break;
+  }
+  throw std::runtime_error(path + " is not a result document: it has no status and history (it is written by "
+                                  "saasgaps solve -o)");
 }
 
 }  // namespace saasgaps::cli

@@ -195,7 +195,8 @@ int run_serve(const ServeOptions& options) {
   if (slurm) {
     slurm_executor.emplace(store, hub, slurm_options(options, port));
   } else {
-    runner.emplace(store, hub, options.workers);
+    // Orderings live beside the database: resumes and jobs on a mesh solved before skip METIS.
+    runner.emplace(store, hub, options.workers, options.database + ".orderings");
   }
   std::thread signal_waiter([&server, read_end = shutdown_pipe[0]] {
     char byte = 0;

@@ -59,6 +59,10 @@ void write_result(const SolveOptions& options, const Write& write) {
 }  // namespace
 
 int run_solve(const SolveOptions& options) {
+  // Every output is checked before the solve: a typo in a directory should not cost the run.
+  require_writable(options.result_path, "-o");
+  require_writable(options.state_out, "--state-out");
+  require_writable(options.vtu_path, "--vtu");
   // The model is read straight from the text (no tree of the document); the digest that restart
   // states carry is computed on the way, when there is a state to write or read.
   std::string digest;
@@ -81,9 +85,11 @@ int run_solve(const SolveOptions& options) {
   changes.extrapolation_factor = options.extrapolation_factor;
 
   CommandLineObserver observer(options, digest);
+  std::optional<OrderingCache> cache;
+  if (!options.cache_dir.empty()) cache.emplace(options.cache_dir);
   std::optional<Solution> solution;
   try {
-    solution = solve(model, &observer, resume ? &*resume : nullptr, changes);
+    solution = solve(model, &observer, resume ? &*resume : nullptr, changes, cache ? &*cache : nullptr);
   } catch (const std::exception& e) {
     // The failure is reported by main(); the result document records it too.
     if (!options.result_path.empty()) {

@@ -21,6 +21,7 @@ struct SolveOptions {
   bool quiet = false;
   bool pretty = false;   ///< indent the result document (two spaces); compact by default
   std::string vtu_path;  ///< also write the result as a VTU file (io/vtu_writer.hpp)
+  std::string cache_dir;  ///< keep fill-reducing orderings here between runs (empty: none)
 };
 
 /// Exit code: 0 converged, 3 not converged (or stopped). Throws for bad input and failures; main()

@@ -1,18 +1,30 @@
 #include "io/model_reader.hpp"
 
+#include "errors.hpp"
+#include "io/document_kind.hpp"
 #include "io/model_stream.hpp"
 #include "io/section_reader.hpp"
 
 namespace saasgaps::io {
 
-Model read_model(const nlohmann::json& document) { return SectionReader().read(document); }
+Model read_model(const nlohmann::json& document) {
+  try {
+    return SectionReader().read(document);
+  } catch (const ModelError& e) {
+    rethrow_naming_document(e);
+  }
+}
 
 nlohmann::json parse_document(std::string_view text) { return parse_tree(text); }
 
 Model parse_model(std::string_view text, std::string* digest) {
-  SectionReader reader;
-  stream_model(text, reader, digest);
-  return reader.finish();
+  try {
+    SectionReader reader;
+    stream_model(text, reader, digest);
+    return reader.finish();
+  } catch (const ModelError& e) {
+    rethrow_naming_document(e);
+  }
 }
 
 }  // namespace saasgaps::io

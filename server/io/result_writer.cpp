@@ -2,6 +2,7 @@
 
 #include "element_data.hpp"
 #include "io/history_json.hpp"
+#include "io/result_annotations.hpp"
 
 namespace saasgaps::io {
 
@@ -64,6 +65,7 @@ void write_gap(JsonWriter& out, const Model& model, const GapElement& gap, const
   out.begin_object()
       .field("angle", gap.angle_deg)
       .field("closure", g.closure)
+      .field("contact_pressure", contact_pressure(g.sigma_m))
       .field("converged", g.converged)
       .field("eps_m", g.eps_m);
   if (!g.converged) out.field("failure", describe(g.failure));
@@ -94,8 +96,9 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s) {
   out.end_array();
   out.field("reference_temperature", model.reference_temperature)
       .field("status", s.status == RunStatus::converged ? "converged" : "not_converged")
-      .field("title", model.title)
-      .end_object();
+      .field("title", model.title);
+  write_units(out, model.units);  // "units" sorts last
+  out.end_object();
 }
 
 void write_failed_result(JsonWriter& out, const std::string& message) {

@@ -3,12 +3,13 @@
 /// history, node displacements, element stresses and strains, gap states. Additions to the
 /// contract, so that a result stands on its own for plotting and export: node coordinates r, z and
 /// temperature T; element corner node ids, material id and temperature; gap corner node ids and
-/// angle (M axis); title, analysis, reference_temperature; in each history row, gap_closures
-/// (every gap's closure, model order).
+/// angle (M axis); title, analysis, reference_temperature; units (the model's unit names, when it
+/// gives any) and each gap's contact_pressure (io/result_annotations.hpp); in each history row,
+/// gap_closures (every gap's closure, model order).
 ///
 /// Every object's members are in alphabetical order (byte order: "T" before "id"), as the tree
 /// writer this replaces printed them, so the text is the same: analysis, elements, gaps, history,
-/// iterations, message, nodes, reference_temperature, status, title. Nothing but the writer's
+/// iterations, message, nodes, reference_temperature, status, title, units. Nothing but the writer's
 /// 64 KiB buffer is held: the document never exists as a tree.
 
 #include <string>

@@ -1,7 +1,6 @@
 #include "io/vtu_writer.hpp"
 
-#include <charconv>
-#include <functional>
+#include <cstdio>
 #include <stdexcept>
 #include <unordered_map>
 #include <vector>
@@ -9,52 +8,6 @@
 namespace saasgaps::io {
 
 using nlohmann::json;
-
-namespace {
-
-constexpr int vtk_triangle = 5;
-constexpr int vtk_quad = 9;
-
-/// Shortest text that reads back as the same double (std::to_chars round trip).
-void append_number(std::string& out, double value) {
-  char text[32];
-  const auto [end, error] = std::to_chars(text, text + sizeof text, value);
-  out.append(text, error == std::errc() ? end : text);
-}
-
-void append_number(std::string& out, long long value) {
-  char text[24];
-  const auto [end, error] = std::to_chars(text, text + sizeof text, value);
-  out.append(text, error == std::errc() ? end : text);
-}
-
-/// <DataArray> of one value per item, from value(i) for i < count.
-template <typename Value>
-void data_array(std::string& out, const char* type, const std::string& name, std::size_t count,
-                const std::function<Value(std::size_t)>& value) {
-  out += "        <DataArray type=\"";
-  out += type;
-  out += "\" Name=\"" + name + "\" format=\"ascii\">\n          ";
-  for (std::size_t i = 0; i < count; ++i) {
-    if (i > 0) out += (i % 8 == 0) ? "\n          " : " ";
-    append_number(out, value(i));
-  }
-  out += "\n        </DataArray>\n";
-}
-
-/// A result's cell: a solid element or a gap element, with its JSON.
-struct Cell {
-  const json* data;
-  bool gap;
-};
-
-/// XML comments may not hold "--".
-std::string comment_text(std::string s) {
-  for (std::size_t at = s.find("--"); at != std::string::npos; at = s.find("--")) s.erase(at, 1);
-  return s;
-}
-
-}  // namespace
 
 int vtu_gap_state_code(const std::string& state) {
   if (state == "open") return 0;
@@ -66,99 +19,50 @@ int vtu_gap_state_code(const std::string& state) {
 
 namespace {
 
-std::string vtu_document(const json& result) {
+constexpr std::uint8_t vtk_triangle = 5;
+constexpr std::uint8_t vtk_quad = 9;
+
+/// A result's cell: a solid element or a gap element, with its JSON.
+struct Cell {
+  const json* data;
+  bool gap;
+};
+
+/// The mesh of a result: nodes, cells (solids then gaps) and the piece's geometry arrays.
+struct Mesh {
+  const json* nodes = nullptr;
+  std::vector<Cell> cells;
+  VtuPiece piece;
+};
+
+Mesh read_mesh(const json& result) {
   if (result.value("status", "") == "failed") {
     throw std::invalid_argument("the run failed, so the result has no mesh to export: " + result.value("message", ""));
   }
-  const json& nodes = result.at("nodes");
+  Mesh m;
+  m.nodes = &result.at("nodes");
+  const json& nodes = *m.nodes;
   if (nodes.empty() || !nodes.at(0).contains("r")) {
     throw std::invalid_argument("the result document has no node coordinates (nodes[].r, .z): solve the model again");
   }
-  std::unordered_map<int, long long> index;
-  for (std::size_t n = 0; n < nodes.size(); ++n) index.emplace(nodes[n].at("id").get<int>(), static_cast<long long>(n));
-  std::vector<Cell> cells;
-  for (const json& e : result.at("elements")) cells.push_back({&e, false});
+  std::unordered_map<int, std::int64_t> index;
+  for (std::size_t n = 0; n < nodes.size(); ++n) index.emplace(nodes[n].at("id").get<int>(), static_cast<std::int64_t>(n));
+  for (const json& e : result.at("elements")) m.cells.push_back({&e, false});
   if (result.contains("gaps")) {
-    for (const json& g : result.at("gaps")) cells.push_back({&g, true});  // pointers into result: no copy
+    for (const json& g : result.at("gaps")) m.cells.push_back({&g, true});  // pointers into result: no copy
   }
-
-  std::string out;
-  out.reserve(256 * (nodes.size() + cells.size()));
-  out += "<?xml version=\"1.0\"?>\n";
-  out += "<!-- SAASGAPS result: " + comment_text(result.value("title", "")) + " (" +
-         comment_text(result.value("analysis", "")) + ", " + comment_text(result.value("status", "")) + ") -->\n";
-  out += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n";
-  out += "  <UnstructuredGrid>\n";
-  out += "    <Piece NumberOfPoints=\"" + std::to_string(nodes.size()) + "\" NumberOfCells=\"" +
-         std::to_string(cells.size()) + "\">\n";
-
-  // ---- Point data.
-  out += "      <PointData Scalars=\"temperature\" Vectors=\"displacement\">\n";
-  out += "        <DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  m.piece.points = nodes.size();
+  m.piece.cells = m.cells.size();
+  m.piece.comment = "SAASGAPS result: " + result.value("title", "") + " (" + result.value("analysis", "") + ", " +
+                    result.value("status", "") + ")";
+  std::vector<double> xyz;
   for (const json& n : nodes) {
-    out += "          ";
-    append_number(out, n.at("u_r").get<double>());
-    out += ' ';
-    append_number(out, n.at("u_z").get<double>());
-    out += " 0\n";
+    xyz.insert(xyz.end(), {n.at("r").get<double>(), n.at("z").get<double>(), 0.0});
   }
-  out += "        </DataArray>\n";
-  data_array<double>(out, "Float64", "temperature", nodes.size(), [&](std::size_t i) { return nodes[i].value("T", 0.0); });
-  data_array<long long>(out, "Int32", "node_id", nodes.size(),
-                        [&](std::size_t i) { return nodes[i].at("id").get<long long>(); });
-  out += "      </PointData>\n";
-
-  // ---- Cell data.
-  out += "      <CellData Scalars=\"effective\">\n";
-  const std::size_t count = cells.size();
-  const auto ints = [&](const char* name, const std::function<long long(const Cell&)>& value) {
-    data_array<long long>(out, "Int32", name, count, [&](std::size_t i) { return value(cells[i]); });
-  };
-  const auto reals = [&](const char* name, const std::function<double(const Cell&)>& value) {
-    data_array<double>(out, "Float64", name, count, [&](std::size_t i) { return value(cells[i]); });
-  };
-  // Element-only values (0 on gaps) and gap-only values (0 on solids), by their document keys.
-  const auto element_real = [&](const char* name, const char* key) {
-    reals(name, [key](const Cell& c) { return c.gap ? 0.0 : c.data->at(key).get<double>(); });
-  };
-  const auto gap_real = [&](const char* name, const char* key) {
-    reals(name, [key](const Cell& c) { return c.gap ? c.data->at(key).get<double>() : 0.0; });
-  };
-  ints("element_id", [](const Cell& c) { return c.data->at("id").get<long long>(); });
-  ints("is_gap", [](const Cell& c) { return c.gap ? 1LL : 0LL; });
-  ints("material", [](const Cell& c) { return c.gap ? 0LL : c.data->value("material", 0LL); });
-  for (const char* key : {"sigma_r", "sigma_z", "tau_rz", "sigma_theta", "sigma_1", "sigma_2"}) element_real(key, key);
-  element_real("principal_angle", "angle");
-  element_real("effective", "effective");
-  for (const char* key : {"eps_r", "eps_z", "gamma_rz", "eps_theta"}) element_real(key, key);
-  ints("yield", [](const Cell& c) { return !c.gap && c.data->at("yield").get<bool>() ? 1LL : 0LL; });
-  ints("plastic_converged",
-       [](const Cell& c) { return c.gap || c.data->at("plastic_converged").get<bool>() ? 1LL : 0LL; });
-  gap_real("gap_closure", "closure");
-  gap_real("gap_eps_m", "eps_m");
-  gap_real("gap_sigma_m", "sigma_m");
-  gap_real("gap_modulus", "modulus");
-  gap_real("gap_angle", "angle");
-  ints("gap_state",
-       [](const Cell& c) { return c.gap ? vtu_gap_state_code(c.data->at("state").get<std::string>()) : -1LL; });
-  ints("gap_converged", [](const Cell& c) { return c.gap ? (c.data->at("converged").get<bool>() ? 1LL : 0LL) : -1LL; });
-  out += "      </CellData>\n";
-
-  // ---- Geometry.
-  out += "      <Points>\n";
-  out += "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const json& n : nodes) {
-    out += "          ";
-    append_number(out, n.at("r").get<double>());
-    out += ' ';
-    append_number(out, n.at("z").get<double>());
-    out += " 0\n";
-  }
-  out += "        </DataArray>\n";
-  out += "      </Points>\n";
-
-  std::vector<long long> connectivity, offsets;
-  for (const Cell& c : cells) {
+  m.piece.coordinates = {"Points", 3, std::move(xyz)};
+  std::vector<std::int64_t> connectivity, offsets;
+  std::vector<std::uint8_t> types;
+  for (const Cell& c : m.cells) {
     const json& ids = c.data->at("nodes");
     if (ids.size() != 3 && ids.size() != 4) {
       throw std::invalid_argument("element " + c.data->at("id").dump() + " has " + std::to_string(ids.size()) +
@@ -172,29 +76,157 @@ std::string vtu_document(const json& result) {
       }
       connectivity.push_back(found->second);
     }
-    offsets.push_back(static_cast<long long>(connectivity.size()));
+    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+    types.push_back(ids.size() == 4 ? vtk_quad : vtk_triangle);
   }
-  out += "      <Cells>\n";
-  data_array<long long>(out, "Int64", "connectivity", connectivity.size(), [&](std::size_t i) { return connectivity[i]; });
-  data_array<long long>(out, "Int64", "offsets", offsets.size(), [&](std::size_t i) { return offsets[i]; });
-  data_array<long long>(out, "UInt8", "types", cells.size(), [&](std::size_t i) {
-    return static_cast<long long>(cells[i].data->at("nodes").size() == 4 ? vtk_quad : vtk_triangle);
-  });
-  out += "      </Cells>\n";
-  out += "    </Piece>\n";
-  out += "  </UnstructuredGrid>\n";
-  out += "</VTKFile>\n";
-  return out;
+  m.piece.connectivity = {"connectivity", 1, std::move(connectivity)};
+  m.piece.offsets = {"offsets", 1, std::move(offsets)};
+  m.piece.types = {"types", 1, std::move(types)};
+  return m;
+}
+
+/// " [psi]" when the result names the unit of that kind ("stress", "length", "temperature").
+std::string unit_suffix(const json& result, const char* kind) {
+  const auto units = result.find("units");
+  if (units == result.end() || !units->is_object()) return "";
+  const std::string name = units->value(kind, "");
+  return name.empty() ? "" : " [" + name + "]";
+}
+
+std::vector<VtuArray> id_arrays(const Mesh& m) {
+  std::vector<std::int32_t> ids, gap;
+  for (const Cell& c : m.cells) {
+    ids.push_back(c.data->at("id").get<std::int32_t>());
+    gap.push_back(c.gap ? 1 : 0);
+  }
+  return {{"element_id", 1, std::move(ids)}, {"is_gap", 1, std::move(gap)}};
+}
+
+std::string vtu_document(const json& result, VtuFormat format) {
+  Mesh m = read_mesh(result);
+  const json& nodes = *m.nodes;
+  const std::string stress = unit_suffix(result, "stress"), length = unit_suffix(result, "length"),
+                    temperature = unit_suffix(result, "temperature");
+
+  // ---- Point data.
+  std::vector<double> displacement, temperatures;
+  std::vector<std::int32_t> node_ids;
+  for (const json& n : nodes) {
+    displacement.insert(displacement.end(), {n.at("u_r").get<double>(), n.at("u_z").get<double>(), 0.0});
+    temperatures.push_back(n.value("T", 0.0));
+    node_ids.push_back(n.at("id").get<std::int32_t>());
+  }
+  m.piece.active_vectors = "displacement" + length;
+  m.piece.active_scalars = "temperature" + temperature;
+  m.piece.point_data = {{m.piece.active_vectors, 3, std::move(displacement)},
+                        {m.piece.active_scalars, 1, std::move(temperatures)},
+                        {"node_id", 1, std::move(node_ids)}};
+
+  // ---- Cell data: element-only values (0 on gaps) and gap-only values (0 on solids), by their
+  // document keys.
+  std::vector<VtuArray>& cells = m.piece.cell_data;
+  const auto ints = [&](const std::string& name, const auto& value) {
+    std::vector<std::int32_t> v;
+    for (const Cell& c : m.cells) v.push_back(value(c));
+    cells.push_back({name, 1, std::move(v)});
+  };
+  const auto reals = [&](const std::string& name, const char* key, bool on_gaps) {
+    std::vector<double> v;
+    for (const Cell& c : m.cells) v.push_back(c.gap == on_gaps ? c.data->at(key).get<double>() : 0.0);
+    cells.push_back({name, 1, std::move(v)});
+  };
+  cells = id_arrays(m);
+  ints("material", [](const Cell& c) { return c.gap ? 0 : c.data->value("material", 0); });
+  for (const char* key : {"sigma_r", "sigma_z", "tau_rz", "sigma_theta", "sigma_1", "sigma_2"}) {
+    reals(key + stress, key, false);
+  }
+  reals("principal_angle", "angle", false);
+  m.piece.active_cell_scalars = "effective" + stress;
+  reals(m.piece.active_cell_scalars, "effective", false);
+  for (const char* key : {"eps_r", "eps_z", "gamma_rz", "eps_theta"}) reals(key, key, false);
+  ints("yield", [](const Cell& c) { return !c.gap && c.data->at("yield").get<bool>() ? 1 : 0; });
+  ints("plastic_converged", [](const Cell& c) { return c.gap || c.data->at("plastic_converged").get<bool>() ? 1 : 0; });
+  reals("gap_closure", "closure", true);
+  reals("gap_eps_m", "eps_m", true);
+  reals("gap_sigma_m" + stress, "sigma_m", true);
+  {
+    // Results written before contact_pressure was added get it from sigma_m, by the same rule.
+    std::vector<double> v;
+    for (const Cell& c : m.cells) {
+      v.push_back(c.gap ? c.data->value("contact_pressure", std::max(0.0, -c.data->at("sigma_m").get<double>())) : 0.0);
+    }
+    cells.push_back({"gap_contact_pressure" + stress, 1, std::move(v)});
+  }
+  reals("gap_modulus" + stress, "modulus", true);
+  reals("gap_angle", "angle", true);
+  ints("gap_state", [](const Cell& c) { return c.gap ? vtu_gap_state_code(c.data->at("state").get<std::string>()) : -1; });
+  ints("gap_converged", [](const Cell& c) { return c.gap ? (c.data->at("converged").get<bool>() ? 1 : 0) : -1; });
+  return encode_vtu(m.piece, format);
+}
+
+/// One iteration of the series: the mesh, ids and that iteration's gap closures.
+std::string iteration_document(const json& result, const json& closures, int iteration, VtuFormat format) {
+  Mesh m = read_mesh(result);
+  m.piece.comment += ", iteration " + std::to_string(iteration);
+  m.piece.cell_data = id_arrays(m);
+  std::vector<double> closure;
+  std::size_t g = 0;
+  for (const Cell& c : m.cells) closure.push_back(c.gap ? closures.at(g++).get<double>() : 0.0);
+  m.piece.active_cell_scalars = "gap_closure";
+  m.piece.cell_data.push_back({"gap_closure", 1, std::move(closure)});
+  return encode_vtu(m.piece, format);
+}
+
+template <typename F>
+auto malformed_is_invalid(F&& f) {
+  try {
+    return f();
+  } catch (const json::exception& e) {
+    throw std::invalid_argument(std::string("malformed result document: ") + e.what());
+  }
 }
 
 }  // namespace
 
-std::string result_to_vtu(const json& result) {
-  try {
-    return vtu_document(result);
-  } catch (const json::exception& e) {
-    throw std::invalid_argument(std::string("malformed result document: ") + e.what());
-  }
+std::string result_to_vtu(const json& result, VtuFormat format) {
+  return malformed_is_invalid([&] { return vtu_document(result, format); });
+}
+
+void write_vtu_series(const json& result, const std::string& stem, VtuFormat format,
+                      const std::function<void(const std::string&, const std::string&)>& write) {
+  malformed_is_invalid([&] {
+    const std::size_t gaps = result.contains("gaps") ? result.at("gaps").size() : 0;
+    std::vector<const json*> rows;
+    if (result.contains("history")) {
+      for (const json& row : result.at("history")) {
+        if (gaps > 0 && row.contains("gap_closures") && row.at("gap_closures").size() == gaps) rows.push_back(&row);
+      }
+    }
+    // The base name the .pvd refers to: the files sit beside it.
+    const std::size_t slash = stem.find_last_of('/');
+    const std::string base = slash == std::string::npos ? stem : stem.substr(slash + 1);
+    std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+                      "  <Collection>\n";
+    const auto entry = [&](int step, const std::string& file) {
+      pvd += "    <DataSet timestep=\"" + std::to_string(step) + "\" part=\"0\" file=\"" + file + "\"/>\n";
+    };
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const int iteration = rows[k]->at("iteration").get<int>();
+      char suffix[32];
+      std::snprintf(suffix, sizeof suffix, "_iter%04d.vtu", iteration);
+      const bool last = k + 1 == rows.size();
+      write(stem + suffix,
+            last ? vtu_document(result, format) : iteration_document(result, rows[k]->at("gap_closures"), iteration, format));
+      entry(iteration, base + suffix);
+    }
+    if (rows.empty()) {
+      write(stem + ".vtu", vtu_document(result, format));
+      entry(result.value("iterations", 0), base + ".vtu");
+    }
+    pvd += "  </Collection>\n</VTKFile>\n";
+    write(stem + ".pvd", pvd);
+    return 0;
+  });
 }
 
 }  // namespace saasgaps::io

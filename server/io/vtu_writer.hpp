@@ -1,7 +1,7 @@
 #pragma once
-/// A result document as a VTK XML unstructured grid (.vtu, ASCII) for ParaView and other VTK tools.
-/// Works from the result document alone (model-format.md "The result document"), so any stored
-/// result can be exported.
+/// A result document as a VTK XML unstructured grid (.vtu) for ParaView and other VTK tools, binary
+/// (zlib-compressed appended data) by default or ASCII (io/vtu_encoding.hpp). Works from the result
+/// document alone (the result document of docs/results.md), so any stored result can be exported.
 ///
 /// Points: every node at (r, z, 0) (in plane analyses (r, z) = (x, y)).
 /// Cells: the solid elements, then the gap elements, in document order; 4 nodes VTK_QUAD (9),
@@ -16,15 +16,21 @@
 ///   sigma_r, sigma_z, tau_rz, sigma_theta, sigma_1, sigma_2, principal_angle (deg), effective
 ///   eps_r, eps_z, gamma_rz, eps_theta
 ///   yield (0/1), plastic_converged (0/1; 1 on gap cells)
-///   gap_closure (%), gap_eps_m, gap_sigma_m, gap_modulus, gap_angle (deg, direction M)
+///   gap_closure (%), gap_eps_m, gap_sigma_m, gap_contact_pressure, gap_modulus, gap_angle (deg)
 ///   gap_state     -1 solid, 0 open, 1 partial, 2 closed, 3 overclosed
 ///   gap_converged -1 solid, 0 no, 1 yes
-/// Why 0 rather than NaN for values a cell does not have: VTK's ASCII reader does not parse "nan".
-/// Numbers are written in the shortest form that reads back to the same double.
+/// When the result names its units, the names of dimensional arrays carry them: "sigma_r [psi]",
+/// "displacement [in]", "temperature [degF]" (stresses, the gap's sigma_m, contact pressure and
+/// modulus in the stress unit).
+/// Why 0 rather than NaN for values a cell does not have: the ASCII form must read back in VTK,
+/// whose ASCII reader does not parse "nan", and both forms carry the same values.
 
+#include <functional>
 #include <string>
 
 #include <nlohmann/json.hpp>
+
+#include "io/vtu_encoding.hpp"
 
 namespace saasgaps::io {
 
@@ -32,6 +38,16 @@ namespace saasgaps::io {
 int vtu_gap_state_code(const std::string& state);
 
 /// The VTU document. A failed run, or a result without node coordinates, is a std::invalid_argument.
-std::string result_to_vtu(const nlohmann::json& result);
+std::string result_to_vtu(const nlohmann::json& result, VtuFormat format = VtuFormat::binary);
+
+/// The iterations as a ParaView collection: for each history row that holds every gap's closure,
+/// a file "<stem>_iter<NNNN>.vtu" with the mesh, element_id, is_gap and that iteration's
+/// gap_closure; the last iteration's file is the whole result (result_to_vtu). Then "<stem>.pvd",
+/// listing them with the iteration as the time step, so ParaView's time slider steps through the
+/// gap iteration. Only closures are kept per iteration (the history rows); displacements and
+/// stresses exist for the final state only. write(file name, bytes) is called once per file, the
+/// .pvd last; a result without per-iteration closures gives one file, the result.
+void write_vtu_series(const nlohmann::json& result, const std::string& stem, VtuFormat format,
+                      const std::function<void(const std::string& file, const std::string& bytes)>& write);
 
 }  // namespace saasgaps::io

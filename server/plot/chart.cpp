@@ -121,10 +121,17 @@ void Chart::draw(const Series& s) const {
   cairo_clip(cr);
   canvas_.set_color(s.color);
   canvas_.set_line(s.width, s.dashed);
+  // A NaN value is a point without one: the line breaks there.
+  bool pen_down = false;
   for (std::size_t i = 0; i < s.x.size(); ++i) {
+    if (std::isnan(s.y[i])) {
+      pen_down = false;
+      continue;
+    }
     const Point p = to_device(s.x[i], s.y[i]);
-    if (i == 0) cairo_move_to(cr, p.x, p.y);
-    else cairo_line_to(cr, p.x, p.y);
+    if (pen_down) cairo_line_to(cr, p.x, p.y);
+    else cairo_move_to(cr, p.x, p.y);
+    pen_down = true;
   }
   cairo_stroke(cr);
   cairo_restore(cr);  // markers unclipped: a point on the frame shows whole
@@ -132,6 +139,7 @@ void Chart::draw(const Series& s) const {
     canvas_.set_color(s.color);  // cairo_restore reset the source too
     const double radius = std::max(2.0, 1.3 * s.width);
     for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (std::isnan(s.y[i])) continue;
       const Point p = to_device(s.x[i], s.y[i]);
       cairo_new_sub_path(cr);
       cairo_arc(cr, p.x, p.y, radius, 0.0, 2.0 * std::numbers::pi);

@@ -55,6 +55,8 @@ class Chart {
 
   Point to_device(double x, double y) const;
   const Rect& plot_area() const { return plot_; }
+  const Axis& x_axis() const { return x_; }
+  const Axis& y_axis() const { return y_; }
 
   /// Grid, frame, ticks with labels and axis titles.
   void draw_axes() const;

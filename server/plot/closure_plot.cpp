@@ -19,17 +19,20 @@ struct Curve {
   std::vector<double> closures;
 };
 
-/// Every history row that has one closure per gap, else the final closures as one curve.
-std::vector<Curve> closure_curves(const json& result, const ResultMesh& mesh) {
+/// Every history row that has one closure per gap, else the final closures as one curve; each
+/// curve holds the row's gaps in row order.
+std::vector<Curve> closure_curves(const json& result, const ResultMesh& mesh, const GapRow& row) {
   std::vector<Curve> curves;
-  for (const json& row : array_member(result, "history")) {
-    const json closures = row.value("gap_closures", json::array());
-    if (closures.size() != mesh.gaps.size()) continue;
-    curves.push_back({row.at("iteration").get<int>(), closures.get<std::vector<double>>()});
+  for (const json& history_row : array_member(result, "history")) {
+    const auto closures = history_row.find("gap_closures");
+    if (closures == history_row.end() || !closures->is_array() || closures->size() != mesh.gaps.size()) continue;
+    Curve c{history_row.at("iteration").get<int>(), {}};
+    for (const std::size_t g : row.gaps) c.closures.push_back((*closures)[g].get<double>());
+    curves.push_back(std::move(c));
   }
   if (curves.empty()) {
     Curve final_state;
-    for (const GapElement& g : mesh.gaps) final_state.closures.push_back(g.closure);
+    for (const std::size_t g : row.gaps) final_state.closures.push_back(mesh.gaps[g].closure);
     curves.push_back(final_state);
   }
   return curves;
@@ -48,58 +51,16 @@ std::vector<Curve> thin_out(std::vector<Curve> curves, int count) {
   return kept;
 }
 
-/// Distance along the chain of gap centroids: 0 at the first gap, length units.
-std::vector<double> positions_along(const ResultMesh& mesh) {
-  std::vector<double> s;
-  double previous_r = 0.0, previous_z = 0.0, total = 0.0;
-  for (const GapElement& g : mesh.gaps) {
-    double r = 0.0, z = 0.0;
-    for (const int n : g.nodes) {
-      r += mesh.nodes[n].r / static_cast<double>(g.nodes.size());
-      z += mesh.nodes[n].z / static_cast<double>(g.nodes.size());
-    }
-    if (!s.empty()) total += std::hypot(r - previous_r, z - previous_z);
-    s.push_back(total);
-    previous_r = r;
-    previous_z = z;
-  }
-  return s;
-}
-
-Axis gap_axis(const ResultMesh& mesh, ClosureAxis along, const std::vector<double>& x) {
-  if (along == ClosureAxis::position) {
-    return numeric_axis(x.front(), std::max(x.back(), x.front() + 1e-12),
-                        "distance along the gaps from gap " + std::to_string(mesh.gaps.front().id) +
-                            " (model length units)");
-  }
-  Axis a;
-  const int n = static_cast<int>(mesh.gaps.size());
-  a.min = 0.5;
-  a.max = n + 0.5;
-  // Every gap labelled by its id while the labels fit, else every k-th.
-  const int every = std::max(1, (n + 23) / 24);
-  for (int i = 0; i < n; i += every) {
-    a.ticks.push_back(i + 1);
-    a.labels.push_back(std::to_string(mesh.gaps[i].id));
-  }
-  a.title = "gap element id (in model order)";
-  return a;
-}
-
 }  // namespace
 
-void draw_closure_plot(const Canvas& canvas, const json& result, const ClosureOptions& options) {
+DataTable draw_closure_plot(const Canvas& canvas, const json& result, const GapRowOptions& row_options,
+                            const ClosureOptions& options) {
   const ResultMesh mesh = ResultMesh::from_result(result);
   if (mesh.gaps.empty()) throw std::invalid_argument("the result has no gap elements: there is no closure to plot");
-  const std::vector<Curve> all = closure_curves(result, mesh);
+  const GapRow row = select_gap_row(mesh, row_options, gap_labels_that_fit(canvas, mesh));
+  const std::vector<Curve> all = closure_curves(result, mesh, row);
   const std::vector<Curve> curves = thin_out(all, options.max_curves);
-
-  std::vector<double> x;
-  if (options.along == ClosureAxis::position) {
-    x = positions_along(mesh);
-  } else {
-    for (std::size_t i = 0; i < mesh.gaps.size(); ++i) x.push_back(static_cast<double>(i + 1));
-  }
+  const std::vector<double>& x = row.x;
   double low = 0.0, high = 110.0;  // always show 0 and the 100 % line
   for (const Curve& c : curves) {
     for (const double v : c.closures) {
@@ -117,7 +78,7 @@ void draw_closure_plot(const Canvas& canvas, const json& result, const ClosureOp
 
   // Earlier iterations light, later ones darker; the last in black with markers: the answer.
   const ColorMap palette = ColorMap::named("viridis");
-  const bool markers = mesh.gaps.size() <= 60;
+  const bool markers = row.gaps.size() <= 60;
   std::vector<Series> series;
   for (std::size_t k = 0; k < curves.size(); ++k) {
     Series s;
@@ -134,11 +95,27 @@ void draw_closure_plot(const Canvas& canvas, const json& result, const ClosureOp
   const Rgb contact_color{0.80, 0.10, 0.10};
   std::vector<Series> legend = series;
   legend.push_back(reference_series("100 % (contact)", contact_color));
-  const Chart chart(canvas, area, gap_axis(mesh, options.along, x), numeric_axis(low, high, "closure (%)"), legend);
+  const Chart chart(canvas, area, row.axis, numeric_axis(low, high, "closure (%)"), legend);
   chart.draw_axes();
   chart.draw_reference(100.0, contact_color);
   for (const Series& s : series) chart.draw(s);
   chart.draw_legend();
+
+  // The table holds every iteration, drawn or not, and where the last curve's markers are.
+  std::vector<std::string> columns{"gap", "x"};
+  for (const Curve& c : all) columns.push_back(c.iteration > 0 ? "iteration_" + std::to_string(c.iteration) : "final");
+  columns.insert(columns.end(), {"px", "py_last"});
+  DataTable table(columns);
+  table.note("SAASGAPS gap closure per iteration: " + mesh.title);
+  table.note("x: " + row.axis.title + "; closures in % of each gap's width, 100 = contact");
+  for (std::size_t i = 0; i < row.gaps.size(); ++i) {
+    std::vector<std::string> cells{std::to_string(mesh.gaps[row.gaps[i]].id), DataTable::number(x[i])};
+    for (const Curve& c : all) cells.push_back(DataTable::number(c.closures[i]));
+    const Point p = chart.to_device(x[i], all.back().closures[i]);
+    cells.insert(cells.end(), {DataTable::number(p.x), DataTable::number(p.y)});
+    table.add_row(std::move(cells));
+  }
+  return table;
 }
 
 }  // namespace saasgaps::plot

@@ -6,23 +6,21 @@
 #include <nlohmann/json.hpp>
 
 #include "plot/canvas.hpp"
+#include "plot/data_table.hpp"
+#include "plot/gap_row.hpp"
 
 namespace saasgaps::plot {
 
-enum class ClosureAxis {
-  gap_index,  ///< x = 1, 2, .. in model order, ticks labelled with gap ids
-  position,   ///< x = distance along the chain of gap centroids (undeformed), from the first gap
-};
-
 struct ClosureOptions {
-  ClosureAxis along = ClosureAxis::gap_index;
   /// At most this many curves: with more iterations, the first, the last and evenly spaced ones
   /// between are drawn (the subtitle says so), since 40 curves cannot be told apart.
   int max_curves = 12;
 };
 
-/// Draws the closure plot over the whole canvas. Throws std::invalid_argument when the result has
-/// no gaps.
-void draw_closure_plot(const Canvas& canvas, const nlohmann::json& result, const ClosureOptions& options = {});
+/// Draws the closure plot over the whole canvas and returns its data table: per gap of the row its
+/// id, x, its closure in every iteration, and where the last iteration's marker is drawn. Throws
+/// std::invalid_argument when the result has no gaps or the row names a gap it does not have.
+DataTable draw_closure_plot(const Canvas& canvas, const nlohmann::json& result, const GapRowOptions& row,
+                       const ClosureOptions& options = {});
 
 }  // namespace saasgaps::plot

@@ -32,12 +32,18 @@ ColorMap ColorMap::named(std::string_view name) {
                      {0.4, hex(0x2a788e)}, {0.5, hex(0x21918c)}, {0.6, hex(0x22a884)}, {0.7, hex(0x44bf70)},
                      {0.8, hex(0x7ad151)}, {0.9, hex(0xbddf26)}, {1.0, hex(0xfde725)}});
   }
+  if (name == "cividis") {
+    // Nunez, Anderton and Renslow's cividis (matplotlib's), at fifths: readable with red-green
+    // colour vision deficiency, lightness increasing linearly.
+    return ColorMap({{0.0, hex(0x00224e)}, {0.2, hex(0x35456c)}, {0.4, hex(0x666970)}, {0.6, hex(0x948e77)},
+                     {0.8, hex(0xc8b866)}, {1.0, hex(0xfee838)}});
+  }
   std::string known;
   for (const std::string& n : names()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown colour map '" + std::string(name) + "'; colour maps: " + known);
 }
 
-std::vector<std::string> ColorMap::names() { return {"rainbow", "viridis"}; }
+std::vector<std::string> ColorMap::names() { return {"viridis", "cividis", "rainbow"}; }
 
 Rgb ColorMap::at(double t) const {
   t = std::clamp(t, 0.0, 1.0);

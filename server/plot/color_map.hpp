@@ -31,8 +31,11 @@ class ColorMap {
     Rgb color;
   };
 
-  /// By name: "rainbow" (blue - cyan - green - yellow - red, the stress analyst's convention, the
-  /// default) or "viridis" (perceptually uniform, prints in grey). Unknown names: std::invalid_argument.
+  /// By name: "viridis" (perceptually uniform: equal steps look equal, lightness rises steadily, so
+  /// it prints in grey and reads with colour vision deficiency; the default), "cividis" (the same
+  /// aims, blue to yellow, tuned for red-green deficiency) or "rainbow" (blue - cyan - green -
+  /// yellow - red, the stress analyst's old convention, whose bright yellow and cyan bands look like
+  /// features that are not there). Unknown names: std::invalid_argument.
   static ColorMap named(std::string_view name);
   static std::vector<std::string> names();
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 
@@ -111,10 +112,10 @@ void fill_bands(const Canvas& canvas, const ResultMesh& mesh, const std::vector<
 
 /// The colour bar in `box` (its width is the bar's), highest level on top, level labels to the
 /// right; a uniform field gets one band labelled with its value. Returns the bar's bottom.
-double draw_color_bar(const Canvas& canvas, const Rect& box, const Scale& scale, const ColorMap& map,
+double draw_color_bar(const Canvas& canvas, const Rect& box, const BandLevels& bands_of, const ColorMap& map,
                       std::optional<double> uniform_value) {
   const Typography t = typography(canvas);
-  const std::vector<double> levels = scale.values();
+  const std::vector<double>& levels = bands_of.levels;
   const int bands = static_cast<int>(levels.size()) - 1;
   const double band_height = std::clamp(box.height / bands, 0.5 * t.small, 2.4 * t.small);
   for (int k = 0; k < bands; ++k) {
@@ -128,7 +129,7 @@ double draw_color_bar(const Canvas& canvas, const Rect& box, const Scale& scale,
                 HAlign::left, VAlign::middle);
     return box.y + bands * band_height;
   }
-  const TickFormat label(scale.step, std::max(std::abs(levels.front()), std::abs(levels.back())));
+  const TickFormat label(bands_of.label_step, std::max(std::abs(levels.front()), std::abs(levels.back())));
   // Every level while the labels fit, else every second, third, ..
   const int every = std::max(1, static_cast<int>(std::ceil(1.15 * t.small / band_height)));
   for (int k = 0; k <= bands; k += every) {
@@ -139,6 +140,92 @@ double draw_color_bar(const Canvas& canvas, const Rect& box, const Scale& scale,
     canvas.text({label_x, y}, label(levels[k]), t.small, HAlign::left, VAlign::middle);
   }
   return box.y + bands * band_height;
+}
+
+// ------------------------------------------------------------------------------------------ axes
+/// A round step of model length that puts ticks at least min_px apart.
+double axis_step(double pixels_per_length, double min_px) {
+  const double raw = min_px / pixels_per_length;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  for (const double m : {1.0, 2.0, 2.5, 5.0, 10.0}) {
+    if (m * decade >= raw * (1.0 - 1e-9)) return m * decade;
+  }
+  return 10.0 * decade;
+}
+
+/// Multiples of step within [lo, hi].
+std::vector<double> ticks_within(double lo, double hi, double step) {
+  std::vector<double> ticks;
+  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + 1e-9 * step; k += 1.0) {
+    ticks.push_back(std::abs(k) < 0.5 ? 0.0 : k * step);
+  }
+  return ticks;
+}
+
+/// Space the axes need outside the frame: tick labels and titles to the left and below.
+struct AxisGutters {
+  double left, bottom;
+};
+
+AxisGutters axis_gutters(const Canvas& canvas) {
+  const Typography t = typography(canvas);
+  // The widest label a round tick gets in practice ("-12.5", "0.0025"): room for seven digits.
+  const double label = canvas.text_width("-0.00025", t.small);
+  return {0.4 * t.small + label + 0.5 * t.small + 1.4 * t.base, 0.4 * t.small + 1.4 * t.small + 1.4 * t.base};
+}
+
+/// The frame round `frame` with ticks on its left and bottom edges at round model coordinates, one
+/// step for both axes (the drawing is to scale), labelled, and the axes' titles.
+void draw_model_axes(const Canvas& canvas, const Rect& frame, const View& view, const std::string& r_title,
+                     const std::string& z_title) {
+  const Typography t = typography(canvas);
+  const double step = axis_step(view.pixels_per_length, 6.0 * t.small);
+  const double r_lo = (frame.x - view.x0) / view.pixels_per_length;
+  const double r_hi = (frame.right() - view.x0) / view.pixels_per_length;
+  const double z_lo = (view.y0 - frame.bottom()) / view.pixels_per_length;
+  const double z_hi = (view.y0 - frame.y) / view.pixels_per_length;
+  const double tick = 0.4 * t.small;
+  canvas.stroke_rect(frame, colors::axis, 1.0);
+  canvas.set_line(1.0);
+  const std::vector<double> r_ticks = ticks_within(r_lo, r_hi, step), z_ticks = ticks_within(z_lo, z_hi, step);
+  double magnitude = 0.0;
+  for (const double v : {r_lo, r_hi, z_lo, z_hi}) magnitude = std::max(magnitude, std::abs(v));
+  const TickFormat label(step, magnitude);
+  for (const double r : r_ticks) {
+    const double x = view({r, 0.0}).x;
+    canvas.set_color(colors::axis);
+    canvas.line({x, frame.bottom()}, {x, frame.bottom() + tick});
+    canvas.set_color(colors::text);
+    canvas.text({x, frame.bottom() + tick + 0.2 * t.small}, label(r), t.small, HAlign::center, VAlign::top);
+  }
+  double widest = 0.0;
+  for (const double z : z_ticks) {
+    const double y = view({0.0, z}).y;
+    canvas.set_color(colors::axis);
+    canvas.line({frame.x - tick, y}, {frame.x, y});
+    canvas.set_color(colors::text);
+    canvas.text({frame.x - tick - 0.3 * t.small, y}, label(z), t.small, HAlign::right, VAlign::middle);
+    widest = std::max(widest, canvas.text_width(label(z), t.small));
+  }
+  canvas.text({frame.x + frame.width / 2.0, frame.bottom() + tick + 1.4 * t.small}, r_title, t.base, HAlign::center,
+               VAlign::top);
+  cairo_t* cr = canvas.context();
+  cairo_save(cr);
+  cairo_translate(cr, frame.x - tick - 0.6 * t.small - widest - 0.3 * t.base, frame.y + frame.height / 2.0);
+  cairo_rotate(cr, -std::numbers::pi / 2.0);
+  canvas.text({0.0, 0.0}, z_title, t.base, HAlign::center, VAlign::bottom);
+  cairo_restore(cr);
+}
+
+/// Area each node stands for: an equal share of every solid element around it (weights of the
+/// quantile levels).
+std::vector<double> nodal_areas(const ResultMesh& mesh) {
+  std::vector<double> area(mesh.nodes.size(), 0.0);
+  for (const SolidElement& e : mesh.solids) {
+    const double share = mesh.area(e) / static_cast<double>(e.nodes.size());
+    for (const int n : e.nodes) area[n] += share;
+  }
+  return area;
 }
 
 // ------------------------------------------------------------------------------------ extremes
@@ -193,7 +280,8 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
   if (mesh.solids.empty()) throw std::invalid_argument("the result has no solid elements to contour");
   const std::vector<double> values = nodal_values(result, mesh, field);
 
-  // Levels from the values at the nodes of solid elements (the contoured ones).
+  // Levels from the values at the nodes of solid elements (the contoured ones): a node no solid
+  // element uses weighs nothing.
   double low = std::numeric_limits<double>::infinity(), high = -low;
   for (const SolidElement& e : mesh.solids) {
     for (const int n : e.nodes) {
@@ -202,9 +290,9 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
     }
   }
   if (!std::isfinite(low) || !std::isfinite(high)) throw std::invalid_argument("the field has no finite values");
-  const Scale scale_of_levels = nice_scale(low, high, std::max(1, options.max_bands), level_mantissas);
-  const std::vector<double> levels = scale_of_levels.values();
-  const bool uniform = is_uniform(low, high);
+  const BandLevels bands_of = band_levels(values, nodal_areas(mesh), options.max_bands, options.levels);
+  const std::vector<double>& levels = bands_of.levels;
+  const bool uniform = bands_of.uniform;
 
   // Extremes for the panel: element values as computed (averaging at nodes lowers peaks), or
   // nodal ones for node fields.
@@ -228,7 +316,10 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
   const bool deformed = options.automatic_deformation || options.deformation_scale.has_value();
   const double deformation = options.automatic_deformation ? automatic_deformation_scale(mesh)
                                                            : options.deformation_scale.value_or(0.0);
-  std::string subtitle = std::string(field_label(field, mesh)) + " (" + std::string(field.units) + ")\n";
+  std::string subtitle = std::string(field_label(field, mesh)) + " " + unit_phrase(field.quantity, mesh.units) +
+                         (uniform ? "" : options.levels == LevelRule::quantile ? ", bands of equal area"
+                                                                                 : ", bands of equal width") +
+                         "\n";
   if (deformed) {
     subtitle += "Deformed shape, displacements \u00d7" + format_value(deformation, 3) + " (dashed: undeformed)";
   } else {
@@ -238,7 +329,8 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
   const Rect area = draw_header(canvas, mesh.title.empty() ? "SAASGAPS result" : mesh.title, subtitle);
   const Typography t = typography(canvas);
 
-  const TickFormat level_text(scale_of_levels.step, std::max(std::abs(levels.front()), std::abs(levels.back())));
+  const TickFormat level_text(bands_of.label_step, std::max(std::abs(levels.front()), std::abs(levels.back())));
+  const std::string bar_title = with_unit(field.name, field.quantity, mesh.units);
   const double bar_width = 1.6 * t.base;
   double panel_width = 0.0;
   for (const double l : levels) panel_width = std::max(panel_width, canvas.text_width(level_text(l), t.small));
@@ -247,14 +339,15 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
   panel_width += bar_width + 0.6 * t.small;
   const std::string max_text = "max " + format_value(highest.value) + " (" + where + " " + std::to_string(highest.id) + ")";
   const std::string min_text = "min " + format_value(lowest.value) + " (" + where + " " + std::to_string(lowest.id) + ")";
-  for (const std::string& s : {max_text, min_text, std::string(field.name)}) {
+  for (const std::string& s : {max_text, min_text, bar_title}) {
     panel_width = std::max(panel_width, canvas.text_width(s, t.small, true));
   }
   if (!mesh.gaps.empty()) panel_width = std::max(panel_width, gap_legend_width(canvas));
   const Rect panel{area.right() - t.margin - panel_width, area.y + 0.5 * t.margin, panel_width,
                    area.height - 1.5 * t.margin};
-  const Rect plot{area.x + t.margin, area.y + 0.5 * t.margin, panel.x - 2.0 * t.margin - area.x,
-                  area.height - 1.5 * t.margin};
+  const AxisGutters gutters = axis_gutters(canvas);
+  const Rect plot{area.x + t.margin + gutters.left, area.y + 0.5 * t.margin,
+                  panel.x - 2.0 * t.margin - area.x - gutters.left, area.height - 1.5 * t.margin - gutters.bottom};
 
   // ---- The view: everything drawn must fit, deformed and undeformed.
   std::vector<std::array<double, 2>> extent;
@@ -293,15 +386,17 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
   stroke_edges(cr, outline, at);
   canvas.set_line(1.0);
   draw_gap_markers(canvas, mesh, at, rest, strip);
+  const std::string length_unit = with_unit("", Quantity::length, mesh.units);
+  draw_model_axes(canvas, plot, view, (mesh.plane() ? "x" : "r") + length_unit, (mesh.plane() ? "y" : "z") + length_unit);
 
   // ---- The panel: field name, colour bar, extreme values, gap legend.
   double y = panel.y;
   canvas.set_color(colors::text);
-  canvas.text({panel.x, y}, field.name, t.small, HAlign::left, VAlign::top, true);
+  canvas.text({panel.x, y}, bar_title, t.small, HAlign::left, VAlign::top, true);
   y += 2.3 * t.small;  // room for the top level's label
   const double legend_height = mesh.gaps.empty() ? 0.0 : gap_legend_height(canvas);
   const Rect bar{panel.x, y, bar_width, panel.bottom() - y - 4.5 * t.small - legend_height};
-  y = draw_color_bar(canvas, bar, scale_of_levels, colors_of, uniform_value);
+  y = draw_color_bar(canvas, bar, bands_of, colors_of, uniform_value);
   y += 1.2 * t.small;
   canvas.text({panel.x, y}, max_text, t.small, HAlign::left, VAlign::top);
   y += 1.4 * t.small;

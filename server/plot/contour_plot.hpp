@@ -1,7 +1,8 @@
 #pragma once
 /// Filled contour plot of a field over the mesh (the report's Figs. 9-11 and 16-18): colour bands
 /// between round level values on the undeformed or the deformed mesh, the gap elements marked by
-/// state (closed, overclosed, partial, open), a colour bar with the levels, and the extreme element
+/// state (closed, overclosed, partial, open), r and z axes with round ticks (one step for both:
+/// the drawing is to scale), a colour bar with the levels and the unit, and the extreme element
 /// values with their element ids.
 
 #include <optional>
@@ -9,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "plot/band_levels.hpp"
 #include "plot/canvas.hpp"
 #include "plot/result_mesh.hpp"
 
@@ -23,7 +25,8 @@ struct ContourOptions {
   bool automatic_deformation = false;
   bool mesh = false;  ///< draw the element edges
   int max_bands = 12;
-  std::string color_map = "rainbow";
+  LevelRule levels = LevelRule::quantile;  ///< see band_levels.hpp
+  std::string color_map = "viridis";
 };
 
 /// Draws the contour plot over the whole canvas. Unknown field or colour map, a gap field, or a

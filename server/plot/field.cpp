@@ -8,8 +8,20 @@ namespace saasgaps::plot {
 
 namespace {
 
-constexpr std::string_view stress_units = "model stress units, e.g. psi";
-constexpr std::string_view strain_units = "strain";
+constexpr Quantity stress_units = Quantity::stress;
+constexpr Quantity strain_units = Quantity::strain;
+constexpr Quantity length_units = Quantity::length;
+
+std::string_view quantity_name(Quantity q) {
+  switch (q) {
+    case Quantity::stress: return "stress";
+    case Quantity::strain: return "strain";
+    case Quantity::length: return "length";
+    case Quantity::temperature: return "temperature";
+    case Quantity::percent: return "percent";
+  }
+  return "?";
+}
 
 }  // namespace
 
@@ -31,12 +43,14 @@ const std::vector<FieldInfo>& fields() {
       {"gamma_rz", FieldLocation::element, "gamma_rz", "Shear strain \u03b3rz", "Shear strain \u03b3xy", strain_units},
       {"eps_theta", FieldLocation::element, "eps_theta", "Hoop strain \u03b5\u03b8", "Out-of-plane strain \u03b5\u03b8",
        strain_units},
-      {"temperature", FieldLocation::node, "T", "Temperature", "Temperature", "model units, e.g. \u00b0F"},
+      {"temperature", FieldLocation::node, "T", "Temperature", "Temperature", Quantity::temperature},
       {"displacement", FieldLocation::node, "", "Displacement magnitude |u|", "Displacement magnitude |u|",
-       "model length units, e.g. in"},
-      {"u_r", FieldLocation::node, "u_r", "Radial displacement ur", "Displacement ux", "model length units, e.g. in"},
-      {"u_z", FieldLocation::node, "u_z", "Axial displacement uz", "Displacement uy", "model length units, e.g. in"},
-      {"closure", FieldLocation::gap, "closure", "Gap closure", "Gap closure", "% of the gap width; 100 = contact"},
+       length_units},
+      {"u_r", FieldLocation::node, "u_r", "Radial displacement ur", "Displacement ux", length_units},
+      {"u_z", FieldLocation::node, "u_z", "Axial displacement uz", "Displacement uy", length_units},
+      {"closure", FieldLocation::gap, "closure", "Gap closure", "Gap closure", Quantity::percent},
+      {"contact_pressure", FieldLocation::gap, "contact_pressure", "Contact pressure across the gaps",
+       "Contact pressure across the gaps", stress_units},
   };
   return all;
 }
@@ -56,6 +70,29 @@ const FieldInfo& find_field(std::string_view name) {
 
 std::string_view field_label(const FieldInfo& field, const ResultMesh& mesh) {
   return mesh.plane() ? field.plane_label : field.axisymmetric_label;
+}
+
+std::string unit_name(Quantity quantity, const UnitNames& units) {
+  switch (quantity) {
+    case Quantity::stress: return units.stress;
+    case Quantity::length: return units.length;
+    case Quantity::temperature: return units.temperature;
+    case Quantity::percent: return "%";
+    case Quantity::strain: return "";
+  }
+  return "";
+}
+
+std::string with_unit(std::string_view name, Quantity quantity, const UnitNames& units) {
+  const std::string unit = unit_name(quantity, units);
+  return unit.empty() ? std::string(name) : std::string(name) + " [" + unit + "]";
+}
+
+std::string unit_phrase(Quantity quantity, const UnitNames& units) {
+  if (quantity == Quantity::strain) return "strain (dimensionless)";
+  const std::string unit = unit_name(quantity, units);
+  if (!unit.empty()) return "in " + unit;
+  return "in the model's " + std::string(quantity_name(quantity)) + " units";
 }
 
 std::vector<double> element_values(const nlohmann::json& result, const FieldInfo& field) {
@@ -78,7 +115,7 @@ std::vector<double> gap_values(const ResultMesh& mesh, const FieldInfo& field) {
     throw std::invalid_argument("'" + std::string(field.name) + "' is not a gap field");
   }
   std::vector<double> values;
-  for (const GapElement& g : mesh.gaps) values.push_back(g.closure);
+  for (const GapElement& g : mesh.gaps) values.push_back(field.name == "closure" ? g.closure : g.contact_pressure);
   return values;
 }
 
@@ -118,7 +155,7 @@ std::vector<double> nodal_values(const nlohmann::json& result, const ResultMesh&
       break;
   }
   throw std::invalid_argument("'" + std::string(field.name) +
-                              "' is a gap field, without values at the nodes: use the closure plot");
+                              "' is a gap field, without values at the nodes: plot it along a row of gaps");
 }
 
 }  // namespace saasgaps::plot

@@ -23,13 +23,16 @@ enum class FieldLocation {
   gap,      ///< one value per gap element
 };
 
+/// What a field measures, for its unit.
+enum class Quantity { stress, strain, length, temperature, percent };
+
 struct FieldInfo {
   std::string_view name;   ///< what --field takes
   FieldLocation location;
   std::string_view key;    ///< the result document's key (element and gap fields)
   std::string_view axisymmetric_label;
   std::string_view plane_label;  ///< in plane analyses (r, z) are (x, y) and theta is out of plane
-  std::string_view units;        ///< a hint: the model's units are its own
+  Quantity quantity;
 };
 
 /// Every field, element fields first.
@@ -44,10 +47,20 @@ const FieldInfo& find_field(std::string_view name);
 /// "Hoop stress σθ" or "Out-of-plane stress σθ", as the analysis reads.
 std::string_view field_label(const FieldInfo& field, const ResultMesh& mesh);
 
+/// The unit's name for a quantity: the model's name from the result's units ("psi"), "%" for
+/// percent, "" for strain (dimensionless) and for a unit the model does not name.
+std::string unit_name(Quantity quantity, const UnitNames& units);
+
+/// "name [psi]", or the bare name when the unit is not named (or the quantity has none).
+std::string with_unit(std::string_view name, Quantity quantity, const UnitNames& units);
+
+/// For subtitles: "in psi", "strain (dimensionless)", or "in the model's stress units" (not named).
+std::string unit_phrase(Quantity quantity, const UnitNames& units);
+
 /// Values per solid element (element fields only), in mesh.solids order.
 std::vector<double> element_values(const nlohmann::json& result, const FieldInfo& field);
 
-/// Values per gap element (gap fields only), in mesh.gaps order.
+/// Values per gap element (gap fields only: closure %, contact_pressure), in mesh.gaps order.
 std::vector<double> gap_values(const ResultMesh& mesh, const FieldInfo& field);
 
 /// Area-weighted nodal average of per-element values (see above); NaN at nodes of no solid element.

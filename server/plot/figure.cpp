@@ -28,6 +28,15 @@ Rect draw_header(const Canvas& canvas, std::string_view title, std::string_view 
   return {0.0, y, static_cast<double>(canvas.width()), canvas.height() - y};
 }
 
+int gap_labels_that_fit(const Canvas& canvas, const ResultMesh& mesh) {
+  const Typography t = typography(canvas);
+  int widest = 1;
+  for (const GapElement& g : mesh.gaps) widest = std::max(widest, g.id);
+  const double label = canvas.text_width(std::string(std::to_string(widest).size(), '0'), t.small);
+  // Each label with most of its width again beside it, over the plot's share of the width.
+  return std::max(2, static_cast<int>(0.75 * canvas.width() / (1.8 * label)));
+}
+
 std::string run_summary(std::string_view status, int iterations) {
   const std::string count = std::to_string(iterations) + (iterations == 1 ? " iteration" : " iterations");
   if (status == "converged") return "converged in " + count;

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "plot/canvas.hpp"
+#include "plot/result_mesh.hpp"
 
 namespace saasgaps::plot {
 
@@ -22,6 +23,9 @@ Typography typography(const Canvas& canvas);
 /// Draws the title (bold) and the subtitle lines (separated by '\n') under it, each shortened to fit
 /// the width, and returns the area below them.
 Rect draw_header(const Canvas& canvas, std::string_view title, std::string_view subtitle);
+
+/// How many labels as wide as the mesh's widest gap id fit side by side along the canvas.
+int gap_labels_that_fit(const Canvas& canvas, const ResultMesh& mesh);
 
 /// A status note for subtitles: "converged in 10 iterations" or "NOT CONVERGED after 40 iterations".
 std::string run_summary(std::string_view status, int iterations);

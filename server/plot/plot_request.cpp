@@ -4,6 +4,7 @@
 #include <charconv>
 #include <stdexcept>
 
+#include "plot/contact_plot.hpp"
 #include "plot/convergence_plot.hpp"
 #include "plot/field.hpp"
 
@@ -23,10 +24,9 @@ void set_deformation(const std::string& text, ContourOptions& contour) {
   contour.deformation_scale = scale;
 }
 
-ClosureAxis closure_axis(const std::string& name) {
-  if (name == "index") return ClosureAxis::gap_index;
-  if (name == "position") return ClosureAxis::position;
-  throw std::invalid_argument("the closure plot runs along 'index' or 'position', not '" + name + "'");
+void set_gap_row(const std::string& ids, const std::string& along, GapRowOptions& row) {
+  row.gap_ids = ids.empty() ? std::vector<int>{} : parse_gap_ids(ids);
+  if (!along.empty()) row.along = row_axis(along);
 }
 
 std::vector<std::string> plot_names() {
@@ -44,19 +44,46 @@ void require_plot_name(const std::string& name) {
   throw std::invalid_argument("unknown field '" + name + "'; fields: " + list);
 }
 
-std::string render_plot(const nlohmann::json& result, const PlotRequest& request) {
+namespace {
+
+/// Draws the plot; for the line plots that have one, returns their data table.
+std::optional<DataTable> draw(const Canvas& canvas, const nlohmann::json& result, const PlotRequest& request) {
   require_plot_name(request.name);
-  Canvas canvas(request.format, request.width, request.height);
+  if (request.path) {
+    if (request.name == "convergence") throw std::invalid_argument("the convergence plot does not run along a path");
+    return draw_path_plot(canvas, result, request.name, *request.path);
+  }
   if (request.name == "convergence") {
     draw_convergence_plot(canvas, result);
-  } else if (find_field(request.name).location == FieldLocation::gap) {
-    draw_closure_plot(canvas, result, request.closure);
+  } else if (request.name == "contact_pressure") {
+    return draw_contact_plot(canvas, result, request.row);
+  } else if (request.name == "closure") {
+    return draw_closure_plot(canvas, result, request.row, request.closure);
   } else {
     ContourOptions contour = request.contour;
     contour.field = request.name;
     draw_contour_plot(canvas, result, contour);
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string render_plot(const nlohmann::json& result, const PlotRequest& request) {
+  Canvas canvas(request.format, request.width, request.height);
+  draw(canvas, result, request);
   return canvas.finish();
+}
+
+std::string render_table(const nlohmann::json& result, const PlotRequest& request) {
+  // The table gives px positions: lay the plot out on a canvas of the image's size, never encoded.
+  Canvas canvas(ImageFormat::png, request.width, request.height);
+  const std::optional<DataTable> table = draw(canvas, result, request);
+  if (!table) {
+    throw std::invalid_argument("a data table (.csv) is made for closure, contact_pressure and a field along a path, "
+                                "not for '" + request.name + "'");
+  }
+  return table->csv();
 }
 
 }  // namespace saasgaps::plot

@@ -1,12 +1,19 @@
 #pragma once
 /// One entry point for every plot, for the command line and the service alike: a plot name and its
-/// options in, the encoded image (PNG bytes or SVG text) out, in memory.
+/// options in, the encoded image (PNG bytes or SVG text) or the plotted numbers (CSV) out, in memory.
 ///
 ///   plot::PlotRequest request;
 ///   request.name = "sigma_theta";
 ///   request.contour.deformation_scale = 50.0;
 ///   const std::string png = plot::render_plot(result_document, request);
+///
+/// What a name draws:
+///   a solid or node field        the contour plot; with a path, the field along the path
+///   closure                      gap closure along the gap row, one curve per iteration
+///   contact_pressure             contact pressure and closure along the gap row
+///   convergence                  the iteration's convergence
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,27 +22,32 @@
 #include "plot/canvas.hpp"
 #include "plot/closure_plot.hpp"
 #include "plot/contour_plot.hpp"
+#include "plot/gap_row.hpp"
+#include "plot/path_plot.hpp"
 
 namespace saasgaps::plot {
 
 struct PlotRequest {
-  /// A field of fields() (a contour plot; "closure" is the closure plot) or "convergence".
+  /// A field of fields() or "convergence".
   std::string name = "effective";
   ImageFormat format = ImageFormat::png;
   int width = 1200;  ///< px
   int height = 800;  ///< px
   ContourOptions contour;  ///< for contour plots (its field is taken from name)
   ClosureOptions closure;  ///< for the closure plot
+  GapRowOptions row;       ///< the gaps the closure and contact_pressure plots run along
+  std::optional<PathOptions> path;  ///< set: a line plot of the field along this path
 };
 
 /// Sets the deformation of a contour plot from its text form: "auto" or a positive magnification;
 /// empty leaves the mesh undeformed. Anything else is a std::invalid_argument quoting the text.
 void set_deformation(const std::string& text, ContourOptions& contour);
 
-/// The closure plot's x axis by name: "index" (gap index) or "position" (along the gaps).
-ClosureAxis closure_axis(const std::string& name);
+/// Sets the gap row from its text forms: ids as parse_gap_ids reads them ("" = every gap), the x
+/// axis as row_axis names it. Bad text: std::invalid_argument.
+void set_gap_row(const std::string& ids, const std::string& along, GapRowOptions& row);
 
-/// Every plot name: the fields (closure among them) and "convergence".
+/// Every plot name: the fields (closure and contact_pressure among them) and "convergence".
 std::vector<std::string> plot_names();
 
 /// Throws std::invalid_argument "unknown field 'x'; fields: sigma_r, ..., closure, convergence"
@@ -46,5 +58,9 @@ void require_plot_name(const std::string& name);
 /// "unknown field 'x'; fields: sigma_r, ..., closure, convergence"; so are bad options and results
 /// the plot cannot be drawn from.
 std::string render_plot(const nlohmann::json& result, const PlotRequest& request);
+
+/// The numbers the plot draws, as CSV (data_table.hpp), laid out for the request's image size: for
+/// closure, contact_pressure and a field along a path. Other plots: std::invalid_argument.
+std::string render_table(const nlohmann::json& result, const PlotRequest& request);
 
 }  // namespace saasgaps::plot

@@ -1,5 +1,6 @@
 #include "plot/result_mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <unordered_map>
@@ -64,6 +65,10 @@ ResultMesh ResultMesh::from_result(const json& result) {
     mesh.analysis = result.value("analysis", "plane_stress");
     mesh.status = status;
     mesh.iterations = result.value("iterations", 0);
+    if (const auto units = result.find("units"); units != result.end() && units->is_object()) {
+      mesh.units = {units->value("length", ""), units->value("force", ""), units->value("stress", ""),
+                    units->value("temperature", "")};
+    }
     if (!result.contains("nodes") || result.at("nodes").empty() || !result.at("nodes").at(0).contains("r")) {
       throw std::invalid_argument("the result document has no node coordinates (nodes[].r, .z): it predates "
                                   "self-contained results; solve the model again");
@@ -81,9 +86,11 @@ ResultMesh ResultMesh::from_result(const json& result) {
     }
     for (const json& g : array_member(result, "gaps")) {
       const int id = g.at("id").get<int>();
+      const double sigma_m = g.value("sigma_m", 0.0);
       mesh.gaps.push_back({id, node_indices(g.at("nodes"), index, "gap element", id), g.value("angle", 0.0),
-                           g.at("closure").get<double>(), gap_state(g.at("state").get<std::string>()),
-                           g.value("converged", true)});
+                           g.at("closure").get<double>(), sigma_m,
+                           g.value("contact_pressure", std::max(0.0, -sigma_m)),
+                           gap_state(g.at("state").get<std::string>()), g.value("converged", true)});
     }
     return mesh;
   } catch (const json::exception& e) {

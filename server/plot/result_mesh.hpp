@@ -36,6 +36,10 @@ struct GapElement {
   std::vector<int> nodes;  ///< 3 or 4 node indices, counter-clockwise
   double angle_deg = 0.0;  ///< direction M across the gap, from +r
   double closure = 0.0;    ///< percent; 100 = faces touching
+  double sigma_m = 0.0;    ///< normal stress across the gap, negative in compression
+  /// max(0, -sigma_m): the document's contact_pressure, or computed from sigma_m for results
+  /// written before it was added.
+  double contact_pressure = 0.0;
   GapState state = GapState::open;
   bool converged = true;
 };
@@ -43,8 +47,17 @@ struct GapElement {
 /// document[key] when it is an array, else an empty array (no copy either way).
 const nlohmann::json& array_member(const nlohmann::json& document, const char* key);
 
+/// The model's names of its units (the result's "units" object); empty: not named.
+struct UnitNames {
+  std::string length;
+  std::string force;
+  std::string stress;
+  std::string temperature;
+};
+
 struct ResultMesh {
   std::string title;
+  UnitNames units;
   std::string analysis;  ///< plane_stress | plane_strain | axisymmetric
   std::string status;    ///< converged | not_converged
   int iterations = 0;

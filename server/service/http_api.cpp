@@ -5,6 +5,7 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -46,7 +47,11 @@ std::int64_t job_id(const httplib::Request& req) {
   std::int64_t id = 0;
   const std::string text = req.matches[1];
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), id);
-  if (error != std::errc() || end != text.data() + text.size()) throw JobNotFound(0);
+  // The route matched digits only, so the one failure is a number beyond int64: no such job.
+  if (error != std::errc() || end != text.data() + text.size()) {
+    throw HttpError(404, "Not Found", "no job " + text + " (job ids run from 1 to " +
+                                          std::to_string(std::numeric_limits<std::int64_t>::max()) + ")");
+  }
   return id;
 }
 
@@ -100,6 +105,26 @@ json job_json(const JobRecord& j) {
             {"events", self + "/events"},
             {"result", self + "/result"},
             {"model", self + "/model"}}}};
+}
+
+/// A job as GET /v1/jobs lists it: the job resource without per-gap arrays (the last row's
+/// gap_closures), which grow with the model and belong on the job and its iterations.
+json job_list_item(const JobRecord& j) {
+  json item = job_json(j);
+  if (item["last_row"].is_object()) item["last_row"].erase("gap_closures");
+  return item;
+}
+
+/// The names of the model's units (its top-level "units" object; {} when it names none), read
+/// from the stored model text without building the rest of it: the parser's callback drops every
+/// other top-level member as it goes.
+json model_units(const std::string& model_text) {
+  const json model = json::parse(model_text, [](int depth, json::parse_event_t event, json& parsed) {
+    if (depth == 1 && event == json::parse_event_t::key) return parsed == "units";
+    return true;
+  });
+  const auto units = model.find("units");
+  return units != model.end() && units->is_object() ? *units : json::object();
 }
 
 void send_json(httplib::Response& res, int status, const json& body) {
@@ -240,12 +265,16 @@ plot::PlotRequest plot_request(const httplib::Request& req) {
   request.height = static_cast<int>(integer_parameter(req, "height", 16, 4000).value_or(request.height));
   request.contour.max_bands = static_cast<int>(integer_parameter(req, "bands", 2, 40).value_or(request.contour.max_bands));
   request.contour.mesh = req.get_param_value("mesh") == "1" || req.get_param_value("mesh") == "true";
+  const int samples = static_cast<int>(integer_parameter(req, "samples", 2, 100000).value_or(201));
   try {
     plot::set_deformation(req.get_param_value("deformed"), request.contour);
     if (req.has_param("colormap")) request.contour.color_map = req.get_param_value("colormap");
-    if (req.has_param("along")) request.closure.along = plot::closure_axis(req.get_param_value("along"));
+    if (req.has_param("levels")) request.contour.levels = plot::level_rule(req.get_param_value("levels"));
+    plot::set_gap_row(req.get_param_value("gaps"), req.get_param_value("along"), request.row);
+    if (req.has_param("path")) request.path = plot::PathOptions{plot::parse_path(req.get_param_value("path")), samples};
   } catch (const std::invalid_argument& e) {
-    throw HttpError(400, "Bad Request", std::string("query parameters deformed, colormap, along: ") + e.what());
+    throw HttpError(400, "Bad Request",
+                    std::string("query parameters deformed, colormap, levels, gaps, along, path: ") + e.what());
   }
   return request;
 }
@@ -391,6 +420,9 @@ void HttpApi::install(httplib::Server& server) {
     if (not_modified(req, res, entity_tag(model))) return;
     res.set_content(std::move(model), "application/json");
   });
+  server.Get(R"(/v1/jobs/(\d+)/units)", [this](const httplib::Request& req, httplib::Response& res) {
+    send_json(res, 200, model_units(store_.model(job_id(req))));
+  });
   server.Post(R"(/v1/jobs/(\d+)/cancel)", [this](const httplib::Request& req, httplib::Response& res) {
     const JobRecord job = store_.cancel(job_id(req));
     log_info("job_cancel_requested", {{"job", job.id}, {"request_id", res.get_header_value("X-Request-Id")},
@@ -411,9 +443,15 @@ void HttpApi::install(httplib::Server& server) {
       throw HttpError(409, "Conflict", "job " + std::to_string(id) + " failed; there is no solution to export");
     }
     res.set_header("Content-Disposition", "attachment; filename=\"job-" + std::to_string(id) + ".vtu\"");
-    res.set_content(io::result_to_vtu(result), "application/xml");
+    io::VtuFormat format = io::VtuFormat::binary;
+    try {
+      if (req.has_param("format")) format = io::vtu_format(req.get_param_value("format"));
+    } catch (const std::invalid_argument& e) {
+      throw HttpError(400, "Bad Request", std::string("query parameter format: ") + e.what());
+    }
+    res.set_content(io::result_to_vtu(result, format), "application/xml");
   });
-  server.Get(R"(/v1/jobs/(\d+)/plots/(\w+)\.(png|svg))", [this](const httplib::Request& req, httplib::Response& res) {
+  server.Get(R"(/v1/jobs/(\d+)/plots/(\w+)\.(png|svg|csv))", [this](const httplib::Request& req, httplib::Response& res) {
     const std::int64_t id = job_id(req);
     const plot::PlotRequest request = plot_request(req);
     try {
@@ -425,14 +463,15 @@ void HttpApi::install(httplib::Server& server) {
     // when the client already has it.
     if (not_modified(req, res, result_tag(store_, id, 0, req.target))) return;
     const json result = stored_result(store_, id);
-    std::string image;
+    const bool table = req.matches[3] == "csv";
+    std::string body;
     try {
-      image = plot::render_plot(result, request);
+      body = table ? plot::render_table(result, request) : plot::render_plot(result, request);
     } catch (const std::invalid_argument& e) {
       // The name is fine but this result cannot show it: a failed run, a closure plot without gaps.
       throw HttpError(409, "Conflict", "job " + std::to_string(id) + ": " + e.what());
     }
-    res.set_content(image, request.format == plot::ImageFormat::svg ? "image/svg+xml" : "image/png");
+    res.set_content(body, table ? "text/csv; charset=utf-8" : plot::media_type(request.format));
   });
   for (const web::Asset& asset : web::assets()) {
     server.Get(std::string(asset.path), [asset](const httplib::Request&, httplib::Response& res) {
@@ -490,7 +529,7 @@ void HttpApi::list(const httplib::Request& req, httplib::Response& res) {
   const auto before = integer_parameter(req, "page_token", 1, INT64_MAX);
   const JobStore::Page page = store_.list(state, static_cast<int>(page_size), before);
   json jobs = json::array();
-  for (const JobRecord& j : page.jobs) jobs.push_back(job_json(j));
+  for (const JobRecord& j : page.jobs) jobs.push_back(job_list_item(j));
   send_json(res, 200, {{"jobs", jobs},
                        {"next_page_token", page.next_before ? json(std::to_string(*page.next_before)) : json(nullptr)}});
 }

@@ -4,7 +4,7 @@
 #include "io/history_json.hpp"
 #include "io/model_reader.hpp"
 #include "io/result_writer.hpp"
-#include "io/state_codec.hpp"
+#include "io/stored_state.hpp"
 #include "service/log.hpp"
 #include "service/metrics.hpp"
 
@@ -19,7 +19,7 @@ class SinkObserver final : public IterationObserver {
       : sink_(sink), digest_(std::move(digest)), shutting_down_(shutting_down) {}
 
   void on_iteration(const IterationRecord& row, const RestartState& state) override {
-    sink_.iteration(row.iteration, io::history_row_text(row), io::state_to_cbor(state, digest_));
+    sink_.iteration(row.iteration, io::history_row_text(row), io::encode_stored_state(state, digest_));
   }
 
   bool stop_requested() override { return shutting_down_ || sink_.stop_requested(); }
@@ -84,15 +84,16 @@ void note_finished(JobStore& store, std::int64_t job, JobState state, const std:
   }
 }
 
-void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& shutting_down) {
+void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& shutting_down,
+                 const OrderingCache* ordering_cache) {
   try {
     std::string digest;
     const Model model = io::parse_model(input.model, &digest);
     std::optional<RestartState> state;
-    if (input.state) state = io::state_from_cbor(*input.state, digest);
+    if (input.state) state = io::decode_stored_state(*input.state, digest);
 
     SinkObserver observer(sink, digest, shutting_down);
-    const Solution solution = solve(model, &observer, state ? &*state : nullptr, resume_options(input.settings));
+    const Solution solution = solve(model, &observer, state ? &*state : nullptr, resume_options(input.settings), ordering_cache);
 
     JobState final_state = JobState::converged;
     std::string message = solution.message;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "ordering_cache.hpp"
 #include "service/job_store.hpp"
 
 namespace saasgaps::service {
@@ -56,6 +57,8 @@ void note_finished(JobStore& store, std::int64_t job, JobState state, const std:
 /// Solves the job from `input` and reports every iteration and the end to `sink`. A stop while
 /// `shutting_down` hands the job on (interrupted); a stop the sink asked for is a cancel. Solver
 /// failures end the run as failed; RunAbandoned from the sink propagates.
-void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& shutting_down);
+/// ordering_cache (optional): where fill-reducing orderings of meshes solved before are kept.
+void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& shutting_down,
+                 const OrderingCache* ordering_cache = nullptr);
 
 }  // namespace saasgaps::service

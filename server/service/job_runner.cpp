@@ -19,8 +19,12 @@ class StoreSink final : public RunSink {
  public:
   StoreSink(JobStore& store, EventHub& hub, std::int64_t job) : store_(store), hub_(hub), job_(job) {}
 
+  /// Commits the row and state; the time that takes is recorded as the row's commit_seconds in
+  /// the next commit (a row cannot contain the duration of its own commit).
   void iteration(int iteration, const std::string& row, const std::vector<std::uint8_t>& state) override {
-    store_.record_iteration(job_, iteration, row, state);
+    const auto started = std::chrono::steady_clock::now();
+    store_.record_iteration(job_, iteration, row, state, last_commit_);
+    last_commit_ = {iteration, std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()};
     hub_.notify();
     note_iteration(job_, row);
   }
@@ -29,7 +33,7 @@ class StoreSink final : public RunSink {
 
   void finish(JobState state, const std::optional<std::string>& result, const std::optional<std::string>& message,
               const std::optional<std::string>& error) override {
-    store_.finish(job_, state, result, message, error);
+    store_.finish(job_, state, result, message, error, last_commit_);
     note_finished(store_, job_, state, message, error);
   }
 
@@ -37,6 +41,7 @@ class StoreSink final : public RunSink {
   JobStore& store_;
   EventHub& hub_;
   std::int64_t job_;
+  std::optional<CommitTime> last_commit_;
 };
 
 bool trim_after_jobs() {
@@ -59,7 +64,9 @@ void trim_when_idle() {
 
 }  // namespace
 
-JobRunner::JobRunner(JobStore& store, EventHub& hub, int workers) : store_(store), hub_(hub) {
+JobRunner::JobRunner(JobStore& store, EventHub& hub, int workers, const std::filesystem::path& ordering_cache)
+    : store_(store), hub_(hub) {
+  if (!ordering_cache.empty()) ordering_cache_.emplace(ordering_cache);
   const std::string host = "pid " + std::to_string(::getpid());
   for (int w = 0; w < workers; ++w) {
     threads_.emplace_back([this, name = host + " worker " + std::to_string(w + 1)] { work(name); });
@@ -114,7 +121,8 @@ void JobRunner::work(const std::string& name) {
 
 void JobRunner::run(const ClaimedJob& claimed) {
   StoreSink sink(store_, hub_, claimed.job.id);
-  execute_run({claimed.model, claimed.state, claimed.job.settings, claimed.job.id}, sink, stopping_);
+  execute_run({claimed.model, claimed.state, claimed.job.settings, claimed.job.id}, sink, stopping_,
+              ordering_cache_ ? &*ordering_cache_ : nullptr);
 }
 
 }  // namespace saasgaps::service

@@ -4,18 +4,23 @@
 /// or a shutdown stops a job at its next iteration boundary.
 
 #include <atomic>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "service/event_hub.hpp"
+#include "ordering_cache.hpp"
 #include "service/job_store.hpp"
 
 namespace saasgaps::service {
 
 class JobRunner {
  public:
-  JobRunner(JobStore& store, EventHub& hub, int workers);
+  /// ordering_cache (optional): a directory where the fill-reducing orderings of the meshes solved
+  /// are kept, so resumes and later jobs on the same mesh skip computing them.
+  JobRunner(JobStore& store, EventHub& hub, int workers, const std::filesystem::path& ordering_cache = {});
   /// Stops: running jobs halt at their next iteration boundary and become interrupted, to be
   /// resumed by the next server; then the threads are joined.
   ~JobRunner();
@@ -30,6 +35,7 @@ class JobRunner {
 
   JobStore& store_;
   EventHub& hub_;
+  std::optional<OrderingCache> ordering_cache_;
   std::atomic<bool> stopping_{false};
   std::vector<std::thread> threads_;
 };

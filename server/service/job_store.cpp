@@ -142,6 +142,16 @@ std::optional<JobRecord> find_job(Connection& db, std::int64_t id) {
   return read_job(q);
 }
 
+/// Adds commit_seconds to a stored history row (the row's own commit could not hold it).
+void add_commit_seconds(Connection& db, std::int64_t job, const std::optional<CommitTime>& commit) {
+  if (!commit) return;
+  db.prepare("UPDATE iterations SET row = json_set(row, '$.commit_seconds', ?) WHERE job_id = ? AND iteration = ?")
+      .bind(1, commit->seconds)
+      .bind(2, job)
+      .bind(3, commit->iteration)
+      .run();
+}
+
 JobRecord require_job(Connection& db, std::int64_t id) {
   std::optional<JobRecord> job = find_job(db, id);
   if (!job) throw JobNotFound(id);
@@ -492,12 +502,14 @@ std::optional<ClaimedJob> JobStore::claim(const std::string& worker) {
 }
 
 void JobStore::record_iteration(std::int64_t id, int iteration, const std::string& row,
-                                const std::vector<std::uint8_t>& state, const Lease* lease) {
+                                const std::vector<std::uint8_t>& state, const std::optional<CommitTime>& previous,
+                                const Lease* lease) {
   require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   if (lease && !check_lease(*db, id, *lease, iteration, row)) return;  // committed before: a retry
   const std::string now = utc_now();
+  add_commit_seconds(*db, id, previous);
   // A plain INSERT: an iteration recorded twice would be a bug, and must fail loudly.
   db->prepare("INSERT INTO iterations (job_id, iteration, row) VALUES (?, ?, ?)").bind(1, id).bind(2, iteration).bind(3, row).run();
   db->prepare("INSERT INTO states (job_id, iteration, state, created_at) VALUES (?, ?, ?, ?)")
@@ -531,11 +543,12 @@ bool JobStore::cancel_requested(std::int64_t id) {
 
 void JobStore::finish(std::int64_t id, JobState state, const std::optional<std::string>& result,
                       const std::optional<std::string>& message, const std::optional<std::string>& error,
-                      const Lease* lease) {
+                      const std::optional<CommitTime>& last_commit, const Lease* lease) {
   require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   if (lease && !check_lease(*db, id, *lease, std::nullopt, {})) return;  // finished before: a retry
+  add_commit_seconds(*db, id, last_commit);
   if (result) {
     db->prepare("INSERT OR REPLACE INTO results (job_id, document) VALUES (?, ?)").bind(1, id).bind(2, *result).run();
   }

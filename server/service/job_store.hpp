@@ -106,6 +106,12 @@ struct SlurmRun {
   std::string updated_at;  ///< last change (cancel request, iteration, state)
 };
 
+/// How long an iteration's commit took (encoding its state, writing and committing it), in s.
+struct CommitTime {
+  int iteration = 0;
+  double seconds = 0.0;
+};
+
 struct JobEvent {
   std::int64_t id = 0;
   std::string kind;  ///< "state" or "iteration"
@@ -168,17 +174,20 @@ class JobStore {
   /// The oldest queued or interrupted job, now running (attempts + 1, a new lease), or nothing.
   std::optional<ClaimedJob> claim(const std::string& worker);
   /// One finished iteration: its history row, its restart state (only the latest two are kept) and
-  /// its event, in one transaction. With a lease (a remote worker), LeaseConflict unless the lease
-  /// still holds the running job; an iteration this lease already committed with the same row is
-  /// accepted again unchanged (a retried request whose answer was lost).
+  /// its event, in one transaction. previous: the commit time of the iteration before, added to
+  /// its stored row as commit_seconds in the same transaction. With a lease (a remote worker),
+  /// LeaseConflict unless the lease still holds the running job; an iteration this lease already
+  /// committed with the same row is accepted again unchanged (a retried request whose answer was lost).
   void record_iteration(std::int64_t id, int iteration, const std::string& row,
-                        const std::vector<std::uint8_t>& state, const Lease* lease = nullptr);
+                        const std::vector<std::uint8_t>& state, const std::optional<CommitTime>& previous = {},
+                        const Lease* lease = nullptr);
   [[nodiscard]] bool cancel_requested(std::int64_t id);
-  /// A run ended: its final state, result document and message. With a lease, LeaseConflict unless
-  /// it holds the running job; a repeat by the same lease of a finish already recorded is ignored.
+  /// A run ended: its final state, result document and message (and the commit time of its last
+  /// iteration, added to that row as commit_seconds). With a lease, LeaseConflict unless it holds
+  /// the running job; a repeat by the same lease of a finish already recorded is ignored.
   void finish(std::int64_t id, JobState state, const std::optional<std::string>& result,
               const std::optional<std::string>& message, const std::optional<std::string>& error,
-              const Lease* lease = nullptr);
+              const std::optional<CommitTime>& last_commit = {}, const Lease* lease = nullptr);
 
   /// Cancels a queued or interrupted job at once, or asks a running one to stop at its next
   /// iteration boundary. JobConflict for a finished job.

@@ -26,6 +26,10 @@ Connection::Connection(const std::string& path, OpenMode mode) {
     sqlite3_busy_timeout(db_, 10000);
     // synchronous=FULL: a commit is on disk (WAL fsynced) before it returns, so a kill -9 or power
     // loss after an iteration's commit cannot lose that iteration.
+    // A new database gets large pages: a job writes megabytes of restart state and result per
+    // commit, which 4 KiB pages split into thousands of page writes, each twice (WAL, then the
+    // checkpoint). The page size of an existing database stays as it is (a no-op there).
+    execute("PRAGMA page_size=" + std::to_string(page_size) + ";");
     execute("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
   } catch (...) {
     sqlite3_close_v2(db_);

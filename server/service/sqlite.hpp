@@ -38,6 +38,9 @@ class Statement;
 
 class Connection {
  public:
+  /// Page size of databases this code creates (bytes). See docs/performance.md for the measurements.
+  static constexpr int page_size = 16384;
+
   /// Opens (creating if needed) the database file in WAL mode with full-sync commits and a busy
   /// timeout, and foreign keys on.
   explicit Connection(const std::string& path, OpenMode mode = OpenMode::shared);

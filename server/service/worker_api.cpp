@@ -62,7 +62,7 @@ void install_worker_api(httplib::Server& server, JobStore& store, EventHub& hub)
     const std::int64_t id = path_job(req);
     const Lease lease = request_lease(req);
     const protocol::Iteration it = decoded(req, protocol::decode_iteration);
-    store.record_iteration(id, it.iteration, it.row, it.state, &lease);
+    store.record_iteration(id, it.iteration, it.row, it.state, {}, &lease);
     hub.notify();
     note_iteration(id, it.row);
     res.set_content(nlohmann::json{{"committed", it.iteration}, {"stop", store.cancel_requested(id)}}.dump(),
@@ -72,7 +72,7 @@ void install_worker_api(httplib::Server& server, JobStore& store, EventHub& hub)
     const std::int64_t id = path_job(req);
     const Lease lease = request_lease(req);
     const protocol::Finish f = decoded(req, protocol::decode_finish);
-    store.finish(id, f.state, f.result, f.message, f.error, &lease);
+    store.finish(id, f.state, f.result, f.message, f.error, {}, &lease);
     hub.notify();
     note_finished(store, id, f.state, f.message, f.error);
     res.status = 204;

@@ -53,6 +53,28 @@ function number(value, digits) {
   return typeof value === "number" ? value.toFixed(digits) : "";
 }
 
+// The API's times are UTC ("2026-11-23T13:31:23Z"); people read them in their own zone, named.
+const localTime = new Intl.DateTimeFormat(undefined, {
+  year: "numeric", month: "2-digit", day: "2-digit", hour: "2-digit", minute: "2-digit", second: "2-digit",
+  timeZoneName: "short",
+});
+function when(iso) {
+  if (!iso) return "";
+  const date = new Date(iso);
+  return isNaN(date) ? iso : localTime.format(date);
+}
+
+// Marks the view usable (its data shown, its controls live): the browser test waits for this.
+function ready(name) {
+  document.body.dataset.ready = name;
+  window.saasgapsReadyAt = performance.now();
+}
+
+// " [psi]" for a quantity the model names a unit for, else "".
+function unitOf(units, kind) {
+  return units && units[kind] ? ` [${units[kind]}]` : "";
+}
+
 // ---------------------------------------------------------------------------------------------
 // The job list.
 
@@ -76,10 +98,18 @@ async function showList() {
       link.textContent = job.id;
       row.insertCell().append(link);
       cell(row, job.title);
-      stateBadge(row.insertCell().appendChild(document.createElement("span")), job.state);
+      const stateCell = row.insertCell();
+      stateBadge(stateCell.appendChild(document.createElement("span")), job.state);
+      if (job.error) {
+        // Why it failed, at a glance: the first line here, the whole text on hover.
+        const reason = stateCell.appendChild(document.createElement("div"));
+        reason.className = "reason";
+        reason.textContent = job.error.split("\n")[0];
+        reason.title = job.error;
+      }
       cell(row, `${job.iteration} / ${job.max_iterations}`);
-      cell(row, job.created_at.replace("T", " ").replace("Z", ""));
-      cell(row, (job.finished_at || "").replace("T", " ").replace("Z", ""));
+      cell(row, when(job.created_at));
+      cell(row, when(job.finished_at));
     }
     next = page.next_page_token;
     more.hidden = !next;
@@ -100,6 +130,7 @@ async function showList() {
     }
   });
   await load(false);
+  ready("list");
   const timer = setInterval(() => { if (!more.hidden) return; load(false).catch(() => {}); }, 3000);
   closeJobView = () => clearInterval(timer);
 }
@@ -113,8 +144,30 @@ async function showJob(id) {
   const base = `/v1/jobs/${id}`;
   const rows = new Map();
 
+  let units = {};
+  let headerDone = false;
+
+  // The watched elements' and gaps' columns, as the CLI prints them: named from the first row.
+  function addWatchHeader(row) {
+    if (headerDone) return;
+    headerDone = true;
+    const head = $("#iterations thead tr");
+    const stress = unitOf(units, "stress");
+    for (const e of (row.watch || {}).elements || []) {
+      for (const name of ["s_r", "s_th", "eff"]) {
+        head.appendChild(Object.assign(document.createElement("th"), { textContent: `el ${e.id} ${name}${stress}` }));
+      }
+    }
+    for (const g of (row.watch || {}).gaps || []) {
+      for (const name of [`E_M${stress}`, "clos %", `s_M${stress}`]) {
+        head.appendChild(Object.assign(document.createElement("th"), { textContent: `gap ${g.id} ${name}` }));
+      }
+    }
+  }
+
   function addRow(row) {
     if (rows.has(row.iteration)) return;
+    addWatchHeader(row);
     const tr = document.createElement("tr");
     tr.dataset.iteration = row.iteration;
     for (const [text, digits] of [[row.iteration, 0], [row.tensile_modulus, 4], [row.closed_gaps, 0],
@@ -125,6 +178,14 @@ async function showJob(id) {
     cell(tr, row.extrapolated ? "yes" : "");
     cell(tr, row.attempt);
     cell(tr, number(row.seconds, 3));
+    for (const e of (row.watch || {}).elements || []) {
+      for (const value of [e.sigma_r, e.sigma_theta, e.effective]) cell(tr, number(value, 1));
+    }
+    for (const g of (row.watch || {}).gaps || []) {
+      cell(tr, typeof g.modulus === "number" ? g.modulus.toPrecision(5) : "");
+      cell(tr, number(g.closure, 2));
+      cell(tr, number(g.sigma_m, 1));
+    }
     rows.set(row.iteration, tr);
     // Keep the table ordered even if rows arrive out of order (a reconnect after a gap).
     const later = [...rows.keys()].filter(k => k > row.iteration).sort((a, b) => a - b)[0];
@@ -138,38 +199,109 @@ async function showJob(id) {
     $("#job-iteration").textContent = job.iteration;
     $("#job-max").textContent = job.max_iterations;
     $("#job-attempts").textContent = job.attempts;
-    $("#job-message").textContent = job.error || job.message || "";
+    $("#job-created").textContent = when(job.created_at);
+    $("#job-started").textContent = when(job.started_at) || "not yet";
+    $("#job-finished").textContent = when(job.finished_at) || "not yet";
+    // A failed job says why, in full; other jobs show the run's message.
+    $("#job-error").hidden = !job.error;
+    $("#job-error").textContent = job.error ? `Failed: ${job.error}` : "";
+    $("#job-message").textContent = job.error ? "" : (job.message || "");
     const active = ["queued", "running", "interrupted"].includes(job.state);
     $("#cancel").disabled = !active || job.cancel_requested;
     $("#resume").disabled = ["queued", "running", "converged"].includes(job.state);
     const hasResult = !["queued", "running"].includes(job.state);
+    if (job.last_row && Array.isArray(job.last_row.gap_closures)) hasGaps = job.last_row.gap_closures.length > 0;
     $("#links").replaceChildren(...[["model", base + "/model"], ["iterations", base + "/iterations"]]
       .concat(hasResult ? [["result (JSON)", base + "/result"], ["result (VTU for ParaView)", base + "/result.vtu"]] : [])
+      .concat(hasResult && hasGaps ? [["contact pressure (CSV)", base + "/plots/contact_pressure.csv"]] : [])
       .map(([label, href]) => Object.assign(document.createElement("a"), { href: withToken(href), textContent: label })));
-    if (hasResult) showPlots();
+    if (hasResult && !plotsShown) showPlots();
   }
 
-  function plotUrl(name, extra) {
-    const params = new URLSearchParams(Object.assign({ width: "900", height: "560" }, extra || {}));
-    return withToken(`${base}/plots/${name}.svg?${params}`);
+  // Plots are drawn for the space they get: the figure's width in device pixels, so a PNG is sharp
+  // and no larger than the screen needs (a 10^5-element SVG is tens of MB; its PNG is not).
+  // [image, plot name, the options it takes]
+  const plots = [["#contour-plot", () => $("#plot-field").value, contourOptions], ["#contact-plot", () => "contact_pressure", rowOptions],
+                 ["#closure-plot", () => "closure", rowOptions], ["#convergence-plot", () => "convergence", () => ({})]];
+  let plotsShown = false;
+  let plotStamp = -1;
+
+  function plotUrl(name, width, height, extra) {
+    const format = $("#plot-format").value;
+    const params = new URLSearchParams(Object.assign({ width: String(width), height: String(height) }, extra || {}));
+    return withToken(`${base}/plots/${name}.${format}?${params}`);
   }
 
-  function showPlots() {
-    const field = $("#plot-field").value;
+  // The gap row of the contact and closure plots: which gaps, in which order, against what.
+  function rowOptions() {
+    const options = { along: $("#plot-along").value };
+    const gaps = $("#plot-gaps").value.replace(/\s+/g, "");
+    if (gaps) options.gaps = gaps;
+    return options;
+  }
+
+  function contourOptions() {
     const options = {};
     if ($("#plot-deformed").checked) options.deformed = "auto";
     if ($("#plot-mesh").checked) options.mesh = "1";
-    const stamp = { t: String(rows.size) };  // a new picture after new iterations
-    $("#contour-plot").src = plotUrl(field, Object.assign(options, stamp));
-    $("#closure-plot").src = plotUrl("closure", stamp);
-    $("#convergence-plot").src = plotUrl("convergence", stamp);
-    for (const img of view.querySelectorAll(".plots img")) {
-      img.onload = () => { img.hidden = false; $("#plot-note").textContent = ""; };
-      img.onerror = () => { img.hidden = true; };
+    if ($("#plot-levels").value !== "quantile") options.levels = $("#plot-levels").value;
+    return options;
+  }
+
+  let hasGaps = true;
+
+  function showPlots() {
+    plotsShown = true;
+    plotStamp = rows.size;
+    const ratio = window.devicePixelRatio || 1;
+    // A model without gaps has no gap plots: their figures go before the others are measured.
+    const gapPlot = selector => selector === "#contact-plot" || selector === "#closure-plot";
+    for (const [selector] of plots) $(selector).parentElement.hidden = gapPlot(selector) && !hasGaps;
+    for (const [selector, name, optionsOf] of plots) {
+      const img = $(selector);
+      if (gapPlot(selector) && !hasGaps) continue;
+      const width = Math.min(4000, Math.max(320, Math.round(img.parentElement.clientWidth * ratio)));
+      const height = Math.round(width * 0.62);
+      const options = optionsOf();
+      const extra = Object.assign({ t: String(rows.size) }, options);  // new rows: a new picture
+      img.onload = () => { img.hidden = false; img.parentElement.hidden = false; $("#plot-note").textContent = ""; };
+      img.onerror = () => {
+        img.hidden = true;
+        img.parentElement.hidden = selector !== "#contour-plot";
+        // Say why, e.g. a gap row naming a gap the model does not have.
+        fetch(img.src).then(r => r.json()).then(p => { $("#plot-note").textContent = `${name()}: ${p.detail}`; }).catch(() => {});
+      };
+      img.dataset.plot = name();
+      img.dataset.width = String(width);
+      img.dataset.extra = JSON.stringify(options);
+      img.src = plotUrl(name(), width, height, extra);
     }
   }
 
-  for (const control of ["#plot-field", "#plot-deformed", "#plot-mesh"]) {
+  // A plot clicked opens full size: drawn again for the whole window.
+  function openFull(img) {
+    const ratio = window.devicePixelRatio || 1;
+    const width = Math.min(4000, Math.round(window.innerWidth * 0.96 * ratio));
+    const height = Math.min(4000, Math.round(window.innerHeight * 0.9 * ratio));
+    const overlay = document.getElementById("full-view");
+    const big = overlay.querySelector("img");
+    big.src = plotUrl(img.dataset.plot, width, height, JSON.parse(img.dataset.extra || "{}"));
+    overlay.querySelector("a").href = plotUrl(img.dataset.plot, width, height,
+                                              Object.assign({}, JSON.parse(img.dataset.extra || "{}")));
+    overlay.hidden = false;
+  }
+
+  for (const [selector] of plots) $(selector).addEventListener("click", event => openFull(event.currentTarget));
+  $("#delete").addEventListener("click", async () => {
+    if (!confirm(`Delete job ${id} with its iterations and result? This cannot be undone.`)) return;
+    try {
+      await api(base, { method: "DELETE" });
+      location.hash = "#/";
+    } catch (error) { $("#action-status").textContent = error.message; }
+  });
+
+  for (const control of ["#plot-field", "#plot-deformed", "#plot-mesh", "#plot-levels", "#plot-format", "#plot-gaps",
+                         "#plot-along"]) {
     $(control).addEventListener("change", showPlots);
   }
   $("#cancel").addEventListener("click", async () => {
@@ -190,8 +322,14 @@ async function showJob(id) {
     } catch (error) { $("#action-status").textContent = error.message; }
   });
 
-  showState(await api(base));
-  for (const row of (await api(base + "/iterations")).iterations) addRow(row);
+  const [job, history, named] = await Promise.all([api(base), api(base + "/iterations"),
+                                                   api(base + "/units").catch(() => ({}))]);
+  units = named || {};
+  const unitNames = Object.entries(units).map(([kind, name]) => `${kind} ${name}`);
+  $("#job-units").textContent = unitNames.length ? unitNames.join(", ") : "not named in the model";
+  for (const row of history.iterations) addRow(row);
+  showState(job);
+  ready("job");
 
   // The event stream: one event per iteration and per state change. EventSource reconnects by
   // itself with Last-Event-ID; the server ends the stream when the job stops changing.
@@ -203,7 +341,11 @@ async function showJob(id) {
       addRow(JSON.parse(event.data));
       api(base).then(showState).catch(() => {});
     });
-    source.addEventListener("state", () => api(base).then(showState).catch(() => {}));
+    source.addEventListener("state", () => api(base).then(job => {
+      const redraw = plotsShown && plotStamp !== rows.size;
+      showState(job);
+      if (redraw) showPlots();
+    }).catch(() => {}), { once: false });
     source.onerror = () => {
       // A finished job closes its stream; stop reconnecting then.
       api(base).then(job => { if (!["queued", "running", "interrupted"].includes(job.state)) source.close(); })
@@ -235,6 +377,11 @@ async function health() {
     document.getElementById("health").textContent = "server unreachable";
   }
 }
+
+// The full-size view closes on a click or Escape.
+const fullView = document.getElementById("full-view");
+fullView.addEventListener("click", event => { if (event.target.tagName !== "A") fullView.hidden = true; });
+document.addEventListener("keydown", event => { if (event.key === "Escape") fullView.hidden = true; });
 
 window.addEventListener("hashchange", route);
 route();

@@ -1,5 +1,5 @@
-# Writes the web assets into a C++ source as raw string literals, so the binary serves the page
-# with nothing else installed. Run by CMake at build time:
+# Writes the web assets (and the OpenAPI document, served at /openapi.json) into a C++ source as raw
+# string literals, so the binary serves them with nothing else installed. Run by CMake at build time:
 #   cmake -DOUTPUT=web_assets.cpp -DINPUTS="index.html|app.js|app.css" -P embed.cmake
 file(WRITE "${OUTPUT}" "// Generated from server/web by embed.cmake: do not edit.\n#include \"web/web_assets.hpp\"\n\n")
 file(APPEND "${OUTPUT}" "namespace saasgaps::web {\n\nnamespace {\nconst Asset table[] = {\n")
@@ -10,6 +10,9 @@ foreach(input IN LISTS INPUTS)
   if(extension STREQUAL ".html")
     set(type "text/html; charset=utf-8")
     set(path "/")
+  elseif(extension STREQUAL ".json")
+    set(type "application/json")
+    set(path "/${name}")
   elseif(extension STREQUAL ".js")
     set(type "text/javascript; charset=utf-8")
     set(path "/${name}")

@@ -25,7 +25,6 @@
 #include "sparse_cholesky.hpp"
 #include "stiffness_system.hpp"
 #include "support/ring_fit.hpp"
-#include "thread_environment.hpp"
 
 using namespace saasgaps;
 
@@ -48,7 +47,6 @@ Model ring_fit(int radial, int hoop, double eccentricity) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  ensure_thread_environment(argv);
   CLI::App app{"Times the exact contact solve against one factorization + solve of the same matrix"};
   double target_dofs = 1.5e5;
   int hoop = 600;

@@ -21,7 +21,6 @@
 #include "io/assembly_reader.hpp"
 #include "io/gmsh_mesh.hpp"
 #include "io/model_reader.hpp"
-#include "thread_environment.hpp"
 
 using namespace saasgaps;
 namespace fs = std::filesystem;
@@ -68,7 +67,6 @@ nlohmann::json assembly(const std::string& mesh) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  ensure_thread_environment(argv);
   CLI::App app{"Times saasgaps import against the solve of the imported model"};
   int n = 708;
   std::string dir = (fs::temp_directory_path() / "saasgaps-import-bench").string();

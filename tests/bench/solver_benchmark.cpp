@@ -1,23 +1,33 @@
 // saasgaps_bench: times the solver's stages on a generated structured plane-strain model.
 //
-//   build/tests/bench/saasgaps_bench --dofs 1000000 [--gaps] [--baseline]
+//   build/tests/bench/saasgaps_bench --dofs 1000000 [--gaps] [--baseline] [--end-to-end]
 //
 // The model is an n x n block of SAAS quads, fixed at the bottom, pressed on the top, heated; with
-// --gaps it is cut in two at mid height by a row of gap elements. Reported: pattern construction,
-// assembly, symbolic analysis, numeric factorization (first, and repeated in the same factor object),
-// solve, one gap iteration (gap patch + numeric factorization + solve), peak memory; and ratios
+// --gaps it is cut in two at mid height by a row of gap elements. Reported per stage: wall time and
+// the true peak resident memory of the whole process during that stage (VmHWM of /proc/self/status,
+// reset before each stage by writing 5 to /proc/self/clear_refs; where the kernel refuses the reset
+// the column is the running peak, and the header says so). Stages: pattern construction, assembly,
+// symbolic analysis, numeric factorization (first, and repeated in the same factor object), solve,
+// one gap iteration (gap patch + numeric factorization + solve); with --end-to-end, solve() itself
+// for three iterations twice, first computing the ordering (and storing it in a fresh ordering
+// cache), then loading it: the first iteration over a later one, uncached and cached. Ratios are
 // against baselines measured in the same run: assembly / factorization, gap iteration /
 // factorization, and (with --baseline) our scatter assembly against Eigen's triplet assembly.
-#include <sys/resource.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
 #include <vector>
 
 #include "analysis.hpp"
+#include "cholmod_memory.hpp"
 #include "dof_map.hpp"
 #include "element_data.hpp"
 #include "gap_closure.hpp"
@@ -25,7 +35,6 @@
 #include "sparse_cholesky.hpp"
 #include "stiffness_system.hpp"
 #include "support/mesh_builder.hpp"
-#include "thread_environment.hpp"
 
 using namespace saasgaps;
 
@@ -43,10 +52,62 @@ double timed(F&& f) {
   return seconds_since(start);
 }
 
-double peak_rss_mib() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+/// A field of /proc/self/status in kB (VmHWM, VmRSS, Threads ...), or -1.
+double status_field(const std::string& name) {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind(name + ":", 0) == 0) return std::stod(line.substr(name.size() + 1));
+  }
+  return -1.0;
+}
+
+/// Starts a new peak-memory interval; false when the kernel does not allow it.
+bool reset_peak_rss() {
+  std::ofstream clear("/proc/self/clear_refs");
+  clear << "5";
+  clear.flush();
+  return static_cast<bool>(clear);
+}
+
+/// Stages with their wall time and the process's peak resident memory while each ran.
+class Stages {
+ public:
+  template <class F>
+  double run(const std::string& name, F&& f) {
+    resettable_ = reset_peak_rss() && resettable_;
+    const double seconds = timed(std::forward<F>(f));
+    rows_.push_back({name, seconds, status_field("VmHWM") / 1024.0});
+    return seconds;
+  }
+  void print() const {
+    std::printf("%-52s %10s %12s\n", "stage", "seconds", resettable_ ? "peak MiB" : "running peak MiB");
+    for (const Row& r : rows_) std::printf("%-52s %10.3f %12.0f\n", r.name.c_str(), r.seconds, r.peak_mib);
+  }
+  [[nodiscard]] double peak_mib() const {
+    double peak = 0.0;
+    for (const Row& r : rows_) peak = std::max(peak, r.peak_mib);
+    return peak;
+  }
+
+ private:
+  struct Row {
+    std::string name;
+    double seconds;
+    double peak_mib;
+  };
+  std::vector<Row> rows_;
+  bool resettable_ = true;
+};
+
+/// Iteration seconds of a solve() run (the history rows), the peak memory stage recorded by Stages.
+std::vector<double> iteration_seconds(const Model& m, const OrderingCache& cache, int iterations) {
+  ResumeOptions limit;
+  limit.max_iterations = iterations;
+  const Solution s = solve(m, nullptr, nullptr, limit, &cache);
+  std::vector<double> seconds;
+  for (const IterationRecord& row : s.history) seconds.push_back(row.seconds);
+  return seconds;
 }
 
 Model block_model(int n, bool with_gaps) {
@@ -111,7 +172,6 @@ double triplet_assembly_seconds(const Model& m, const DofMap& dofs, const SolidM
 }  // namespace
 
 int main(int argc, char** argv) {
-  ensure_thread_environment(argv);
   CLI::App app{"Times the SAASGAPS solver stages on a generated structured plane-strain model"};
   double target_dofs = 1.0e5;
   bool with_gaps = false;
@@ -123,24 +183,28 @@ int main(int argc, char** argv) {
   app.add_flag("--end-to-end", end_to_end,
                "Also time one whole iteration as saasgaps solve runs it (fresh objects; symbolic analysis "
                "beside the assembly; stress recovery)");
+  bool huge_pages = false;
+  app.add_flag("--huge-pages", huge_pages, "Advise CHOLMOD's large blocks to use transparent huge pages");
   CLI11_PARSE(app, argc, argv);
+  advise_huge_pages(huge_pages);
 
   const int n = std::max(2, static_cast<int>(std::lround(std::sqrt(target_dofs / 2.0))) - 1);
   const Model m = block_model(n, with_gaps);
 
+  Stages stages;
   std::vector<double> u;
-  double pattern_s = 0, assembly_s = 0, symbolic_s = 0, first_numeric_s = 0, numeric_s = 0, solve_s = 0,
-         gap_iteration_s = 0;
   std::unique_ptr<DofMap> dofs;
   std::unique_ptr<StiffnessSystem> system;
   const SolidMaterials materials(m);
   const MaterialState state = materials.initial();
-  pattern_s = timed([&] {
+  stages.run("pattern and scatter map (once per model)", [&] {
     dofs = std::make_unique<DofMap>(m);
     system = std::make_unique<StiffnessSystem>(m, *dofs);
   });
   SolidMaterials::LawMemo memo;
-  assembly_s = timed([&] { system->assemble_solids([&](std::size_t e) { return materials.law(e, state, memo); }); });
+  const double assembly_s = stages.run("assembly (solid elements)", [&] {
+    system->assemble_solids([&](std::size_t e) { return materials.law(e, state, memo); });
+  });
 
   std::unique_ptr<GapClosure> gaps;
   GapModuli moduli;
@@ -150,48 +214,71 @@ int main(int argc, char** argv) {
     system->assemble_gaps([&](std::size_t g) { return gaps->law(g, moduli, m.analysis); });
   }
   std::unique_ptr<SparseCholesky> cholesky;
-  symbolic_s = timed([&] { cholesky = std::make_unique<SparseCholesky>(system->pattern(), dofs->node_of_equation()); });
-  first_numeric_s = timed([&] { cholesky->factorize(system->values()); });
-  numeric_s = timed([&] { cholesky->factorize(system->values()); });
+  stages.run("symbolic analysis (once per model)", [&] {
+    cholesky = std::make_unique<SparseCholesky>(system->pattern(), dofs->node_of_equation());
+  });
+  const double ordering_s = cholesky->ordering_seconds();
+  stages.run("numeric factorization, first", [&] { cholesky->factorize(system->values()); });
+  const double numeric_s = stages.run("numeric factorization, repeated", [&] { cholesky->factorize(system->values()); });
   u.resize(static_cast<std::size_t>(dofs->size()));
-  solve_s = timed([&] { cholesky->solve(system->rhs(), u); });
+  stages.run("solve", [&] { cholesky->solve(system->rhs(), u); });
+  double gap_iteration_s = 0.0;
   if (with_gaps) {
     // One iteration of section II when only gap moduli change: patch, refactor, solve.
     for (double& e : moduli.normal) e *= 3.0;
-    gap_iteration_s = timed([&] {
+    gap_iteration_s = stages.run("gap iteration (patch + factorize + solve)", [&] {
       system->assemble_gaps([&](std::size_t g) { return gaps->law(g, moduli, m.analysis); });
       cholesky->factorize(system->values());
       cholesky->solve(system->rhs(), u);
     });
   }
-  const double peak = peak_rss_mib();
 
-  std::printf("model: %d x %d SAAS quads%s, %zu nodes, %lld unknowns, nnz(K upper) %lld, nnz(L) %.3g, %.3g Gflop per factorization, ordering %s\n",
+  std::printf("model: %d x %d SAAS quads%s, %zu nodes, %lld unknowns, nnz(K upper) %lld, nnz(L) %.3g, %.3g Gflop per "
+              "factorization, ordering %s (%.3f s of the analysis)\n",
               n, n, with_gaps ? " cut by a row of gap elements" : "", m.nodes.size(),
               static_cast<long long>(dofs->size()), static_cast<long long>(system->pattern().nnz()),
-              cholesky->factor_nonzeros(), cholesky->factor_flops() / 1e9, cholesky->ordering());
-  std::printf("%-44s %10s\n", "stage", "seconds");
-  std::printf("%-44s %10.3f\n", "pattern and scatter map (once per model)", pattern_s);
-  std::printf("%-44s %10.3f\n", "assembly (solid elements)", assembly_s);
-  std::printf("%-44s %10.3f\n", "symbolic analysis (once per model)", symbolic_s);
-  std::printf("%-44s %10.3f\n", "numeric factorization, first", first_numeric_s);
-  std::printf("%-44s %10.3f\n", "numeric factorization, repeated", numeric_s);
-  std::printf("%-44s %10.3f\n", "solve", solve_s);
-  if (with_gaps) std::printf("%-44s %10.3f\n", "gap iteration (patch + factorize + solve)", gap_iteration_s);
-  std::printf("%-44s %10.3f\n", "assemble + factor + solve (first time)", assembly_s + symbolic_s + first_numeric_s + solve_s);
-  std::printf("%-44s %10.0f\n", "peak memory (MiB)", peak);
+              cholesky->factor_nonzeros(), cholesky->factor_flops() / 1e9, cholesky->ordering(), ordering_s);
+  // The stage objects go before solve() runs on its own, so its peak is a solve's alone.
+  cholesky.reset();
+  system.reset();
+  std::vector<double>().swap(u);
+
+  std::vector<double> uncached, cached;
+  if (end_to_end) {
+    const auto cache_dir = std::filesystem::temp_directory_path() / ("saasgaps-bench-cache-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(cache_dir);
+    const OrderingCache cache(cache_dir);
+    stages.run("end to end: solve(), 3 iterations, ordering computed", [&] { uncached = iteration_seconds(m, cache, 3); });
+    stages.run("end to end: solve(), 3 iterations, ordering cached", [&] { cached = iteration_seconds(m, cache, 3); });
+    std::filesystem::remove_all(cache_dir);
+  }
+  double triplet_s = 0.0;
+  if (baseline) {
+    triplet_s = stages.run("baseline: Eigen triplet assembly", [&] {
+      dofs = std::make_unique<DofMap>(m);
+      triplet_assembly_seconds(m, *dofs, materials, state);
+    });
+  }
+  stages.print();
+  std::printf("threads in the process at the end: %.0f; huge-page advice %s\n", status_field("Threads"),
+              huge_pages ? "on" : "off");
   std::printf("ratio assembly / repeated factorization: %.3f\n", assembly_s / numeric_s);
   if (with_gaps) std::printf("ratio gap iteration / repeated factorization: %.3f\n", gap_iteration_s / numeric_s);
+  const auto first_over_later = [](const std::vector<double>& s) {
+    if (s.size() < 2) return 0.0;
+    std::vector<double> later(s.begin() + 1, s.end());
+    std::sort(later.begin(), later.end());
+    return s.front() / later[later.size() / 2];
+  };
+  const auto print_iterations = [&](const char* name, const std::vector<double>& s) {
+    std::printf("%s: iteration seconds", name);
+    for (double x : s) std::printf(" %.3f", x);
+    std::printf("; first / later (median) %.3f\n", first_over_later(s));
+  };
   if (end_to_end) {
-    ResumeOptions one_iteration;
-    one_iteration.max_iterations = 1;
-    const double first_iteration_s = timed([&] { (void)solve(m, nullptr, nullptr, one_iteration); });
-    std::printf("%-44s %10.3f\n", "end to end: first iteration of solve()", first_iteration_s);
+    print_iterations("end to end, ordering computed", uncached);
+    print_iterations("end to end, ordering cached", cached);
   }
-  if (baseline) {
-    const double triplet_s = triplet_assembly_seconds(m, *dofs, materials, state);
-    std::printf("%-44s %10.3f\n", "baseline: Eigen triplet assembly", triplet_s);
-    std::printf("ratio scatter assembly / triplet assembly: %.3f\n", assembly_s / triplet_s);
-  }
+  if (baseline) std::printf("ratio scatter assembly / triplet assembly: %.3f\n", assembly_s / triplet_s);
   return 0;
 }

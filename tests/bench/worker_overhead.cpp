@@ -24,7 +24,7 @@
 #include "analysis.hpp"
 #include "io/history_json.hpp"
 #include "io/model_reader.hpp"
-#include "io/state_codec.hpp"
+#include "io/stored_state.hpp"
 #include "service/http_api.hpp"
 #include "service/job_store.hpp"
 #include "service/long_job_model.hpp"
@@ -47,7 +47,7 @@ class Recorder final : public IterationObserver {
  public:
   explicit Recorder(std::string digest) : digest_(std::move(digest)) {}
   void on_iteration(const IterationRecord& row, const RestartState& state) override {
-    iterations.push_back({io::history_row_text(row), io::state_to_cbor(state, digest_), row.seconds});
+    iterations.push_back({io::history_row_text(row), io::encode_stored_state(state, digest_), row.seconds});
   }
   bool stop_requested() override { return false; }
   std::vector<Recorded> iterations;

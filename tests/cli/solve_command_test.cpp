@@ -1,57 +1,13 @@
 // The saasgaps command line as a user drives it: exit codes of service.md, the iteration table on
 // stderr, and a run stopped and resumed through --state-out / --resume files.
-#include <gtest/gtest.h>
-
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <nlohmann/json.hpp>
-#include <sstream>
-#include <string>
+#include "command_fixture.hpp"
 
 namespace {
 
-namespace fs = std::filesystem;
+using saasgaps::testing::Outcome;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string err;
-};
-
-class SolveCommand : public ::testing::Test {
+class SolveCommand : public saasgaps::testing::CommandTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("saasgaps-cli-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  static std::string example(const std::string& name) { return std::string(SAASGAPS_EXAMPLES_DIR) + "/" + name; }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  Outcome saasgaps(const std::string& arguments) const {
-    const std::string err = path("stderr.txt");
-    const std::string command = std::string(SAASGAPS_BINARY) + " " + arguments + " > " + path("stdout.txt") + " 2> " + err;
-    const int status = std::system(command.c_str());
-    Outcome r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.err = read(err);
-    return r;
-  }
-
-  static std::string read(const std::string& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
-  static nlohmann::json json_of(const std::string& file) { return nlohmann::json::parse(read(file)); }
-
   /// The result without wall times and attempt numbers: what must match between runs.
   static nlohmann::json numbers(nlohmann::json result) {
     for (auto& row : result["history"]) {
@@ -60,8 +16,6 @@ class SolveCommand : public ::testing::Test {
     }
     return result;
   }
-
-  fs::path dir_;
 };
 
 TEST_F(SolveCommand, ConvergedRunPrintsTheTableAndExitsZero) {

@@ -54,6 +54,7 @@ json gap_json(const Model& model, const GapElement& gap, const GapResult& g) {
             {"closure", g.closure},
             {"modulus", g.modulus},
             {"sigma_m", g.sigma_m},
+            {"contact_pressure", g.sigma_m < 0.0 ? -g.sigma_m : 0.0},
             {"state", to_string(g.state)},
             {"converged", g.converged}};
   if (!g.converged) j["failure"] = describe(g.failure);
@@ -80,7 +81,7 @@ json result_document(const Model& model, const Solution& s) {
   for (std::size_t e = 0; e < s.elements.size(); ++e) elements.push_back(element_json(model, model.elements[e], s.elements[e]));
   json gaps = json::array();
   for (std::size_t g = 0; g < s.gaps.size(); ++g) gaps.push_back(gap_json(model, model.gaps->elements[g], s.gaps[g]));
-  return {{"status", s.status == RunStatus::converged ? "converged" : "not_converged"},
+  json document = {{"status", s.status == RunStatus::converged ? "converged" : "not_converged"},
           {"iterations", s.iterations},
           {"message", s.message},
           {"title", model.title},
@@ -90,6 +91,15 @@ json result_document(const Model& model, const Solution& s) {
           {"nodes", nodes},
           {"elements", elements},
           {"gaps", gaps}};
+  // The model's unit names, only those given; no member when it gives none.
+  json units = json::object();
+  for (const auto& [key, name] : {std::pair{"length", &model.units.length}, std::pair{"force", &model.units.force},
+                                  std::pair{"stress", &model.units.stress},
+                                  std::pair{"temperature", &model.units.temperature}}) {
+    if (!name->empty()) units[key] = *name;
+  }
+  if (!units.empty()) document["units"] = units;
+  return document;
 }
 
 json failed_result_document(const std::string& message) {

@@ -143,6 +143,10 @@ TEST(ResultWriter, RandomSolutionIsTheTreeWritersDocument) {
   Model model = testing::example_model("report-problem3-case1.json");
   // Text that needs escaping: quotes, backslashes, control characters, non-ASCII.
   model.title = "tab\there \"quoted\" back\\slash \x01\x1f new\nline \xc3\xa9t\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80";
+  // Some unit names given, one not: only the given ones are written.
+  model.units.length = "in";
+  model.units.stress = "lb/in\u00b2";
+  model.units.temperature = "\u00b0F";
   std::mt19937_64 rng(20261123);
   Solution s;
   s.status = RunStatus::not_converged;
@@ -176,6 +180,11 @@ TEST(ResultWriter, RandomSolutionIsTheTreeWritersDocument) {
     s.gaps.push_back(r);
   }
   expect_same_document(model, s);
+  const nlohmann::json written = nlohmann::json::parse(result_text(model, s));
+  EXPECT_EQ(written["units"], (nlohmann::json{{"length", "in"}, {"stress", "lb/in\u00b2"}, {"temperature", "\u00b0F"}}));
+  for (std::size_t g = 0; g < s.gaps.size(); ++g) {
+    EXPECT_EQ(written["gaps"][g]["contact_pressure"].get<double>(), s.gaps[g].sigma_m < 0.0 ? -s.gaps[g].sigma_m : 0.0);
+  }
   // A nan or inf (which JSON cannot hold) is null in both.
   s.nodes[0].u_r = std::nan("");
   s.elements[0].effective = std::numeric_limits<double>::infinity();

@@ -4,14 +4,15 @@
     /usr/bin/python3 tests/plot/check_vtu.py --saasgaps build/saasgaps --examples schemas/examples
 
 Solves report problem 3 case 1 with `saasgaps solve --vtu` and exports the result again with
-`saasgaps export-vtu`, then checks: both files are identical; point and cell counts equal the
-model's nodes and elements + gap elements; solid cells come first, then the gaps, with is_gap and
-element_id to match; and values read back exactly equal the result document's (a node's
-displacement and temperature, every element's sigma_r and effective stress, every gap's closure
-and state code, the coordinates).
+`saasgaps export-vtu`, then checks: both files are identical and binary (zlib-compressed appended
+data); point and cell counts equal the model's nodes and elements + gap elements; solid cells come
+first, then the gaps, with is_gap and element_id to match; and values read back exactly equal the
+result document's (a node's displacement and temperature, every element's sigma_r and effective
+stress, every gap's closure, contact pressure and state code, the coordinates). The ASCII export
+reads back to the same values and is larger; a .pvd export holds one file per iteration whose gap
+closures are that iteration's history row.
 """
 
-import argparse
 import json
 import pathlib
 import sys
@@ -21,7 +22,7 @@ import meshio
 import numpy
 
 STATE_CODES = {"open": 0, "partial": 1, "closed": 2, "overclosed": 3}
-from checking import check, failures, run
+from checking import arguments, check, failures, run
 
 
 def cell_array(mesh, name):
@@ -29,10 +30,7 @@ def cell_array(mesh, name):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--saasgaps", required=True)
-    parser.add_argument("--examples", required=True, type=pathlib.Path)
-    args = parser.parse_args()
+    args = arguments(__doc__)
     model_path = args.examples / "report-problem3-case1.json"
     model = json.loads(model_path.read_text())
     with tempfile.TemporaryDirectory(prefix="saasgaps-vtu-") as tmp:
@@ -43,6 +41,27 @@ def main():
               "solve --vtu and export-vtu wrote different files")
         result = json.loads((out / "result.json").read_text())
         mesh = meshio.read(out / "export.vtu")
+        binary = (out / "export.vtu").read_bytes()
+        check(b'compressor="vtkZLibDataCompressor"' in binary and b'format="appended"' in binary,
+              "the default VTU is not zlib-compressed appended data")
+        run(args.saasgaps, "export-vtu", str(out / "result.json"), "--format", "ascii", "-o", str(out / "ascii.vtu"))
+        ascii_mesh = meshio.read(out / "ascii.vtu")
+        check((out / "ascii.vtu").stat().st_size > 1.5 * len(binary), "the ASCII file is not larger than the binary one")
+        check((ascii_mesh.points == mesh.points).all(), "ASCII and binary points differ")
+        for name in mesh.cell_data:
+            check(all((a == b).all() for a, b in zip(mesh.cell_data[name], ascii_mesh.cell_data[name])),
+                  f"ASCII and binary {name} differ")
+        for name in mesh.point_data:
+            check((mesh.point_data[name] == ascii_mesh.point_data[name]).all(), f"ASCII and binary {name} differ")
+        (out / "series").mkdir()
+        run(args.saasgaps, "export-vtu", str(out / "result.json"), "-o", str(out / "series" / "p3.pvd"))
+        pvd = (out / "series" / "p3.pvd").read_text()
+        history = result["history"]
+        check(pvd.count("<DataSet") == len(history), f"the .pvd lists {pvd.count('<DataSet')} files for {len(history)} iterations")
+        for row in (history[0], history[len(history) // 2]):
+            step = meshio.read(out / "series" / f"p3_iter{row['iteration']:04d}.vtu")
+            closures = cell_array(step, "gap_closure")[len(model["elements"]):]
+            check(list(closures) == row["gap_closures"], f"iteration {row['iteration']}: gap closures differ from its history row")
 
     n_elements, n_gaps = len(model["elements"]), len(model["gaps"]["elements"])
     check(len(mesh.points) == len(model["nodes"]), f"{len(mesh.points)} points for {len(model['nodes'])} nodes")
@@ -63,6 +82,7 @@ def main():
     ids, is_gap = cell_array(mesh, "element_id"), cell_array(mesh, "is_gap")
     sigma_r, effective = cell_array(mesh, "sigma_r"), cell_array(mesh, "effective")
     closure, state = cell_array(mesh, "gap_closure"), cell_array(mesh, "gap_state")
+    pressure = cell_array(mesh, "gap_contact_pressure")
     for i, element in enumerate(result["elements"]):
         check(ids[i] == element["id"] and is_gap[i] == 0, f"cell {i} should be element {element['id']}")
         check(sigma_r[i] == element["sigma_r"], f"element {element['id']}: sigma_r {sigma_r[i]!r} vs {element['sigma_r']!r}")
@@ -73,6 +93,7 @@ def main():
         check(ids[i] == gap["id"] and is_gap[i] == 1, f"cell {i} should be gap {gap['id']}")
         check(closure[i] == gap["closure"], f"gap {gap['id']}: closure {closure[i]!r} vs {gap['closure']!r}")
         check(state[i] == STATE_CODES[gap["state"]], f"gap {gap['id']}: state code {state[i]} for {gap['state']}")
+        check(pressure[i] == gap["contact_pressure"], f"gap {gap['id']}: contact pressure {pressure[i]!r}")
     element62 = next(i for i, e in enumerate(result["elements"]) if e["id"] == 62)
     print(f"element 62: sigma_r = {sigma_r[element62]!r}; gap 81: closure = {closure[n_elements]!r}")
 

@@ -122,7 +122,7 @@ TEST_F(PlotRender, ClosureAndConvergencePngs) {
     EXPECT_GT(png_colours(render_plot(*result, request("convergence", ImageFormat::png, 640, 480)), 640, 480), 30U);
   }
   PlotRequest along = request("closure", ImageFormat::png);
-  along.closure.along = ClosureAxis::position;
+  along.row.along = RowAxis::position;
   EXPECT_GT(png_colours(render_plot(ring_, along), 900, 600), 30U);
 }
 
@@ -178,6 +178,34 @@ TEST_F(PlotRender, OtherBadArgumentsFailWithAMessage) {
   EXPECT_NE(r.err.find("missing.json"), std::string::npos) << r.err;
 }
 
+/// Runs saasgaps with the arguments, expecting exit code 1 and the message in its stderr.
+void expect_error(const Outcome& r, const std::string& message) {
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+}
+
+TEST_F(PlotRender, GapRowAndPathOptionsAreCheckedAndNamed) {
+  Outcome r = run("plot " + path("p3.json") + " --field contact_pressure --gaps 81-85,90 --along r -o " + path("row.csv"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string table = read(dir_ / "row.csv");
+  EXPECT_EQ(count(table, "\n8"), 5U) << "gaps 81..85 in the row's order:\n" << table;
+  EXPECT_NE(table.find("\n90,"), std::string::npos);
+  const std::string p3 = "plot " + path("p3.json");
+  expect_error(run(p3 + " --field contact_pressure --gaps 85-81 -o " + path("x.png")), "runs backwards");
+  expect_error(run(p3 + " --field closure --gaps 81,7 -o " + path("x.png")), "gap 7 is not a gap element");
+  expect_error(run(p3 + " --field effective --path 1,2 -o " + path("x.png")), "--path");
+  expect_error(run(p3 + " --field effective --path '50,50;60,60' -o " + path("x.png")), "does not pass through the mesh");
+  expect_error(run(p3 + " --field closure --path '0,0;1,1' -o " + path("x.png")), "gap field");
+  expect_error(run(p3 + " --field effective -o " + path("x.csv")), "data table");
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "x.csv"));
+  // A field along a path in every colour map (the map does not apply; the options still parse).
+  for (const char* map : {"viridis", "cividis", "rainbow"}) {
+    r = run("plot " + path("ring.json") + " --field temperature --path '0,0;2,2' --colormap " + map + " -o " + path("p.png"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+  }
+}
+
 TEST_F(PlotRender, VtuFromExportAndFromSolveAgree) {
   Outcome r = run("export-vtu " + path("p3.json") + " -o " + path("p3.vtu"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -187,6 +215,9 @@ TEST_F(PlotRender, VtuFromExportAndFromSolveAgree) {
   const std::string exported = read(dir_ / "p3.vtu");
   EXPECT_EQ(exported, read(dir_ / "again.vtu"));
   EXPECT_NE(exported.find("NumberOfPoints=\"114\" NumberOfCells=\"90\""), std::string::npos);
+  r = run("export-vtu " + path("p3.json") + " --format text -o " + path("p3.vtu"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("--format"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -6,10 +6,12 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "plot/band_levels.hpp"
 #include "plot/contour_bands.hpp"
 #include "plot/field.hpp"
 #include "plot/nice_scale.hpp"
 #include "plot/number_format.hpp"
+#include "plot/point_locator.hpp"
 #include "plot/plot_request.hpp"
 #include "plot/result_mesh.hpp"
 
@@ -206,6 +208,113 @@ TEST(RenderPlot, BadOptionsAreInvalidArguments) {
   EXPECT_THROW(image_format_for_path("plot.jpg"), std::invalid_argument);
   EXPECT_THROW(image_format_for_path("png"), std::invalid_argument);
   EXPECT_EQ(image_format_for_path("out/Plot.SVG"), ImageFormat::svg);
+}
+
+}  // namespace
+}  // namespace saasgaps::plot
+
+namespace saasgaps::plot {
+namespace {
+
+TEST(BandLevels, QuantileLevelsSplitTheAreaNotTheRange) {
+  // 90 % of the area between 0 and 9, a peak at 1000 on the rest: even levels put the 90 % in one
+  // band; quantile levels give it all bands but the last.
+  std::vector<double> values, weights;
+  for (int i = 0; i < 90; ++i) {
+    values.push_back(i * 0.1);
+    weights.push_back(1.0);
+  }
+  for (int i = 0; i < 10; ++i) {
+    values.push_back(900.0 + 10.0 * i);
+    weights.push_back(1.0);
+  }
+  const BandLevels even = band_levels(values, weights, 10, LevelRule::even);
+  const BandLevels quantile = band_levels(values, weights, 10, LevelRule::quantile);
+  const auto bands_below = [](const BandLevels& b, double v) {
+    return std::count_if(b.levels.begin(), b.levels.end(), [v](double l) { return l <= v; });
+  };
+  EXPECT_LE(bands_below(even, 9.0), 1) << "even: the 90 % sits in the first band";
+  EXPECT_GE(bands_below(quantile, 9.0), 8) << "quantile: the 90 % gets most bands";
+  EXPECT_LE(quantile.levels.front(), 0.0);
+  EXPECT_GE(quantile.levels.back(), 990.0);
+  EXPECT_TRUE(std::is_sorted(quantile.levels.begin(), quantile.levels.end()));
+  EXPECT_EQ(std::adjacent_find(quantile.levels.begin(), quantile.levels.end()), quantile.levels.end());
+}
+
+TEST(BandLevels, ATwoValuedFieldGetsALevelBetweenItsValues) {
+  const BandLevels b = band_levels({0.0, 0.0, 0.0, 400.0, 400.0, NAN}, {1.0, 1.0, 1.0, 1.0, 1.0, 1.0}, 12,
+                                   LevelRule::quantile);
+  ASSERT_EQ(b.levels.size(), 3U);
+  EXPECT_EQ(b.levels[0], 0.0);
+  EXPECT_GT(b.levels[1], 0.0);
+  EXPECT_LT(b.levels[1], 400.0);
+  EXPECT_EQ(b.levels[2], 400.0);
+  EXPECT_TRUE(band_levels({5.0, 5.0}, {1.0, 1.0}, 12, LevelRule::quantile).uniform);
+  EXPECT_THROW(band_levels({NAN}, {1.0}, 12, LevelRule::quantile), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace saasgaps::plot
+
+namespace saasgaps::plot {
+namespace {
+
+TEST(GapRow, IdsRangesAxesAndErrors) {
+  EXPECT_EQ(parse_gap_ids("3,5-7,2"), (std::vector<int>{3, 5, 6, 7, 2}));
+  for (const char* bad : {"", "3,,4", "a", "5-", "0", "7-5", "1-99999999"}) {
+    EXPECT_THROW(parse_gap_ids(bad), std::invalid_argument) << bad;
+  }
+  EXPECT_EQ(row_axis("position"), RowAxis::position);
+  EXPECT_THROW(row_axis("arc"), std::invalid_argument);
+  const ResultMesh mesh = ResultMesh::from_result(two_squares());
+  const GapRow row = select_gap_row(mesh, {{3}, RowAxis::r});
+  ASSERT_EQ(row.gaps.size(), 1U);
+  EXPECT_DOUBLE_EQ(row.x[0], 0.5) << "the gap centre's r";
+  EXPECT_THROW(select_gap_row(mesh, {{4}, RowAxis::index}), std::invalid_argument) << "4 is no gap";
+  EXPECT_DOUBLE_EQ(mesh.gaps[0].contact_pressure, 1e6) << "max(0, -sigma_m) when the document lacks it";
+}
+
+TEST(PointLocator, FindsTheElementAndItsWeights) {
+  const ResultMesh mesh = ResultMesh::from_result(two_squares());
+  const PointLocator locator(mesh);
+  const std::optional<Location> in_second = locator.locate(2.0, 0.25);
+  ASSERT_TRUE(in_second);
+  EXPECT_EQ(mesh.solids[in_second->element].id, 2);
+  double r = 0.0, z = 0.0, sum = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    r += in_second->weights[c] * mesh.nodes[in_second->nodes[c]].r;
+    z += in_second->weights[c] * mesh.nodes[in_second->nodes[c]].z;
+    sum += in_second->weights[c];
+  }
+  EXPECT_NEAR(r, 2.0, 1e-12);
+  EXPECT_NEAR(z, 0.25, 1e-12);
+  EXPECT_NEAR(sum, 1.0, 1e-12);
+  EXPECT_EQ(mesh.solids[locator.locate(0.5, 0.5)->element].id, 1);
+  EXPECT_TRUE(locator.locate(3.0, 1.0)) << "a corner belongs to its element";
+  EXPECT_FALSE(locator.locate(0.5, -0.005)) << "inside the gap, outside every solid";
+  EXPECT_FALSE(locator.locate(-1.0, 0.5));
+}
+
+TEST(PathPlot, PathsParseAndTablesRoundTrip) {
+  const auto points = parse_path("0,0.5;3,0.5");
+  ASSERT_EQ(points.size(), 2U);
+  EXPECT_EQ(points[1][0], 3.0);
+  for (const char* bad : {"1,2", "1,2;3", "a,b;1,1", "1,1;1,1", "1,2;3,4;"}) {
+    EXPECT_THROW(parse_path(bad), std::invalid_argument) << bad;
+  }
+  PlotRequest request;
+  request.name = "sigma_r";
+  request.width = 600;
+  request.height = 400;
+  request.path = PathOptions{points, 7};
+  const std::string csv = render_table(two_squares(), request);
+  // s = 0, 0.5, .., 3 along z = 0.5: element 1 (sigma_r 10) up to r = 1, then element 2 (40).
+  EXPECT_NE(csv.find("\n0,0,0.5,1,10,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\n3,3,0.5,2,40,"), std::string::npos) << csv;
+  EXPECT_EQ(DataTable::number(0.1), "0.1");
+  EXPECT_EQ(DataTable::number(NAN), "");
+  request.path.reset();
+  EXPECT_THROW(render_table(two_squares(), request), std::invalid_argument) << "a contour plot has no table";
 }
 
 }  // namespace

@@ -2,6 +2,10 @@
 // shows (check_vtu.py reads a real one back with meshio).
 #include <gtest/gtest.h>
 
+#include <zlib.h>
+
+#include <cstring>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "io/vtu_writer.hpp"
@@ -47,7 +51,7 @@ std::string array_text(const std::string& vtu, const std::string& name) {
 }
 
 TEST(VtuWriter, SolidsThenGapsWithTheirTypesAndData) {
-  const std::string vtu = result_to_vtu(triangle_and_gap());
+  const std::string vtu = result_to_vtu(triangle_and_gap(), VtuFormat::ascii);
   EXPECT_NE(vtu.find("NumberOfPoints=\"5\" NumberOfCells=\"2\""), std::string::npos);
   EXPECT_NE(vtu.find("a - b"), std::string::npos) << "no '--' inside the XML comment";
   EXPECT_EQ(array_text(vtu, "Points"), "0 0 0 1 0 0 0 1 0 1 -0.01 0 0 -0.01 0");
@@ -65,8 +69,93 @@ TEST(VtuWriter, SolidsThenGapsWithTheirTypesAndData) {
   EXPECT_EQ(array_text(vtu, "plastic_converged"), "0 1");
   EXPECT_EQ(array_text(vtu, "gap_closure"), "0 102");
   EXPECT_EQ(array_text(vtu, "gap_sigma_m"), "0 -300");
+  EXPECT_EQ(array_text(vtu, "gap_contact_pressure"), "0 300") << "max(0, -sigma_m) when the document lacks it";
   EXPECT_EQ(array_text(vtu, "gap_state"), "-1 2");
   EXPECT_EQ(array_text(vtu, "gap_converged"), "-1 1");
+}
+
+/// The bytes of a binary VTU's appended array `name`, decompressed (VTK's UInt64 block header).
+std::string appended_bytes(const std::string& vtu, const std::string& name) {
+  const std::size_t at = vtu.find("Name=\"" + name + "\"");
+  if (at == std::string::npos) return "(no array " + name + ")";
+  const std::size_t offset_at = vtu.find("offset=\"", at) + 8;
+  const std::size_t offset = std::stoul(vtu.substr(offset_at, vtu.find('"', offset_at) - offset_at));
+  const char* data = vtu.data() + vtu.find("<AppendedData encoding=\"raw\">") + 1;
+  data = std::strchr(data, '_') + 1 + offset;
+  std::uint64_t header[3];
+  std::memcpy(header, data, sizeof header);
+  std::vector<std::uint64_t> sizes(header[0]);
+  std::memcpy(sizes.data(), data + sizeof header, sizes.size() * sizeof(std::uint64_t));
+  const char* block = data + sizeof header + sizes.size() * sizeof(std::uint64_t);
+  std::string out;
+  for (std::size_t b = 0; b < sizes.size(); ++b) {
+    std::string plain(header[1], '\0');
+    uLongf length = static_cast<uLongf>(plain.size());
+    EXPECT_EQ(uncompress(reinterpret_cast<Bytef*>(plain.data()), &length, reinterpret_cast<const Bytef*>(block),
+                         static_cast<uLong>(sizes[b])),
+              Z_OK);
+    out.append(plain.data(), length);
+    block += sizes[b];
+  }
+  EXPECT_EQ(out.size(), (sizes.size() - 1) * header[1] + (header[2] ? header[2] : header[1]));
+  return out;
+}
+
+template <typename T>
+std::vector<T> values_of(const std::string& bytes) {
+  std::vector<T> v(bytes.size() / sizeof(T));
+  std::memcpy(v.data(), bytes.data(), v.size() * sizeof(T));
+  return v;
+}
+
+TEST(VtuWriter, BinaryIsZlibCompressedAppendedDataWithTheSameValues) {
+  const std::string vtu = result_to_vtu(triangle_and_gap());
+  EXPECT_NE(vtu.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);
+  EXPECT_NE(vtu.find("header_type=\"UInt64\""), std::string::npos);
+  EXPECT_EQ(vtu.find("format=\"ascii\""), std::string::npos);
+  EXPECT_EQ(values_of<std::int32_t>(appended_bytes(vtu, "node_id")), (std::vector<std::int32_t>{10, 20, 30, 40, 50}));
+  EXPECT_EQ(values_of<std::int64_t>(appended_bytes(vtu, "connectivity")),
+            (std::vector<std::int64_t>{0, 1, 2, 4, 3, 1, 0}));
+  EXPECT_EQ(values_of<std::uint8_t>(appended_bytes(vtu, "types")), (std::vector<std::uint8_t>{5, 9}));
+  EXPECT_EQ(values_of<double>(appended_bytes(vtu, "gap_sigma_m")), (std::vector<double>{0.0, -300.0}));
+  EXPECT_EQ(values_of<double>(appended_bytes(vtu, "eps_r")), (std::vector<double>{1e-3, 0.0}));
+
+  // An array larger than one 32 KiB block: 5000 nodes of displacement (120000 bytes, 4 blocks).
+  json big = triangle_and_gap();
+  for (int i = 0; i < 4995; ++i) {
+    big["nodes"].push_back({{"id", 100 + i}, {"r", 2.0 + i}, {"z", 0.0}, {"T", 1.0 * i}, {"u_r", 0.5 * i}, {"u_z", -1.0}});
+  }
+  const std::vector<double> t = values_of<double>(appended_bytes(result_to_vtu(big), "temperature"));
+  ASSERT_EQ(t.size(), 5000U);
+  EXPECT_EQ(t[4999], 4994.0);
+}
+
+TEST(VtuWriter, UnitsNameTheArrays) {
+  json result = triangle_and_gap();
+  result["units"] = {{"length", "in"}, {"stress", "psi"}, {"temperature", "degF"}};
+  const std::string vtu = result_to_vtu(result, VtuFormat::ascii);
+  for (const char* name : {"sigma_r [psi]", "effective [psi]", "gap_sigma_m [psi]", "gap_contact_pressure [psi]",
+                           "gap_modulus [psi]", "displacement [in]", "temperature [degF]"}) {
+    EXPECT_NE(vtu.find("Name=\"" + std::string(name) + "\""), std::string::npos) << name;
+  }
+  EXPECT_NE(vtu.find("Name=\"eps_r\""), std::string::npos) << "strains are dimensionless";
+  EXPECT_NE(vtu.find("Vectors=\"displacement [in]\""), std::string::npos);
+}
+
+TEST(VtuWriter, SeriesHasOneFilePerIterationAndACollection) {
+  json result = triangle_and_gap();
+  result["iterations"] = 2;
+  result["history"] = {{{"iteration", 1}, {"gap_closures", {250.0}}}, {{"iteration", 2}, {"gap_closures", {102.0}}}};
+  std::map<std::string, std::string> files;
+  std::vector<std::string> order;
+  write_vtu_series(result, "out/run", VtuFormat::ascii, [&](const std::string& file, const std::string& bytes) {
+    files[file] = bytes;
+    order.push_back(file);
+  });
+  ASSERT_EQ(order, (std::vector<std::string>{"out/run_iter0001.vtu", "out/run_iter0002.vtu", "out/run.pvd"}));
+  EXPECT_EQ(array_text(files["out/run_iter0001.vtu"], "gap_closure"), "0 250");
+  EXPECT_EQ(files["out/run_iter0002.vtu"], result_to_vtu(result, VtuFormat::ascii)) << "the last is the whole result";
+  EXPECT_NE(files["out/run.pvd"].find("timestep=\"1\" part=\"0\" file=\"run_iter0001.vtu\""), std::string::npos);
 }
 
 TEST(VtuWriter, GapStateCodes) {

@@ -1,12 +1,14 @@
 // The computational restart: a run stopped after iteration k (or ended not converged) and resumed
-// from its saved state, through the JSON and CBOR codecs, ends with every output number equal to the
-// uninterrupted run's.
+// from its saved state, through the JSON, CBOR and stored (compressed) codecs, ends with every output
+// number equal to the uninterrupted run's.
 #include <gtest/gtest.h>
 
 #include "analysis.hpp"
 #include "errors.hpp"
 #include "io/state_codec.hpp"
+#include "io/stored_state.hpp"
 #include "support/examples.hpp"
+#include "support/identical_solutions.hpp"
 
 namespace saasgaps {
 namespace {
@@ -22,35 +24,6 @@ class Recorder : public IterationObserver {
  private:
   int stop_after_;
 };
-
-void expect_identical(const Solution& a, const Solution& b) {
-  ASSERT_EQ(a.status, b.status);
-  ASSERT_EQ(a.iterations, b.iterations);
-  ASSERT_EQ(a.history.size(), b.history.size());
-  for (std::size_t k = 0; k < a.history.size(); ++k) {
-    EXPECT_TRUE(a.history[k].same_numbers(b.history[k])) << "history row " << k + 1;
-  }
-  ASSERT_EQ(a.nodes.size(), b.nodes.size());
-  for (std::size_t n = 0; n < a.nodes.size(); ++n) {
-    EXPECT_EQ(a.nodes[n].u_r, b.nodes[n].u_r);
-    EXPECT_EQ(a.nodes[n].u_z, b.nodes[n].u_z);
-  }
-  ASSERT_EQ(a.elements.size(), b.elements.size());
-  for (std::size_t e = 0; e < a.elements.size(); ++e) {
-    EXPECT_EQ(a.elements[e].stress, b.elements[e].stress) << "element " << a.elements[e].id;
-    EXPECT_EQ(a.elements[e].strain, b.elements[e].strain);
-    EXPECT_EQ(a.elements[e].effective, b.elements[e].effective);
-    EXPECT_EQ(a.elements[e].yielded, b.elements[e].yielded);
-    EXPECT_EQ(a.elements[e].plastic_converged, b.elements[e].plastic_converged);
-  }
-  ASSERT_EQ(a.gaps.size(), b.gaps.size());
-  for (std::size_t g = 0; g < a.gaps.size(); ++g) {
-    EXPECT_EQ(a.gaps[g].eps_m, b.gaps[g].eps_m) << "gap " << a.gaps[g].id;
-    EXPECT_EQ(a.gaps[g].modulus, b.gaps[g].modulus);
-    EXPECT_EQ(a.gaps[g].sigma_m, b.gaps[g].sigma_m);
-    EXPECT_EQ(a.gaps[g].converged, b.gaps[g].converged);
-  }
-}
 
 class ExactRestart : public ::testing::TestWithParam<const char*> {};
 
@@ -77,9 +50,12 @@ TEST_P(ExactRestart, StopAfterKResumeFromTheSavedStateGivesTheSameNumbers) {
     EXPECT_EQ(saved, reference);
 
     const RestartState from_json = io::state_from_json(io::state_to_json(first.states.back(), digest), digest);
-    expect_identical(solve(model, nullptr, &from_json), uninterrupted);
+    testing::expect_identical(solve(model, nullptr, &from_json), uninterrupted);
     const RestartState from_cbor = io::state_from_cbor(io::state_to_cbor(first.states.back(), digest), digest);
-    expect_identical(solve(model, nullptr, &from_cbor), uninterrupted);
+    testing::expect_identical(solve(model, nullptr, &from_cbor), uninterrupted);
+    const RestartState from_store =
+        io::decode_stored_state(io::encode_stored_state(first.states.back(), digest), digest);
+    testing::expect_identical(solve(model, nullptr, &from_store), uninterrupted);
   }
 }
 
@@ -98,7 +74,7 @@ TEST(Restart, ANotConvergedRunResumesWithMoreIterations) {
   EXPECT_NE(partial.message.find("max_iterations 6"), std::string::npos) << partial.message;
   ResumeOptions more;
   more.max_iterations = model.solver.max_iterations;
-  expect_identical(solve(model, nullptr, &saved.states.back(), more), uninterrupted);
+  testing::expect_identical(solve(model, nullptr, &saved.states.back(), more), uninterrupted);
 }
 
 TEST(Restart, ANewScheduleStartsAfreshFromItsFirstValue) {
@@ -125,6 +101,43 @@ TEST(Restart, AStateOfAnotherModelIsRefused) {
   // Past the digest, the solver itself refuses a state whose numbers do not fit the model.
   const RestartState loaded = io::state_from_json(state, "");
   EXPECT_THROW(solve(testing::example_model("report-problem1.json"), nullptr, &loaded), SolverError);
+}
+
+TEST(StoredState, RoundTripsExactlyAndIsSmallerThanTheCbor) {
+  const nlohmann::json document = testing::example_document("ring-shrink-fit-plane-strain.json");
+  const std::string digest = io::model_digest(document);
+  Recorder saved(3);
+  solve(testing::example_model("ring-shrink-fit-plane-strain.json"), &saved);
+  const RestartState& state = saved.states.back();
+  const std::vector<std::uint8_t> stored = io::encode_stored_state(state, digest);
+  EXPECT_LT(stored.size(), io::state_to_cbor(state, digest).size());
+  // Every field, the history's wall times included, to the last bit.
+  EXPECT_EQ(io::state_to_json(io::decode_stored_state(stored, digest), digest), io::state_to_json(state, digest));
+}
+
+TEST(StoredState, OldUncompressedStatesStillLoad) {
+  const nlohmann::json document = testing::example_document("report-problem3-case1.json");
+  const std::string digest = io::model_digest(document);
+  Recorder saved(2);
+  solve(testing::example_model("report-problem3-case1.json"), &saved);
+  // Version 1 of the stored encoding was the plain CBOR of state_to_cbor.
+  const RestartState loaded = io::decode_stored_state(io::state_to_cbor(saved.states.back(), digest), digest);
+  EXPECT_EQ(io::state_to_json(loaded, digest), io::state_to_json(saved.states.back(), digest));
+}
+
+TEST(StoredState, DamagedOrForeignStatesAreRefusedNotCrashed) {
+  const nlohmann::json document = testing::example_document("report-problem3-case1.json");
+  const std::string digest = io::model_digest(document);
+  Recorder saved(2);
+  solve(testing::example_model("report-problem3-case1.json"), &saved);
+  const std::vector<std::uint8_t> stored = io::encode_stored_state(saved.states.back(), digest);
+  std::vector<std::uint8_t> truncated(stored.begin(), stored.begin() + static_cast<long>(stored.size() / 2));
+  EXPECT_THROW(io::decode_stored_state(truncated, digest), SolverError);
+  std::vector<std::uint8_t> flipped = stored;
+  for (std::size_t i = 8; i < flipped.size(); i += 7) flipped[i] ^= 0x5a;
+  EXPECT_THROW(io::decode_stored_state(flipped, digest), SolverError);
+  EXPECT_THROW(io::decode_stored_state(std::vector<std::uint8_t>{'S', 'G', 'Z', '1'}, digest), SolverError);
+  EXPECT_THROW(io::decode_stored_state(stored, "0123456789abcdef"), SolverError);
 }
 
 }  // namespace

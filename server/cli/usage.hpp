@@ -1,0 +1,46 @@
+#pragma once
+/// The conventions every saasgaps subcommand shares, in one place: the exit codes, how a command line
+/// that cannot be parsed is reported (the mistake, the nearest known command or option, and the help
+/// of the command concerned), and how exceptions become exit codes. A new subcommand registered on
+/// the CLI::App gets all of it without code of its own. docs/cli.md documents the codes.
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace saasgaps::cli {
+
+/// Exit codes. 0-3 are the contract of `solve` (service.md); 64 is EX_USAGE of BSD's sysexits.h,
+/// kept apart from 2 so that a script can tell "this model is bad" from "this command line is".
+namespace exit_code {
+inline constexpr int ok = 0;             ///< converged, valid, written
+inline constexpr int failure = 1;        ///< any other failure: a file that cannot be read or written, ...
+inline constexpr int bad_model = 2;      ///< the model document is invalid or not restrained
+inline constexpr int not_converged = 3;  ///< the run stopped before converging; it can be resumed
+inline constexpr int usage = 64;         ///< the command line itself is wrong
+}  // namespace exit_code
+
+/// Parses the command line into `app`. Returns an exit code when the program should end here:
+/// 0 after --help or --version (printed to stdout), exit_code::usage after a usage error (printed
+/// to stderr with the help of the command concerned). Returns nothing when a command should run.
+std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const* argv);
+
+/// The known word nearest to `word` (edit distance, at most a third of its length, or a prefix),
+/// or nothing. "solv" -> "solve", "--max-iteration" -> "--max-iterations".
+std::optional<std::string> nearest(const std::string& word, const std::vector<std::string>& known);
+
+/// Runs a command and turns what it throws into an exit code, with the message on stderr:
+/// ModelError and SingularModelError 2 (every issue with its JSON Pointer, under "invalid
+/// `document`: N errors"), anything else 1.
+int run_command(const std::function<int()>& command, const std::string& document = "model");
+
+/// A validator for numbers > 0 whose message names the value ("must be a number > 0, got abc").
+CLI::Validator positive_number();
+
+/// A validator for integers in [low, high] whose message names the value.
+CLI::Validator integer_range(long long low, long long high);
+
+}  // namespace saasgaps::cli

@@ -1,0 +1,28 @@
+#pragma once
+/// The restart state as the service stores it in its database (and as workers may send it): one
+/// pair of functions, so every path that stores or loads a state shares the encoding.
+///
+/// Encoding (version 2): the 4 bytes "SGZ1", then zlib (level 1) of the CBOR of state_to_json, in
+/// which the displacement array, most of the state, is a CBOR byte string of the doubles with their
+/// bytes shuffled (all first bytes, then all second bytes, ...): sign and exponent bytes of
+/// neighbouring values are alike, so zlib finds them, while the low mantissa bytes are noise
+/// whatever is done. Measured on a 149,000-unknown annulus: 0.69 of the plain CBOR, in 70 ms less
+/// than JSON-to-CBOR alone. Doubles round-trip exactly, so a resume is still exact.
+///
+/// Version 1, still read: plain CBOR of state_to_json (a CBOR map, first byte 0xa0-0xbf, never "S").
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "restart_state.hpp"
+
+namespace saasgaps::io {
+
+std::vector<std::uint8_t> encode_stored_state(const RestartState& state, const std::string& digest);
+
+/// Either encoding. Throws SolverError for a damaged or foreign state (see state_from_json).
+RestartState decode_stored_state(std::span<const std::uint8_t> bytes, const std::string& expected_digest);
+
+}  // namespace saasgaps::io

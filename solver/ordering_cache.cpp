@@ -1,0 +1,139 @@
+#include "ordering_cache.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+namespace saasgaps {
+
+namespace {
+
+/// File layout, little-endian as the machine writes it (the key names the build anyway):
+///   magic[16] | format u64 | key high u64 | key low u64 | n u64 | order: n x int64 | checksum u64
+constexpr char magic[16] = "SAASGAPS-ORDER\n";
+constexpr std::uint64_t format_version = 1;
+
+/// A 64-bit mixing hash over 64-bit words (the finalizer of splitmix64 on an FNV-style chain):
+/// fast on the large arrays and sensitive to every bit.
+struct WordHash {
+  std::uint64_t state;
+  explicit WordHash(std::uint64_t seed) : state(seed) {}
+  void add(std::uint64_t word) {
+    std::uint64_t z = (state ^ word) + 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    state = z ^ (z >> 31);
+  }
+  template <class T>
+  void add_all(std::span<const T> values) {
+    add(values.size());
+    for (T v : values) add(static_cast<std::uint64_t>(v));
+  }
+};
+
+std::uint64_t checksum(std::span<const Index> order) {
+  WordHash h(0x5aa5'6a95'0123'4567ULL);
+  h.add_all(order);
+  return h.state;
+}
+
+}  // namespace
+
+std::string PatternKey::hex() const {
+  char text[33];
+  std::snprintf(text, sizeof text, "%016llx%016llx", static_cast<unsigned long long>(high),
+                static_cast<unsigned long long>(low));
+  return text;
+}
+
+PatternKey pattern_key(const CscPattern& pattern, std::span<const Index> groups, std::string_view method) {
+  // Two independent chains: a 128-bit key, so a collision is not a practical concern (and would
+  // cost speed only: any permutation factors correctly).
+  WordHash a(0x243f'6a88'85a3'08d3ULL), b(0x1319'8a2e'0370'7344ULL);
+  for (WordHash* h : {&a, &b}) {
+    h->add(static_cast<std::uint64_t>(pattern.n));
+    h->add_all(std::span<const Index>(pattern.colptr));
+    h->add_all(std::span<const Index>(pattern.rowind));
+    h->add_all(groups);
+    for (char c : method) h->add(static_cast<unsigned char>(c));
+  }
+  return {a.state, b.state};
+}
+
+bool is_permutation_of(std::span<const Index> order, Index n) {
+  if (static_cast<Index>(order.size()) != n) return false;
+  std::vector<bool> seen(static_cast<std::size_t>(n), false);
+  for (Index k : order) {
+    if (k < 0 || k >= n || seen[k]) return false;
+    seen[k] = true;
+  }
+  return true;
+}
+
+OrderingCache::OrderingCache(std::filesystem::path directory) : directory_(std::move(directory)) {}
+
+std::filesystem::path OrderingCache::file(const PatternKey& key) const { return directory_ / (key.hex() + ".order"); }
+
+std::optional<std::vector<Index>> OrderingCache::load(const PatternKey& key, Index n) const {
+  std::ifstream in(file(key), std::ios::binary);
+  if (!in) return std::nullopt;
+  char head[16];
+  std::uint64_t fields[4];  // format, key high, key low, n
+  if (!in.read(head, sizeof head) || std::memcmp(head, magic, sizeof magic) != 0) return std::nullopt;
+  if (!in.read(reinterpret_cast<char*>(fields), sizeof fields)) return std::nullopt;
+  if (fields[0] != format_version || fields[1] != key.high || fields[2] != key.low ||
+      fields[3] != static_cast<std::uint64_t>(n)) {
+    return std::nullopt;
+  }
+  // Read straight into the result: one touch of the buffer, no zero fill first.
+  std::vector<Index> order;
+  order.reserve(static_cast<std::size_t>(n));
+  constexpr std::size_t chunk = 1 << 13;
+  Index buffer[chunk];
+  for (std::size_t left = static_cast<std::size_t>(n); left > 0;) {
+    const std::size_t take = std::min(left, chunk);
+    if (!in.read(reinterpret_cast<char*>(buffer), static_cast<std::streamsize>(take * sizeof(Index)))) {
+      return std::nullopt;
+    }
+    order.insert(order.end(), buffer, buffer + take);
+    left -= take;
+  }
+  std::uint64_t sum = 0;
+  if (!in.read(reinterpret_cast<char*>(&sum), sizeof sum) || in.peek() != std::char_traits<char>::eof()) {
+    return std::nullopt;
+  }
+  if (sum != checksum(order) || !is_permutation_of(order, n)) return std::nullopt;
+  return order;
+}
+
+void OrderingCache::store(const PatternKey& key, std::span<const Index> order) const {
+  std::error_code error;
+  std::filesystem::create_directories(directory_, error);
+  if (error) return;
+  const std::filesystem::path target = file(key);
+  std::filesystem::path temporary = target;
+  // Unique per process and call: two workers may store the same mesh's ordering at once.
+  static std::atomic<unsigned> calls{0};
+  temporary += ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(calls++);
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    const std::uint64_t fields[4] = {format_version, key.high, key.low, order.size()};
+    const std::uint64_t sum = checksum(order);
+    out.write(magic, sizeof magic);
+    out.write(reinterpret_cast<const char*>(fields), sizeof fields);
+    out.write(reinterpret_cast<const char*>(order.data()), static_cast<std::streamsize>(order.size_bytes()));
+    out.write(reinterpret_cast<const char*>(&sum), sizeof sum);
+    out.close();
+    if (!out) {
+      std::filesystem::remove(temporary, error);
+      return;
+    }
+  }
+  std::filesystem::rename(temporary, target, error);
+  if (error) std::filesystem::remove(temporary, error);
+}
+
+}  // namespace saasgaps

@@ -1,0 +1,131 @@
+// Mistakes a user makes on the command line, one test each: the exit code docs/cli.md documents and
+// a message that names the mistake (and, for a usage error, the help of the command concerned).
+#include "command_fixture.hpp"
+
+namespace {
+
+using saasgaps::testing::Outcome;
+
+class UsageErrors : public saasgaps::testing::CommandTest {
+ protected:
+  static constexpr int usage = 64;
+
+  /// A small solved result, for the commands that read one.
+  std::string solved_result() const {
+    const std::string result = path("result.json");
+    EXPECT_EQ(saasgaps("solve " + example("report-problem1.json") + " -q -o " + result).exit_code, 0);
+    return result;
+  }
+};
+
+#define EXPECT_CONTAINS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
+
+TEST_F(UsageErrors, MistypedCommandIsNamedWithTheNearestOne) {
+  const Outcome r = saasgaps("solv " + example("report-problem1.json"));
+  EXPECT_EQ(r.exit_code, usage);
+  EXPECT_CONTAINS(r.err, "unknown command 'solv'; did you mean 'solve'?");
+  EXPECT_CONTAINS(r.err, "Usage: saasgaps [OPTIONS] SUBCOMMAND");  // the program's help lists the commands
+  EXPECT_CONTAINS(r.err, "export-vtu");
+}
+
+TEST_F(UsageErrors, NoCommandListsTheCommands) {
+  const Outcome r = saasgaps("");
+  EXPECT_EQ(r.exit_code, usage);
+  EXPECT_CONTAINS(r.err, "a command is required (solve, validate, ");
+  EXPECT_CONTAINS(r.err, "serve, worker, plot, export-vtu");
+}
+
+TEST_F(UsageErrors, MistypedOptionIsNamedWithTheNearestOneAndTheCommandsHelp) {
+  const Outcome r = saasgaps("solve --max-iteration 5 " + example("report-problem1.json"));
+  EXPECT_EQ(r.exit_code, usage);
+  EXPECT_CONTAINS(r.err, "saasgaps solve: unknown option '--max-iteration'; did you mean '--max-iterations'?");
+  EXPECT_CONTAINS(r.err, "Usage: saasgaps solve [OPTIONS] model");
+  EXPECT_CONTAINS(r.err, "--state-out");
+}
+
+TEST_F(UsageErrors, MissingArgumentIsAUsageError) {
+  const Outcome r = saasgaps("plot " + example("report-problem1.json"));
+  EXPECT_EQ(r.exit_code, usage);
+  EXPECT_CONTAINS(r.err, "saasgaps plot: --output is required");
+  EXPECT_CONTAINS(r.err, "Usage: saasgaps plot [OPTIONS] result");
+}
+
+TEST_F(UsageErrors, BadOptionValueNamesTheValue) {
+  const Outcome r = saasgaps("solve " + example("report-problem1.json") + " --max-iterations many");
+  EXPECT_EQ(r.exit_code, usage);
+  EXPECT_CONTAINS(r.err, "--max-iterations: must be an integer from 1 to 100000, got \"many\"");
+  const Outcome schedule = saasgaps("solve " + example("report-problem1.json") + " --schedule 2,-1");
+  EXPECT_EQ(schedule.exit_code, usage);
+  EXPECT_CONTAINS(schedule.err, "--schedule: must be a number > 0, got \"-1\"");
+}
+
+TEST_F(UsageErrors, VersionAndHelpExitZero) {
+  const Outcome version = saasgaps("--version");
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_EQ(version.out.rfind("saasgaps ", 0), 0U) << version.out;
+  const Outcome help = saasgaps("solve --help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_CONTAINS(help.out, "--resume");
+}
+
+TEST_F(UsageErrors, MissingOutputDirectoryFailsBeforeTheSolve) {
+  // Problem 3 case 3 takes 13 iterations; the check must come before the first one.
+  const Outcome r = saasgaps("solve " + example("report-problem3-case3.json") + " -o " + path("missing/result.json"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_CONTAINS(r.err, "-o " + path("missing/result.json") + ": the directory " + path("missing") + " does not exist");
+  EXPECT_EQ(r.err.find("iter"), std::string::npos) << "the solve started:\n" << r.err;
+  const Outcome state = saasgaps("solve " + example("report-problem1.json") + " --state-out " + path("missing/s.json"));
+  EXPECT_EQ(state.exit_code, 1);
+  EXPECT_CONTAINS(state.err, "--state-out " + path("missing/s.json") + ": the directory");
+}
+
+TEST_F(UsageErrors, UnwritableOutputDirectoryFailsBeforeTheSolve) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root writes into read-only directories";
+  std::filesystem::create_directories(path("locked"));
+  std::filesystem::permissions(path("locked"), std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+  const Outcome r = saasgaps("solve " + example("report-problem1.json") + " -o " + path("locked/result.json"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_CONTAINS(r.err, "is not writable");
+}
+
+TEST_F(UsageErrors, DirectoryAsOutputIsNamed) {
+  const Outcome r = saasgaps("solve " + example("report-problem1.json") + " -o " + dir_.string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_CONTAINS(r.err, "-o " + dir_.string() + ": is a directory; give a file name");
+}
+
+TEST_F(UsageErrors, DirectoryAsModelIsNamed) {
+  const Outcome r = saasgaps("solve " + dir_.string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_CONTAINS(r.err, "cannot read " + dir_.string() + ": it is a directory, not a file");
+  EXPECT_EQ(r.err.find("JSON"), std::string::npos) << r.err;
+}
+
+TEST_F(UsageErrors, ModelHandedToPlotOrExportSaysRunSolveFirst) {
+  for (const std::string command : {"plot", "export-vtu"}) {
+    const Outcome r = saasgaps(command + " " + example("report-problem1.json") + " -o " + path("out.png"));
+    EXPECT_EQ(r.exit_code, 1) << command;
+    EXPECT_CONTAINS(r.err, example("report-problem1.json") + " is a model, not a result; run solve first");
+    EXPECT_EQ(r.err.find("json.exception"), std::string::npos) << r.err;
+  }
+}
+
+TEST_F(UsageErrors, ResultHandedToSolveOrValidateSaysSo) {
+  const std::string result = solved_result();
+  for (const std::string command : {"solve", "validate"}) {
+    const Outcome r = saasgaps(command + " " + result);
+    EXPECT_EQ(r.exit_code, 2) << command;
+    EXPECT_CONTAINS(r.err, "invalid model: 1 error\n(document): this is a result document");
+  }
+}
+
+TEST_F(UsageErrors, RestartStateHandedToSolveSaysSo) {
+  ASSERT_EQ(saasgaps("solve " + example("report-problem1.json") + " -q --state-out " + path("state.json") + " -o " +
+                     path("result.json")).exit_code, 0);
+  const Outcome r = saasgaps("solve " + path("state.json"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_CONTAINS(r.err, "this is a restart state");
+  EXPECT_CONTAINS(r.err, "--resume");
+}
+
+}  // namespace
