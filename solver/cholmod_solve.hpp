@@ -1,9 +1,10 @@
 #pragma once
 /// x = A^-1 b with a CHOLMOD factor of A, through cholmod_l_solve2 and workspaces kept between
-/// calls (shared by SparseCholesky and UpdatableFactor).
+/// calls (shared by SparseCholesky and UpdatableFactor), and a CHOLMOD view of our CSC arrays.
 
 #include <cholmod.h>
 
+#include <cstddef>
 #include <span>
 
 namespace saasgaps {
@@ -19,5 +20,26 @@ struct CholmodSolveWorkspace {
 /// Solves with factor L into x; throws std::runtime_error when CHOLMOD fails.
 void cholmod_solve_into(cholmod_factor* L, std::span<const double> b, std::span<double> x,
                         CholmodSolveWorkspace& work, cholmod_common& common);
+
+/// A cholmod_sparse that views (does not copy) sorted, packed CSC arrays with 64-bit indices:
+/// colptr[ncol + 1], rowind[nnz] and, unless xtype is CHOLMOD_PATTERN, values[nnz]. stype 1: the
+/// upper triangle of a symmetric matrix; 0: unsymmetric.
+inline cholmod_sparse cholmod_csc_view(std::size_t nrow, std::size_t ncol, std::size_t nnz, void* colptr, void* rowind,
+                                       void* values, int stype, int xtype) {
+  cholmod_sparse A{};
+  A.nrow = nrow;
+  A.ncol = ncol;
+  A.nzmax = nnz;
+  A.p = colptr;
+  A.i = rowind;
+  A.x = values;
+  A.stype = stype;
+  A.itype = CHOLMOD_LONG;
+  A.xtype = xtype;
+  A.dtype = CHOLMOD_DOUBLE;
+  A.sorted = 1;
+  A.packed = 1;
+  return A;
+}
 
 }  // namespace saasgaps

@@ -131,17 +131,9 @@ struct SparseCholesky::Impl {
   std::vector<Index> group_order(std::span<const Index> groups) {
     const IndexGroups members = IndexGroups::of(groups);
     CscPattern graph = group_pattern(pattern, groups, members);
-    cholmod_sparse G{};
-    G.nrow = G.ncol = static_cast<size_t>(graph.n);
-    G.nzmax = graph.rowind.size();
-    G.p = graph.colptr.data();
-    G.i = graph.rowind.data();
-    G.stype = 1;
-    G.itype = CHOLMOD_LONG;
-    G.xtype = CHOLMOD_PATTERN;
-    G.dtype = CHOLMOD_DOUBLE;
-    G.sorted = 1;
-    G.packed = 1;
+    const auto n = static_cast<std::size_t>(graph.n);
+    cholmod_sparse G = cholmod_csc_view(n, n, graph.rowind.size(), graph.colptr.data(), graph.rowind.data(), nullptr,
+                                        1, CHOLMOD_PATTERN);
     std::vector<Index> group_perm(static_cast<size_t>(graph.n));
     if (!cholmod_l_metis(&G, nullptr, 0, 0, group_perm.data(), &common)) return {};
     return expand(group_perm, members);

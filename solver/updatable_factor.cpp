@@ -69,19 +69,8 @@ void UpdatableFactor::update(std::span<const UpdateColumn> columns, bool add) {
     }
     m.colptr.push_back(static_cast<Index>(m.rowind.size()));
   }
-  cholmod_sparse W{};
-  W.nrow = m.L->n;
-  W.ncol = columns.size();
-  W.nzmax = m.rowind.size();
-  W.p = m.colptr.data();
-  W.i = m.rowind.data();
-  W.x = m.values.data();
-  W.stype = 0;
-  W.itype = CHOLMOD_LONG;
-  W.xtype = CHOLMOD_REAL;
-  W.dtype = CHOLMOD_DOUBLE;
-  W.sorted = 1;
-  W.packed = 1;
+  cholmod_sparse W = cholmod_csc_view(m.L->n, columns.size(), m.rowind.size(), m.colptr.data(), m.rowind.data(),
+                                      m.values.data(), 0, CHOLMOD_REAL);
   if (!cholmod_l_updown(add, &W, m.L, &m.common)) m.fail("updown");
   if (m.common.status == CHOLMOD_NOT_POSDEF) {
     throw NotPositiveDefinite("a downdate lost positive definiteness", {});

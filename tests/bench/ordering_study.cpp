@@ -27,6 +27,7 @@
 
 #include "dof_map.hpp"
 #include "io/model_reader.hpp"
+#include "cholmod_solve.hpp"
 #include "stiffness_system.hpp"
 
 using namespace saasgaps;
@@ -34,18 +35,8 @@ using namespace saasgaps;
 namespace {
 
 cholmod_sparse view(CscPattern& p) {
-  cholmod_sparse A{};
-  A.nrow = A.ncol = static_cast<size_t>(p.n);
-  A.nzmax = p.rowind.size();
-  A.p = p.colptr.data();
-  A.i = p.rowind.data();
-  A.stype = 1;
-  A.itype = CHOLMOD_LONG;
-  A.xtype = CHOLMOD_PATTERN;
-  A.dtype = CHOLMOD_DOUBLE;
-  A.sorted = 1;
-  A.packed = 1;
-  return A;
+  const auto n = static_cast<std::size_t>(p.n);
+  return cholmod_csc_view(n, n, p.rowind.size(), p.colptr.data(), p.rowind.data(), nullptr, 1, CHOLMOD_PATTERN);
 }
 
 /// Both triangles of a symmetric pattern without diagonal, as adjacency lists (CSR).
