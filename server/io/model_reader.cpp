@@ -22,6 +22,8 @@ Model parse_model(std::string_view text, std::string* digest) {
     SectionReader reader;
     stream_model(text, reader, digest);
     return reader.finish();
+  } catch (const NotJsonText&) {
+    throw;  // no document to name
   } catch (const ModelError& e) {
     rethrow_naming_document(e);
   }

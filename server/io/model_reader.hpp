@@ -33,9 +33,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "errors.hpp"
 #include "model.hpp"
 
 namespace saasgaps::io {
+
+/// Text that is not JSON at all (a syntax error): a ModelError with one issue at pointer "", told
+/// apart from a JSON document that is not a valid model (the service answers 400 rather than 422).
+class NotJsonText : public ModelError {
+ public:
+  using ModelError::ModelError;
+};
 
 /// Checks `document` against every rule and returns the Model. Throws ModelError with all issues.
 Model read_model(const nlohmann::json& document);
@@ -45,7 +53,7 @@ Model read_model(const nlohmann::json& document);
 nlohmann::json parse_document(std::string_view text);
 
 /// Reads JSON text straight into a Model, with the checks of read_model. Text that is not JSON gives
-/// one issue at pointer "" with the parser's message and byte position; a number too large for a
+/// NotJsonText, one issue at pointer "" with the parser's message and byte position; a number too large for a
 /// double is reported at its own pointer; repeated keys are reported (at the repeated key's
 /// pointer) before the issues of read_model. With `digest`, also sets it to the model_digest
 /// (io/state_codec.hpp) of the document, for restart states.

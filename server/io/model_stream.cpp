@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "io/json_pointer.hpp"
+#include "io/model_reader.hpp"
 #include "io/state_codec.hpp"
 #include "io/value_quote.hpp"
 
@@ -157,6 +158,7 @@ class ModelStream final : public json::json_sax_t {
   bool parse_error(std::size_t byte, const std::string&, const nlohmann::detail::exception& e) override {
     // A number beyond the range of a double (out_of_range.406, e.g. 1e400) stops the parser inside
     // the value the handler is at; anything else is text that is not JSON.
+    not_json_ = e.id != 406;
     if (e.id == 406) {
       error_ = InputIssue{pointer(), without_exception_tag(e.what()) +
                                          "; numbers must be finite and within the range of a double"};
@@ -169,6 +171,13 @@ class ModelStream final : public json::json_sax_t {
 
   // ---- results
   [[nodiscard]] const std::optional<InputIssue>& error() const { return error_; }
+  /// The error is a syntax error: the text is not JSON.
+  [[nodiscard]] bool not_json() const { return not_json_; }
+  /// Throws the parse error: NotJsonText for a syntax error, ModelError for a number out of range.
+  [[noreturn]] void throw_error() const {
+    if (not_json_) throw NotJsonText({*error_});
+    throw ModelError({*error_});
+  }
   std::vector<InputIssue>& repeated_keys() { return repeated_; }
   json take_tree() { return std::move(tree_); }
 
@@ -399,6 +408,7 @@ class ModelStream final : public json::json_sax_t {
   TreeBuilder builder_;
   json tree_;
   std::optional<InputIssue> error_;
+  bool not_json_ = false;
   std::vector<InputIssue> repeated_;
 
   bool root_is_object_ = false;
@@ -419,13 +429,13 @@ class ModelStream final : public json::json_sax_t {
 
 void stream_model(std::string_view text, SectionReader& reader, std::string* digest) {
   ModelStream stream(ModelStream::Mode::model, &reader, digest != nullptr);
-  if (!stream.run(text)) throw ModelError({*stream.error()});
+  if (!stream.run(text)) stream.throw_error();
   stream.finish(text, digest);
 }
 
 json parse_tree(std::string_view text) {
   ModelStream stream(ModelStream::Mode::tree, nullptr, false);
-  if (!stream.run(text)) throw ModelError({*stream.error()});
+  if (!stream.run(text)) stream.throw_error();
   if (!stream.repeated_keys().empty()) throw ModelError(std::move(stream.repeated_keys()));
   return stream.take_tree();
 }

@@ -2,6 +2,7 @@
 
 #include "errors.hpp"
 #include "io/json_text.hpp"
+#include "io/model_reader.hpp"
 #include "service/job_store.hpp"
 #include "service/log.hpp"
 #include "service/metrics.hpp"
@@ -40,6 +41,11 @@ void respond_to_exception(const httplib::Request& req, httplib::Response& res, s
     std::rethrow_exception(error);
   } catch (const HttpError& e) {
     write_problem(res, e.status(), e.title(), e.what(), e.errors());
+  } catch (const io::NotJsonText& e) {
+    // The issue reads "the document is not valid JSON: <the parser's message> (byte N)".
+    std::string detail = e.issues().front().detail;
+    if (const auto colon = detail.find(": "); colon != std::string::npos) detail.erase(0, colon + 2);
+    write_problem(res, 400, "Bad Request", "the request body is not JSON: " + detail, nullptr);
   } catch (const ModelError& e) {
     json errors = json::array();
     for (const InputIssue& issue : e.issues()) errors.push_back({{"pointer", issue.pointer}, {"detail", issue.detail}});
