@@ -180,7 +180,10 @@ int run_serve(const ServeOptions& options) {
   // Workers send the Host of --slurm-worker-url: the Host check (without a token) must accept it.
   std::vector<std::string> allowed_hosts = options.allowed_hosts;
   if (slurm && !options.slurm_worker_url.empty()) allowed_hosts.push_back(url_authority(options.slurm_worker_url));
-  service::HttpApi api(store, hub, {token, options.max_streams, options.workers, options.host, allowed_hosts});
+  // Models submitted to the local pool go to their worker already read (up to one per worker).
+  service::ModelHandoff handoff(static_cast<std::size_t>(options.workers));
+  service::HttpApi api(store, hub, {token, options.max_streams, options.workers, options.host, allowed_hosts,
+                                    slurm ? nullptr : &handoff});
   api.install(server);
 
   const int port = options.port == 0 ? server.bind_to_any_port(options.host)
@@ -196,7 +199,7 @@ int run_serve(const ServeOptions& options) {
     slurm_executor.emplace(store, hub, slurm_options(options, port));
   } else {
     // Orderings live beside the database: resumes and jobs on a mesh solved before skip METIS.
-    runner.emplace(store, hub, options.workers, options.database + ".orderings");
+    runner.emplace(store, hub, options.workers, options.database + ".orderings", &handoff);
   }
   std::thread signal_waiter([&server, read_end = shutdown_pipe[0]] {
     char byte = 0;

@@ -482,13 +482,14 @@ void HttpApi::install(httplib::Server& server) {
 }
 
 void HttpApi::submit(const httplib::Request& req, httplib::Response& res) {
-  if (!json::accept(req.body)) throw HttpError(400, "Bad Request", "the request body is not JSON");
-  // The reader repeats every check of `saasgaps validate`; a bad model never reaches the queue.
-  enqueue(req.body, io::parse_model(req.body), req, res);
+  // The reader repeats every check of `saasgaps validate`; a bad model never reaches the queue, and
+  // a body that is not JSON at all is a 400 (io::NotJsonText) from the same single pass.
+  std::shared_ptr<const ParsedModel> parsed = parse_run_model(req.body);
+  enqueue(req.body, parsed->model, req, res, parsed);
 }
 
 void HttpApi::enqueue(const std::string& body, const Model& model, const httplib::Request& req,
-                      httplib::Response& res) {
+                      httplib::Response& res, std::shared_ptr<const ParsedModel> parsed) {
   io::require_restrained(model);
   std::optional<std::string> key;
   if (req.has_header("Idempotency-Key")) key = req.get_header_value("Idempotency-Key");
@@ -496,6 +497,8 @@ void HttpApi::enqueue(const std::string& body, const Model& model, const httplib
       store_.submit(body, model.title, model.solver.max_iterations, key, body_digest(body));
   if (submitted.replayed) res.set_header("Idempotent-Replayed", "true");
   if (!submitted.replayed) {
+    // Before the workers are woken: the job's worker takes the model rather than read it again.
+    if (options_.handoff != nullptr && parsed != nullptr) options_.handoff->put(submitted.job.id, std::move(parsed));
     log_info("job_queued", {{"job", submitted.job.id}, {"request_id", res.get_header_value("X-Request-Id")},
                             {"title", model.title}, {"nodes", model.nodes.size()}});
   }

@@ -13,6 +13,7 @@
 #include "model.hpp"
 #include "service/event_hub.hpp"
 #include "service/job_store.hpp"
+#include "service/model_handoff.hpp"
 #include "service/request_guard.hpp"
 
 namespace saasgaps::service {
@@ -23,6 +24,7 @@ struct ApiOptions {
   int workers = 1;                   ///< reported by /healthz
   std::string listen_host = "127.0.0.1";   ///< a Host name always accepted
   std::vector<std::string> allowed_hosts;  ///< more Host names accepted without a token
+  ModelHandoff* handoff = nullptr;  ///< where submitted models wait for the worker pool (local executor)
 };
 
 class HttpApi {
@@ -34,7 +36,9 @@ class HttpApi {
  private:
   void submit(const httplib::Request& req, httplib::Response& res);
   /// Queues a validated model document (its text and its model) as a new job: 202 with Location.
-  void enqueue(const std::string& body, const Model& model, const httplib::Request& req, httplib::Response& res);
+  /// `parsed` (optional): the model read with its digest, handed to the worker that runs the job.
+  void enqueue(const std::string& body, const Model& model, const httplib::Request& req, httplib::Response& res,
+               std::shared_ptr<const ParsedModel> parsed = nullptr);
   /// POST /v1/imports: the model document of an uploaded assembly; with ?submit=true, queued as a job.
   void import_assembly(const httplib::Request& req, httplib::Response& res);
   void list(const httplib::Request& req, httplib::Response& res);

@@ -5,6 +5,7 @@
 #include "io/model_reader.hpp"
 #include "io/result_writer.hpp"
 #include "io/stored_state.hpp"
+#include "service/commit_pipeline.hpp"
 #include "service/log.hpp"
 #include "service/metrics.hpp"
 
@@ -12,22 +13,34 @@ namespace saasgaps::service {
 
 namespace {
 
-/// Hands every iteration to the sink and tells the solver when to stop.
+/// Hands every iteration to the sink, committed on the pipeline's thread while the solver goes on,
+/// and tells the solver when to stop.
 class SinkObserver final : public IterationObserver {
  public:
-  SinkObserver(RunSink& sink, std::string digest, const std::atomic<bool>& shutting_down)
-      : sink_(sink), digest_(std::move(digest)), shutting_down_(shutting_down) {}
+  SinkObserver(RunSink& sink, const std::string& digest, const std::atomic<bool>& shutting_down,
+               CommitPipeline& pipeline)
+      : sink_(sink), digest_(digest), shutting_down_(shutting_down), pipeline_(pipeline) {}
 
   void on_iteration(const IterationRecord& row, const RestartState& state) override {
-    sink_.iteration(row.iteration, io::history_row_text(row), io::encode_stored_state(state, digest_));
+    // The previous commit must end before its row and state buffers are reused.
+    pipeline_.wait();
+    row_ = io::history_row_text(row);
+    state_ = state;  // the solver changes `state` next; the copy reuses the buffers of the last one
+    pipeline_.post([this, iteration = row.iteration] {
+      sink_.iteration(iteration, row_, io::encode_stored_state(state_, digest_));
+    });
   }
 
-  bool stop_requested() override { return shutting_down_ || sink_.stop_requested(); }
+  /// A failed commit stops the run at once: execute_run then rethrows the failure.
+  bool stop_requested() override { return shutting_down_ || pipeline_.failed() || sink_.stop_requested(); }
 
  private:
   RunSink& sink_;
-  std::string digest_;
+  const std::string& digest_;
   const std::atomic<bool>& shutting_down_;
+  CommitPipeline& pipeline_;
+  std::string row_;
+  RestartState state_;
 };
 
 ResumeOptions resume_options(const RunSettings& settings) {
@@ -84,16 +97,27 @@ void note_finished(JobStore& store, std::int64_t job, JobState state, const std:
   }
 }
 
+std::shared_ptr<const ParsedModel> parse_run_model(const std::string& text) {
+  auto parsed = std::make_shared<ParsedModel>();
+  parsed->model = io::parse_model(text, &parsed->digest);
+  return parsed;
+}
+
 void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& shutting_down,
                  const OrderingCache* ordering_cache) {
+  CommitPipeline pipeline;
   try {
-    std::string digest;
-    const Model model = io::parse_model(input.model, &digest);
+    // The service hands over the model its POST read already; otherwise (a resume, a restart, a
+    // remote worker) the document is read here.
+    const std::shared_ptr<const ParsedModel> parsed = input.parsed ? input.parsed : parse_run_model(input.model);
+    const Model& model = parsed->model;
     std::optional<RestartState> state;
-    if (input.state) state = io::decode_stored_state(*input.state, digest);
+    if (input.state) state = io::decode_stored_state(*input.state, parsed->digest);
 
-    SinkObserver observer(sink, digest, shutting_down);
+    SinkObserver observer(sink, parsed->digest, shutting_down, pipeline);
     const Solution solution = solve(model, &observer, state ? &*state : nullptr, resume_options(input.settings), ordering_cache);
+    // Every iteration is committed before the run's end is; a commit that failed ends the run here.
+    pipeline.wait();
 
     JobState final_state = JobState::converged;
     std::string message = solution.message;
@@ -110,6 +134,8 @@ void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& 
     throw;
   } catch (const std::exception& e) {
     try {
+      // The commit in flight ends first (its own failure, if any, was rethrown already or is this one).
+      pipeline.wait();
       sink.finish(JobState::failed, io::failed_result_text(e.what()), std::nullopt, e.what());
     } catch (const RunAbandoned&) {
       throw;

@@ -7,19 +7,31 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "model.hpp"
 #include "ordering_cache.hpp"
 #include "service/job_store.hpp"
 
 namespace saasgaps::service {
 
+/// A model document read and checked, with its digest (which ties restart states to it).
+struct ParsedModel {
+  Model model;
+  std::string digest;
+};
+
+/// Reads a model document for a run (io::parse_model with its digest).
+std::shared_ptr<const ParsedModel> parse_run_model(const std::string& text);
+
 /// What a run starts from.
 struct RunInput {
   std::string model;                               ///< the submitted document
+  std::shared_ptr<const ParsedModel> parsed;       ///< `model` read already, when the service kept it
   std::optional<std::vector<std::uint8_t>> state;  ///< the latest committed restart state (CBOR)
   RunSettings settings;                            ///< resume changes in force
   std::int64_t job = 0;                            ///< the job's id, for log lines
@@ -29,9 +41,12 @@ struct RunInput {
 class RunSink {
  public:
   virtual ~RunSink() = default;
-  /// A finished iteration: committed (row and state in one transaction) when this returns.
+  /// A finished iteration: committed (row and state in one transaction) when this returns. Called
+  /// on a CommitPipeline's thread while the solver computes the next iteration, so it may run
+  /// concurrently with stop_requested (never with another iteration or finish).
   virtual void iteration(int iteration, const std::string& row, const std::vector<std::uint8_t>& state) = 0;
-  /// A cancel was asked for: stop at this iteration boundary.
+  /// A cancel was asked for: stop at this iteration boundary. (A sink that learns of a cancel only
+  /// from a commit's answer stops one iteration later: the commit overlaps the next iteration.)
   virtual bool stop_requested() = 0;
   /// The run ended with this job state, result document, message and error.
   virtual void finish(JobState state, const std::optional<std::string>& result,

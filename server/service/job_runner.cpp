@@ -64,8 +64,9 @@ void trim_when_idle() {
 
 }  // namespace
 
-JobRunner::JobRunner(JobStore& store, EventHub& hub, int workers, const std::filesystem::path& ordering_cache)
-    : store_(store), hub_(hub) {
+JobRunner::JobRunner(JobStore& store, EventHub& hub, int workers, const std::filesystem::path& ordering_cache,
+                     ModelHandoff* handoff)
+    : store_(store), hub_(hub), handoff_(handoff) {
   if (!ordering_cache.empty()) ordering_cache_.emplace(ordering_cache);
   const std::string host = "pid " + std::to_string(::getpid());
   for (int w = 0; w < workers; ++w) {
@@ -105,7 +106,11 @@ void JobRunner::work(const std::string& name) {
       seen = hub_.wait(seen, std::chrono::milliseconds(1000));
       // Idle for a second: give back what HTTP threads freed too (results sent, models parsed),
       // which the trim after a job cannot see, since they come after it.
-      if (seen == before) trim_when_idle();
+      if (seen == before) {
+        // Nothing to claim: a model still kept belongs to a job deleted or cancelled in the queue.
+        if (handoff_ != nullptr) handoff_->clear();
+        trim_when_idle();
+      }
       continue;
     }
     hub_.notify();
@@ -121,7 +126,8 @@ void JobRunner::work(const std::string& name) {
 
 void JobRunner::run(const ClaimedJob& claimed) {
   StoreSink sink(store_, hub_, claimed.job.id);
-  execute_run({claimed.model, claimed.state, claimed.job.settings, claimed.job.id}, sink, stopping_,
+  std::shared_ptr<const ParsedModel> parsed = handoff_ != nullptr ? handoff_->take(claimed.job.id) : nullptr;
+  execute_run({claimed.model, std::move(parsed), claimed.state, claimed.job.settings, claimed.job.id}, sink, stopping_,
               ordering_cache_ ? &*ordering_cache_ : nullptr);
 }
 

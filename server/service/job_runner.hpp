@@ -1,7 +1,8 @@
 #pragma once
 /// The worker pool: solves queued jobs on its own threads, never on HTTP threads. Each finished
-/// iteration is committed (history row and restart state together) before the next starts; a cancel
-/// or a shutdown stops a job at its next iteration boundary.
+/// iteration is committed (history row and restart state together) while the next one computes,
+/// and before the one after it starts; a cancel or a shutdown stops a job at its next iteration
+/// boundary.
 
 #include <atomic>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "service/event_hub.hpp"
 #include "ordering_cache.hpp"
 #include "service/job_store.hpp"
+#include "service/model_handoff.hpp"
 
 namespace saasgaps::service {
 
@@ -20,7 +22,9 @@ class JobRunner {
  public:
   /// ordering_cache (optional): a directory where the fill-reducing orderings of the meshes solved
   /// are kept, so resumes and later jobs on the same mesh skip computing them.
-  JobRunner(JobStore& store, EventHub& hub, int workers, const std::filesystem::path& ordering_cache = {});
+  /// handoff (optional): models the HTTP side read already, taken by the job's worker.
+  JobRunner(JobStore& store, EventHub& hub, int workers, const std::filesystem::path& ordering_cache = {},
+            ModelHandoff* handoff = nullptr);
   /// Stops: running jobs halt at their next iteration boundary and become interrupted, to be
   /// resumed by the next server; then the threads are joined.
   ~JobRunner();
@@ -36,6 +40,7 @@ class JobRunner {
   JobStore& store_;
   EventHub& hub_;
   std::optional<OrderingCache> ordering_cache_;
+  ModelHandoff* handoff_;
   std::atomic<bool> stopping_{false};
   std::vector<std::thread> threads_;
 };

@@ -3,6 +3,7 @@
 #include <httplib.h>
 
 #include <algorithm>
+#include <atomic>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <thread>
@@ -87,7 +88,7 @@ class HttpSink final : public RunSink {
     const json answer = json::parse(service_.send("POST", path_ + "/work/iterations",
                                                   protocol::encode_iteration(iteration, row, state)));
     stop_ = answer.value("stop", false);
-    service_.log("iteration " + std::to_string(iteration) + " committed" + (stop_ ? "; a stop was requested" : ""));
+    service_.log("iteration " + std::to_string(iteration) + " committed" + (stop_.load() ? "; a stop was requested" : ""));
   }
 
   bool stop_requested() override { return stop_; }
@@ -102,7 +103,7 @@ class HttpSink final : public RunSink {
  private:
   ServiceConnection& service_;
   std::string path_;
-  bool stop_ = false;
+  std::atomic<bool> stop_{false};  // set on the commit thread, read on the solver's
 };
 
 }  // namespace
