@@ -1,11 +1,10 @@
 #include "ordering_cache.hpp"
 
-#include <unistd.h>
-
-#include <atomic>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+
+#include "cache_file.hpp"
 
 namespace saasgaps {
 
@@ -15,24 +14,6 @@ namespace {
 ///   magic[16] | format u64 | key high u64 | key low u64 | n u64 | order: n x int64 | checksum u64
 constexpr char magic[16] = "SAASGAPS-ORDER\n";
 constexpr std::uint64_t format_version = 1;
-
-/// A 64-bit mixing hash over 64-bit words (the finalizer of splitmix64 on an FNV-style chain):
-/// fast on the large arrays and sensitive to every bit.
-struct WordHash {
-  std::uint64_t state;
-  explicit WordHash(std::uint64_t seed) : state(seed) {}
-  void add(std::uint64_t word) {
-    std::uint64_t z = (state ^ word) + 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    state = z ^ (z >> 31);
-  }
-  template <class T>
-  void add_all(std::span<const T> values) {
-    add(values.size());
-    for (T v : values) add(static_cast<std::uint64_t>(v));
-  }
-};
 
 std::uint64_t checksum(std::span<const Index> order) {
   WordHash h(0x5aa5'6a95'0123'4567ULL);
@@ -63,6 +44,16 @@ PatternKey pattern_key(const CscPattern& pattern, std::span<const Index> groups,
   return {a.state, b.state};
 }
 
+PatternKey derived_key(const PatternKey& key, std::string_view more) {
+  WordHash a(key.high), b(key.low);
+  for (WordHash* h : {&a, &b}) {
+    h->add(key.high);
+    h->add(key.low);
+    for (char c : more) h->add(static_cast<unsigned char>(c));
+  }
+  return {a.state, b.state};
+}
+
 bool is_permutation_of(std::span<const Index> order, Index n) {
   if (static_cast<Index>(order.size()) != n) return false;
   std::vector<bool> seen(static_cast<std::size_t>(n), false);
@@ -88,19 +79,8 @@ std::optional<std::vector<Index>> OrderingCache::load(const PatternKey& key, Ind
       fields[3] != static_cast<std::uint64_t>(n)) {
     return std::nullopt;
   }
-  // Read straight into the result: one touch of the buffer, no zero fill first.
-  std::vector<Index> order;
-  order.reserve(static_cast<std::size_t>(n));
-  constexpr std::size_t chunk = 1 << 13;
-  Index buffer[chunk];
-  for (std::size_t left = static_cast<std::size_t>(n); left > 0;) {
-    const std::size_t take = std::min(left, chunk);
-    if (!in.read(reinterpret_cast<char*>(buffer), static_cast<std::streamsize>(take * sizeof(Index)))) {
-      return std::nullopt;
-    }
-    order.insert(order.end(), buffer, buffer + take);
-    left -= take;
-  }
+  std::vector<Index> order(static_cast<std::size_t>(n));
+  if (!read_words(in, order.data(), order.size())) return std::nullopt;
   std::uint64_t sum = 0;
   if (!in.read(reinterpret_cast<char*>(&sum), sizeof sum) || in.peek() != std::char_traits<char>::eof()) {
     return std::nullopt;
@@ -110,30 +90,14 @@ std::optional<std::vector<Index>> OrderingCache::load(const PatternKey& key, Ind
 }
 
 void OrderingCache::store(const PatternKey& key, std::span<const Index> order) const {
-  std::error_code error;
-  std::filesystem::create_directories(directory_, error);
-  if (error) return;
-  const std::filesystem::path target = file(key);
-  std::filesystem::path temporary = target;
-  // Unique per process and call: two workers may store the same mesh's ordering at once.
-  static std::atomic<unsigned> calls{0};
-  temporary += ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(calls++);
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+  write_atomically(file(key), [&](std::ostream& out) {
     const std::uint64_t fields[4] = {format_version, key.high, key.low, order.size()};
     const std::uint64_t sum = checksum(order);
     out.write(magic, sizeof magic);
     out.write(reinterpret_cast<const char*>(fields), sizeof fields);
     out.write(reinterpret_cast<const char*>(order.data()), static_cast<std::streamsize>(order.size_bytes()));
     out.write(reinterpret_cast<const char*>(&sum), sizeof sum);
-    out.close();
-    if (!out) {
-      std::filesystem::remove(temporary, error);
-      return;
-    }
-  }
-  std::filesystem::rename(temporary, target, error);
-  if (error) std::filesystem::remove(temporary, error);
+  });
 }
 
 }  // namespace saasgaps

@@ -33,6 +33,10 @@ struct PatternKey {
 /// the method, its options and the library versions). O(nnz), about 10 ms at 10^6 unknowns.
 PatternKey pattern_key(const CscPattern& pattern, std::span<const Index> groups, std::string_view method);
 
+/// A key for something more that depends on what `key` names and on `more` (a text naming it and
+/// the settings that shape it).
+PatternKey derived_key(const PatternKey& key, std::string_view more);
+
 class OrderingCache {
  public:
   /// The directory is created on the first store.
@@ -46,6 +50,7 @@ class OrderingCache {
   void store(const PatternKey& key, std::span<const Index> order) const;
 
   [[nodiscard]] std::filesystem::path file(const PatternKey& key) const;
+  [[nodiscard]] const std::filesystem::path& directory() const { return directory_; }
 
  private:
   std::filesystem::path directory_;
