@@ -7,11 +7,14 @@
 #include <cassert>
 #include <cmath>
 #include <chrono>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <thread>
 
 #include "cholmod_memory.hpp"
 #include "cholmod_solve.hpp"
+#include "symbolic_cache.hpp"
 #include "thread_environment.hpp"
 
 namespace saasgaps {
@@ -35,6 +38,7 @@ struct SparseCholesky::Impl {
   std::vector<double> reference;  // |A_jj| of the last factorization
   const char* ordering_name = "METIS";
   bool ordering_cached = false;
+  bool analysis_cached = false;  // the whole symbolic factor loaded (SymbolicCache)
   double ordering_seconds = 0.0;
   double flops = 0.0;         // of one numeric factorization, from the analysis
   double factor_entries = 0.0;
@@ -74,13 +78,26 @@ struct SparseCholesky::Impl {
 
     if (!groups.empty()) {
       const auto started = std::chrono::steady_clock::now();
-      std::vector<Index> order = cached_or_computed_group_order(groups, cache);
-      ordering_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-      if (!order.empty()) {
-        // The same call whether the order was loaded or computed: the same factor either way.
-        common.method[0].ordering = CHOLMOD_GIVEN;
-        L = cholmod_l_analyze_p(&A, order.data(), nullptr, 0, &common);
-        ordering_name = ordering_cached ? "METIS on node groups (cached)" : "METIS on node groups";
+      const auto seconds = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      };
+      std::optional<PatternKey> key;
+      if (cache != nullptr) key = pattern_key(pattern, groups, group_ordering_method());
+      if (key) L = cached_analysis(*key, *cache);
+      if (L != nullptr) {
+        ordering_seconds = seconds();  // loading the whole analysis
+      } else {
+        std::vector<Index> order = cached_or_computed_group_order(groups, key ? &*key : nullptr, cache);
+        ordering_seconds = seconds();
+        if (!order.empty()) {
+          // The same call whether the order was loaded or computed: the same factor either way.
+          common.method[0].ordering = CHOLMOD_GIVEN;
+          L = cholmod_l_analyze_p(&A, order.data(), nullptr, 0, &common);
+          ordering_name = ordering_cached ? "METIS on node groups (cached)" : "METIS on node groups";
+          if (key && L != nullptr && common.status >= CHOLMOD_OK) {
+            SymbolicCache(cache->directory()).store(analysis_key(*key), *L, {common.fl, common.lnz});
+          }
+        }
       }
     }
     if (L == nullptr) {
@@ -100,8 +117,35 @@ struct SparseCholesky::Impl {
       throw std::runtime_error("CHOLMOD symbolic analysis failed (status " +
                                std::to_string(common.status) + ")");
     }
-    flops = common.fl;
-    factor_entries = common.lnz;
+    if (!analysis_cached) {
+      flops = common.fl;
+      factor_entries = common.lnz;
+    }
+  }
+
+  /// The key of the whole analysis: the ordering's key and the settings that shape the supernodes.
+  PatternKey analysis_key(const PatternKey& ordering_key) const {
+    std::ostringstream settings;
+    settings.precision(17);
+    settings << "CHOLMOD analysis: supernodal " << common.supernodal << ", switch " << common.supernodal_switch
+             << ", final_ll " << common.final_ll << ", postorder " << common.postorder << ", nrelax "
+             << common.nrelax[0] << " " << common.nrelax[1] << " " << common.nrelax[2] << ", zrelax "
+             << common.zrelax[0] << " " << common.zrelax[1] << " " << common.zrelax[2] << ", int64, double";
+    return derived_key(ordering_key, settings.str());
+  }
+
+  /// The analysis saved under the ordering's key, or nullptr (a miss).
+  cholmod_factor* cached_analysis(const PatternKey& ordering_key, const OrderingCache& cache) {
+    SymbolicStatistics statistics;
+    cholmod_factor* loaded =
+        SymbolicCache(cache.directory()).load(analysis_key(ordering_key), pattern, statistics, common);
+    if (loaded != nullptr) {
+      analysis_cached = ordering_cached = true;
+      ordering_name = "METIS on node groups (cached)";
+      flops = statistics.flops;
+      factor_entries = statistics.factor_entries;
+    }
+    return loaded;
   }
 
   /// What computes the group ordering, for the cache key: a change of method, options or library
@@ -114,15 +158,15 @@ struct SparseCholesky::Impl {
   }
 
   /// The group ordering from the cache when it holds a valid one, else computed (and stored).
-  std::vector<Index> cached_or_computed_group_order(std::span<const Index> groups, const OrderingCache* cache) {
-    if (cache == nullptr) return group_order(groups);
-    const PatternKey key = pattern_key(pattern, groups, group_ordering_method());
-    if (std::optional<std::vector<Index>> loaded = cache->load(key, pattern.n)) {
+  std::vector<Index> cached_or_computed_group_order(std::span<const Index> groups, const PatternKey* key,
+                                                    const OrderingCache* cache) {
+    if (cache == nullptr || key == nullptr) return group_order(groups);
+    if (std::optional<std::vector<Index>> loaded = cache->load(*key, pattern.n)) {
       ordering_cached = true;
       return std::move(*loaded);
     }
     std::vector<Index> order = group_order(groups);
-    if (!order.empty()) cache->store(key, order);
+    if (!order.empty()) cache->store(*key, order);
     return order;
   }
 
@@ -254,6 +298,7 @@ double SparseCholesky::factor_flops() const { return impl_->flops; }
 const char* SparseCholesky::ordering() const { return impl_->ordering_name; }
 const cholmod_factor_struct* SparseCholesky::factor() const { return impl_->L; }
 bool SparseCholesky::ordering_from_cache() const { return impl_->ordering_cached; }
+bool SparseCholesky::analysis_from_cache() const { return impl_->analysis_cached; }
 double SparseCholesky::ordering_seconds() const { return impl_->ordering_seconds; }
 
 }  // namespace saasgaps

@@ -38,8 +38,9 @@ class SparseCholesky {
   /// groups (optional, one entry per unknown): unknowns with the same group share their sparsity
   /// (the two displacement components of a node). The fill-reducing ordering is then computed on
   /// the graph of groups, about four times smaller, and expanded; without groups, on the unknowns.
-  /// cache (optional, with groups): the node-graph ordering of a pattern seen before is loaded from
-  /// it instead of computed, and a computed one is saved there.
+  /// cache (optional, with groups): the symbolic analysis of a pattern seen before is loaded from
+  /// its directory instead of computed (the whole supernodal factor, else the node-graph ordering),
+  /// and a computed one is saved there.
   explicit SparseCholesky(const CscPattern& pattern, std::span<const Index> groups = {},
                           const OrderingCache* cache = nullptr);
   ~SparseCholesky();
@@ -58,7 +59,10 @@ class SparseCholesky {
   [[nodiscard]] double factor_flops() const;     ///< floating-point operations of one factorization
   [[nodiscard]] const char* ordering() const;    ///< the fill-reducing ordering in use
   [[nodiscard]] bool ordering_from_cache() const;  ///< loaded from the OrderingCache, not computed
-  [[nodiscard]] double ordering_seconds() const;   ///< computing (or loading) the ordering
+  /// The whole symbolic analysis loaded from the cache's directory (SymbolicCache): no METIS and
+  /// no cholmod_analyze. Implies ordering_from_cache().
+  [[nodiscard]] bool analysis_from_cache() const;
+  [[nodiscard]] double ordering_seconds() const;  ///< computing (or loading) the ordering, or the whole analysis
 
   /// The last factorization, read-only, for UpdatableFactor (updatable_factor.hpp) to copy.
   [[nodiscard]] const cholmod_factor_struct* factor() const;
