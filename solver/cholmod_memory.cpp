@@ -78,6 +78,13 @@ void* reallocate(void* p, std::size_t size) {
 
 }  // namespace
 
+void prefault_cholmod_block(void* block) {
+  const std::size_t size = mapped_size(block);
+#ifdef MADV_POPULATE_WRITE
+  if (size != 0) madvise(block, size, MADV_POPULATE_WRITE);
+#endif
+}
+
 void advise_huge_pages(bool on) { huge_page_advice = on; }
 
 void use_mapped_memory_for_cholmod() {

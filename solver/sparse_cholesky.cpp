@@ -121,6 +121,18 @@ struct SparseCholesky::Impl {
       flops = common.fl;
       factor_entries = common.lnz;
     }
+    allocate_values();
+  }
+
+  /// Allocates the factor's values now, as the first factorization would, and faults their pages
+  /// in (about 0.35 s per GB on the development VM, 1 GB at 10^6 unknowns), here on the thread of the
+  /// analysis rather than inside the first factorization. The numeric factorization clears every
+  /// supernode before assembling it, so the contents do not matter. Failure is left to factorize().
+  void allocate_values() {
+    if (L->is_super && L->xtype == CHOLMOD_PATTERN &&
+        cholmod_l_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, L, &common) && L->x != nullptr) {
+      prefault_cholmod_block(L->x);
+    }
   }
 
   /// The key of the whole analysis: the ordering's key and the settings that shape the supernodes.

@@ -42,8 +42,8 @@ int main(int argc, char** argv) {
   solve_cmd->add_flag("--pretty", solve.pretty, "Indent the result document (default: compact)");
   solve_cmd->add_option("--vtu", solve.vtu_path, "Also write the result as a VTK unstructured grid (.vtu)");
   solve_cmd->add_option("--cache", solve.cache_dir,
-                        "Directory keeping fill-reducing orderings between runs: a mesh solved before skips "
-                        "its ordering (created if missing)");
+                        "Directory keeping symbolic analyses (fill-reducing ordering and supernodes) between "
+                        "runs: a mesh solved before skips its analysis (created if missing)");
 
   std::string validate_path;
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check a model and print every error with its JSON Pointer");
