@@ -206,6 +206,8 @@ TEST(SupernodalStructure, EveryEntryAndAllFillMustBeInside) {
   const std::vector<Index> reversed = {2, 1, 0}, colcount3 = {2, 2, 1}, pi3 = {0, 2, 4, 5}, s3 = {0, 2, 1, 2, 2};
   EXPECT_TRUE(is_supernodal_structure_of({reversed, colcount3, super, pi3, pi3, s3, 5, 1, 1}, a));
   EXPECT_FALSE(is_supernodal_structure_of({identity, colcount3, super, pi3, pi3, s3, 5, 1, 1}, a));
+  // Ordered so, A's entry (0,2) lands in column 0 at row 2: a structure with row 1 there misses it.
+  EXPECT_FALSE(is_supernodal_structure_of({reversed, colcount2, super, pi2, pi2, s2, 5, 1, 1}, a));
 }
 
 TEST_F(OrderingCacheTest, ACacheThatCannotBeWrittenIsNotAnError) {
