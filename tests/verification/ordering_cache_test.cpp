@@ -184,12 +184,18 @@ TEST_F(OrderingCacheTest, AWronglyStructuredFileWithAValidChecksumIsAMiss) {
   EXPECT_EQ(analysis_loads(cache), Loaded::analysis);
 }
 
+/// A 3 x 3 upper-triangular pattern with one entry in column 0 and two in columns 1 and 2.
+CscPattern pattern_3x3(std::vector<Index> rowind) {
+  CscPattern p;
+  p.n = 3;
+  p.colptr = {0, 1, 3, 5};
+  p.rowind = std::move(rowind);
+  return p;
+}
+
 TEST(SupernodalStructure, EveryEntryAndAllFillMustBeInside) {
   // A = [x x x; x x .; x . x] (upper triangle stored): eliminating 0 fills (2,1).
-  CscPattern a;
-  a.n = 3;
-  a.colptr = {0, 1, 3, 5};
-  a.rowind = {0, 0, 1, 0, 2};
+  const CscPattern a = pattern_3x3({0, 0, 1, 0, 2});
   const std::vector<Index> identity = {0, 1, 2}, super = {0, 1, 2, 3};
   // One supernode per column: rows {0,1,2}, {1,2}, {2}.
   const std::vector<Index> colcount = {3, 2, 1}, pi = {0, 3, 5, 6}, s = {0, 1, 2, 1, 2, 2};
@@ -219,10 +225,7 @@ TEST_F(OrderingCacheTest, ACacheThatCannotBeWrittenIsNotAnError) {
 }
 
 TEST(OrderingCacheKey, DependsOnThePatternTheGroupsAndTheMethod) {
-  CscPattern p;
-  p.n = 3;
-  p.colptr = {0, 1, 3, 5};
-  p.rowind = {0, 0, 1, 1, 2};
+  const CscPattern p = pattern_3x3({0, 0, 1, 1, 2});
   const std::vector<Index> groups = {0, 0, 1};
   const PatternKey key = pattern_key(p, groups, "m");
   EXPECT_EQ(pattern_key(p, groups, "m"), key);
