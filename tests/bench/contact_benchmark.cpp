@@ -26,16 +26,13 @@
 #include "stiffness_system.hpp"
 #include "support/ring_fit.hpp"
 
+#include "stopwatch.hpp"
+
 using namespace saasgaps;
 
 namespace {
 
-template <class F>
-double timed(F&& f) {
-  const auto start = std::chrono::steady_clock::now();
-  f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using saasgaps::bench::timed;
 
 Model ring_fit(int radial, int hoop, double eccentricity) {
   Model m = testing::quarter_ring_fit(AnalysisType::plane_strain, radial, hoop, eccentricity);

@@ -22,17 +22,14 @@
 #include "io/gmsh_mesh.hpp"
 #include "io/model_reader.hpp"
 
+#include "stopwatch.hpp"
+
 using namespace saasgaps;
 namespace fs = std::filesystem;
 
 namespace {
 
-template <class F>
-double timed(F&& f) {
-  const auto start = std::chrono::steady_clock::now();
-  f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using saasgaps::bench::timed;
 
 std::string geometry(int n) {
   const int half = n / 2;

@@ -24,15 +24,15 @@
 
 #include "service/server_process.hpp"
 
+#include "stopwatch.hpp"
+
 using namespace saasgaps::testing;
 using nlohmann::json;
 namespace fs = std::filesystem;
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using saasgaps::bench::seconds_since;
 
 std::string read_text(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);

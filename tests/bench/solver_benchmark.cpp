@@ -38,21 +38,13 @@
 #include "stiffness_system.hpp"
 #include "support/mesh_builder.hpp"
 
+#include "stopwatch.hpp"
+
 using namespace saasgaps;
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-/// Runs f once and returns its wall time.
-template <class F>
-double timed(F&& f) {
-  const auto start = std::chrono::steady_clock::now();
-  f();
-  return seconds_since(start);
-}
+using saasgaps::bench::timed;
 
 /// A field of /proc/self/status in kB (VmHWM, VmRSS, Threads ...), or -1.
 double status_field(const std::string& name) {

@@ -30,11 +30,15 @@
 #include "service/long_job_model.hpp"
 #include "service/worker_protocol.hpp"
 
+#include "stopwatch.hpp"
+
 using namespace saasgaps;
 using nlohmann::json;
 namespace fs = std::filesystem;
 
 namespace {
+
+using saasgaps::bench::seconds_since;
 
 struct Recorded {
   std::string row;
@@ -59,10 +63,6 @@ class Recorder final : public IterationObserver {
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void measure(const std::string& name, const json& document, int repeat, service::JobStore& store, int port) {
