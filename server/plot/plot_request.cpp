@@ -36,6 +36,17 @@ std::vector<std::string> plot_names() {
   return names;
 }
 
+nlohmann::json::parser_callback_t result_members_for(const PlotRequest& request) {
+  // Only the convergence plot leaves out members that matter for size; every other plot draws the
+  // mesh (nodes, elements, gaps) and its fields, which are nearly all of a result.
+  const bool mesh = request.name != "convergence";
+  return [mesh](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    if (mesh || depth != 1 || event != nlohmann::json::parse_event_t::key) return true;
+    const auto& key = parsed.get_ref<const std::string&>();
+    return key != "nodes" && key != "elements";
+  };
+}
+
 void require_plot_name(const std::string& name) {
   const std::vector<std::string> names = plot_names();
   if (std::find(names.begin(), names.end(), name) != names.end()) return;

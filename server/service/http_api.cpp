@@ -242,13 +242,14 @@ bool not_modified(const httplib::Request& req, httplib::Response& res, const std
   return false;
 }
 
-/// The job's stored result as a document, for plots and exports.
-json stored_result(JobStore& store, std::int64_t id) {
+/// The job's stored result as a document, for plots and exports; `members` (optional) drops what
+/// the caller does not read while parsing.
+json stored_result(JobStore& store, std::int64_t id, const json::parser_callback_t& members = nullptr) {
   const std::optional<std::string> result = store.result(id);
   if (!result) {
     throw HttpError(404, "Not Found", "job " + std::to_string(id) + " has no result yet (" + to_string(store.get(id).state) + ")");
   }
-  json document = json::parse(*result, nullptr, false);
+  json document = json::parse(*result, members, false);
   if (document.is_discarded()) {
     throw HttpError(500, "Internal Server Error", "the stored result of job " + std::to_string(id) +
                                                       " is damaged (not JSON); resume the job to compute it again");
@@ -462,7 +463,7 @@ void HttpApi::install(httplib::Server& server) {
     // The image follows from the stored result and the query: tag it by both, and skip the drawing
     // when the client already has it.
     if (not_modified(req, res, result_tag(store_, id, 0, req.target))) return;
-    const json result = stored_result(store_, id);
+    const json result = stored_result(store_, id, plot::result_members_for(request));
     const bool table = req.matches[3] == "csv";
     std::string body;
     try {

@@ -126,6 +126,23 @@ TEST_F(PlotRender, ClosureAndConvergencePngs) {
   EXPECT_GT(png_colours(render_plot(ring_, along), 900, 600), 30U);
 }
 
+TEST_F(PlotRender, AConvergencePlotReadsNoNodesOrElementsAndDrawsTheSame) {
+  for (const nlohmann::json* result : {&p3_, &ring_}) {
+    const std::string text = result->dump();
+    // PNG: cairo numbers the surfaces of SVG documents per process, so two SVGs differ in ids.
+    const PlotRequest convergence = request("convergence", ImageFormat::png);
+    const nlohmann::json read = nlohmann::json::parse(text, result_members_for(convergence));
+    EXPECT_FALSE(read.contains("nodes"));
+    EXPECT_FALSE(read.contains("elements"));
+    EXPECT_TRUE(read.contains("history"));
+    EXPECT_TRUE(read.contains("gaps"));
+    EXPECT_EQ(render_plot(read, convergence), render_plot(*result, convergence));
+    // Any other plot reads the whole document.
+    const PlotRequest contour = request("effective", ImageFormat::svg);
+    EXPECT_EQ(nlohmann::json::parse(text, result_members_for(contour)), *result);
+  }
+}
+
 TEST_F(PlotRender, SvgDocumentsHoldTheDrawing) {
   PlotRequest contour = request("effective", ImageFormat::svg);
   contour.contour.mesh = true;
