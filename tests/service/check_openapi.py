@@ -279,6 +279,14 @@ def exercise(client, repo, document_bytes, directory):
     client.wait_for(long_job, {"cancelled"})
     client.request("GET", f"/v1/jobs/{long_job}/result", expect=200)
 
+    # A plot the result cannot show: a gap plot of a model without gaps is 409.
+    beam = (examples / "report-beam-model-a.json").read_bytes()
+    beam_job = client.json("POST", "/v1/jobs", body=beam, headers={"Content-Type": "application/json"}, expect=202)["id"]
+    client.wait_for(beam_job, {"converged"})
+    client.request("GET", f"/v1/jobs/{beam_job}/plots/effective.png?width=300&height=200", expect=200)
+    client.request("GET", f"/v1/jobs/{beam_job}/plots/closure.png", expect=409)
+    client.request("GET", f"/v1/jobs/{beam_job}/plots/contact_pressure.csv", expect=409)
+
     # A mechanism is refused before it is queued.
     free = json.loads((examples / "report-beam-model-a.json").read_text())
     free["constraints"] = [{"node": 2, "r": 0.0}]
