@@ -7,10 +7,10 @@
 
 namespace saasgaps::cli {
 
-nlohmann::json read_result_document(const std::string& path, const nlohmann::json::parser_callback_t& members) {
+nlohmann::json read_result_document(const std::string& path, const io::MemberFilter& members) {
   nlohmann::json document;
   try {
-    document = nlohmann::json::parse(read_file(path), members);
+    document = io::parse_json_subset(read_file(path), members);
   } catch (const nlohmann::json::parse_error& e) {
     throw std::runtime_error(path + " is not a result document (JSON): " + e.what());
   }

@@ -5,10 +5,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/json_subset.hpp"
+
 namespace saasgaps::cli {
 
 /// The parsed result document; a file that cannot be read or is not JSON is a std::runtime_error
-/// naming the file. `members` (optional) drops what a reader does not need while parsing.
-nlohmann::json read_result_document(const std::string& path, const nlohmann::json::parser_callback_t& members = nullptr);
+/// naming the file. `members` (optional) keeps only what a reader needs (io/json_subset.hpp).
+nlohmann::json read_result_document(const std::string& path, const io::MemberFilter& members = nullptr);
 
 }  // namespace saasgaps::cli

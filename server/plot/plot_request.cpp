@@ -36,14 +36,24 @@ std::vector<std::string> plot_names() {
   return names;
 }
 
-nlohmann::json::parser_callback_t result_members_for(const PlotRequest& request) {
-  // Only the convergence plot leaves out members that matter for size; every other plot draws the
-  // mesh (nodes, elements, gaps) and its fields, which are nearly all of a result.
-  const bool mesh = request.name != "convergence";
-  return [mesh](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-    if (mesh || depth != 1 || event != nlohmann::json::parse_event_t::key) return true;
-    const auto& key = parsed.get_ref<const std::string&>();
-    return key != "nodes" && key != "elements";
+ResultMembers result_members_for(const PlotRequest& request) {
+  if (request.name == "convergence") {
+    // The history and the gaps; no mesh.
+    return [](int depth, std::string_view, std::string_view key) {
+      return depth != 1 || (key != "nodes" && key != "elements");
+    };
+  }
+  // Every other plot draws the mesh (result_mesh.cpp): all of each node and gap, but of each
+  // element only its id, material and nodes, and the value of the element field plotted (field.cpp).
+  // An element holds 18 members; these are 3 or 4 of them.
+  std::string field_key;
+  for (const FieldInfo& field : fields()) {
+    if (field.name == request.name && field.location == FieldLocation::element) field_key = field.key;
+  }
+  return [field_key](int depth, std::string_view section, std::string_view key) {
+    // depth 3 under "elements": a member of one element.
+    if (depth != 3 || section != "elements") return true;
+    return key == "id" || key == "material" || key == "nodes" || key == field_key;
   };
 }
 

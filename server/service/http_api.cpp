@@ -11,6 +11,7 @@
 
 #include "errors.hpp"
 #include "io/json_pointer.hpp"
+#include "io/json_subset.hpp"
 #include "io/json_text.hpp"
 #include "io/model_reader.hpp"
 #include "io/restraint_issues.hpp"
@@ -242,19 +243,19 @@ bool not_modified(const httplib::Request& req, httplib::Response& res, const std
   return false;
 }
 
-/// The job's stored result as a document, for plots and exports; `members` (optional) drops what
-/// the caller does not read while parsing.
-json stored_result(JobStore& store, std::int64_t id, const json::parser_callback_t& members = nullptr) {
+/// The job's stored result as a document, for plots and exports; `members` (optional) keeps only
+/// what the caller reads (io/json_subset.hpp).
+json stored_result(JobStore& store, std::int64_t id, const io::MemberFilter& members = nullptr) {
   const std::optional<std::string> result = store.result(id);
   if (!result) {
     throw HttpError(404, "Not Found", "job " + std::to_string(id) + " has no result yet (" + to_string(store.get(id).state) + ")");
   }
-  json document = json::parse(*result, members, false);
-  if (document.is_discarded()) {
+  try {
+    return io::parse_json_subset(*result, members);
+  } catch (const json::exception&) {
     throw HttpError(500, "Internal Server Error", "the stored result of job " + std::to_string(id) +
                                                       " is damaged (not JSON); resume the job to compute it again");
   }
-  return document;
 }
 
 /// The plot a request asks for: the name and format from the path, options from the query.

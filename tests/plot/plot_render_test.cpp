@@ -11,11 +11,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <string>
 
+#include "io/json_subset.hpp"
 #include "plot/plot_request.hpp"
 
 namespace saasgaps::plot {
@@ -126,20 +128,39 @@ TEST_F(PlotRender, ClosureAndConvergencePngs) {
   EXPECT_GT(png_colours(render_plot(ring_, along), 900, 600), 30U);
 }
 
-TEST_F(PlotRender, AConvergencePlotReadsNoNodesOrElementsAndDrawsTheSame) {
+TEST_F(PlotRender, PlotsReadOnlyTheirPartOfAResultAndDrawTheSame) {
   for (const nlohmann::json* result : {&p3_, &ring_}) {
     const std::string text = result->dump();
     // PNG: cairo numbers the surfaces of SVG documents per process, so two SVGs differ in ids.
-    const PlotRequest convergence = request("convergence", ImageFormat::png);
-    const nlohmann::json read = nlohmann::json::parse(text, result_members_for(convergence));
-    EXPECT_FALSE(read.contains("nodes"));
-    EXPECT_FALSE(read.contains("elements"));
-    EXPECT_TRUE(read.contains("history"));
-    EXPECT_TRUE(read.contains("gaps"));
-    EXPECT_EQ(render_plot(read, convergence), render_plot(*result, convergence));
-    // Any other plot reads the whole document.
-    const PlotRequest contour = request("effective", ImageFormat::svg);
-    EXPECT_EQ(nlohmann::json::parse(text, result_members_for(contour)), *result);
+    const PlotRequest convergence = request("convergence", ImageFormat::png, 320, 240);
+    const nlohmann::json history = io::parse_json_subset(text, result_members_for(convergence));
+    EXPECT_FALSE(history.contains("nodes"));
+    EXPECT_FALSE(history.contains("elements"));
+    EXPECT_TRUE(history.contains("history"));
+    EXPECT_TRUE(history.contains("gaps"));
+    EXPECT_EQ(render_plot(history, convergence), render_plot(*result, convergence));
+
+    for (const char* name : {"sigma_theta", "temperature", "closure", "contact_pressure"}) {
+      SCOPED_TRACE(name);
+      PlotRequest plot = request(name, ImageFormat::png, 320, 240);
+      plot.contour.automatic_deformation = true;
+      const nlohmann::json read = io::parse_json_subset(text, result_members_for(plot));
+      EXPECT_EQ(read["nodes"], (*result)["nodes"]);
+      EXPECT_EQ(read["gaps"], (*result)["gaps"]);
+      const nlohmann::json& element = read["elements"][0];
+      const std::size_t members = std::string(name) == "sigma_theta" ? 4 : 3;
+      EXPECT_EQ(element.size(), members) << element.dump();
+      EXPECT_EQ(render_plot(read, plot), render_plot(*result, plot));
+    }
+    // A path across the first element, corner to opposite corner: inside the mesh.
+    std::map<int, std::pair<double, double>> at;
+    for (const auto& n : (*result)["nodes"]) at[n["id"].get<int>()] = {n["r"].get<double>(), n["z"].get<double>()};
+    const auto& corners = (*result)["elements"][0]["nodes"];
+    const auto [r0, z0] = at.at(corners[0].get<int>());
+    const auto [r2, z2] = at.at(corners[2].get<int>());
+    PlotRequest along = request("sigma_theta", ImageFormat::png);
+    along.path = PathOptions{{{r0, z0}, {r2, z2}}, 21};
+    EXPECT_EQ(render_table(io::parse_json_subset(text, result_members_for(along)), along), render_table(*result, along));
   }
 }
 

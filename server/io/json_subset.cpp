@@ -1,0 +1,118 @@
+#include "io/json_subset.hpp"
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace saasgaps::io {
+
+namespace {
+
+using json = nlohmann::json;
+
+/// Builds the tree from SAX events, leaving out every value whose member the filter rejects (and
+/// everything inside it).
+class SubsetBuilder final : public json::json_sax_t {
+ public:
+  explicit SubsetBuilder(const MemberFilter& keep) : keep_(keep) {}
+
+  bool null() override { return scalar(nullptr); }
+  bool boolean(bool v) override { return scalar(v); }
+  bool number_integer(number_integer_t v) override { return scalar(v); }
+  bool number_unsigned(number_unsigned_t v) override { return scalar(v); }
+  bool number_float(number_float_t v, const string_t&) override { return scalar(v); }
+  bool string(string_t& v) override { return scalar(std::move(v)); }
+  bool binary(binary_t& v) override { return scalar(std::move(v)); }
+  bool start_object(std::size_t) override { return open(json::object()); }
+  bool start_array(std::size_t) override { return open(json::array()); }
+  bool end_object() override { return close(); }
+  bool end_array() override { return close(); }
+
+  bool key(string_t& name) override {
+    if (skipped_ > 0) return true;
+    // The object holding this key is the innermost open container: its depth is the stack's size.
+    const int depth = static_cast<int>(stack_.size());
+    if (depth == 1) section_ = name;
+    if (keep_ && !keep_(depth, depth == 1 ? std::string_view() : std::string_view(section_), name)) {
+      skip_next_ = true;
+      return true;
+    }
+    // A repeated key replaces the earlier value, as nlohmann's parser does.
+    slot_ = &stack_.back()->get_ref<json::object_t&>()[name];
+    return true;
+  }
+
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
+    // Rethrow what nlohmann::json::parse would have thrown.
+    if (const auto* p = dynamic_cast<const json::parse_error*>(&e)) throw *p;
+    if (const auto* r = dynamic_cast<const json::out_of_range*>(&e)) throw *r;
+    throw json::other_error::create(599, e.what(), nullptr);
+  }
+
+  json take() { return std::move(root_); }
+
+ private:
+  template <class Value>
+  bool scalar(Value&& v) {
+    if (skipped_ > 0) return true;
+    if (skip_next_) {
+      skip_next_ = false;
+      return true;
+    }
+    place(json(std::forward<Value>(v)));
+    return true;
+  }
+
+  bool open(json container) {
+    if (skipped_ > 0 || skip_next_) {
+      skip_next_ = false;
+      ++skipped_;
+      return true;
+    }
+    stack_.push_back(place(std::move(container)));
+    return true;
+  }
+
+  bool close() {
+    if (skipped_ > 0) {
+      --skipped_;
+      return true;
+    }
+    stack_.pop_back();
+    return true;
+  }
+
+  json* place(json&& v) {
+    if (stack_.empty()) {
+      root_ = std::move(v);
+      return &root_;
+    }
+    json& top = *stack_.back();
+    if (top.is_array()) {
+      auto& items = top.get_ref<json::array_t&>();
+      items.push_back(std::move(v));
+      return &items.back();
+    }
+    *slot_ = std::move(v);
+    return slot_;
+  }
+
+  const MemberFilter& keep_;
+  json root_;
+  std::vector<json*> stack_;  // open containers kept; a parent only grows once its child has ended
+  json* slot_ = nullptr;      // the member named by the last kept key
+  std::string section_;       // the root member being read
+  bool skip_next_ = false;    // the next value belongs to a rejected member
+  int skipped_ = 0;           // depth inside a rejected container
+};
+
+}  // namespace
+
+nlohmann::json parse_json_subset(std::string_view text, const MemberFilter& keep) {
+  SubsetBuilder builder(keep);
+  json::sax_parse(text, &builder);
+  return builder.take();
+}
+
+}  // namespace saasgaps::io
