@@ -3,7 +3,8 @@
 #include <cstddef>
 #include <string>
 #include <utility>
-#include <vector>
+
+#include "io/tree_builder.hpp"
 
 namespace saasgaps::io {
 
@@ -11,11 +12,11 @@ namespace {
 
 using json = nlohmann::json;
 
-/// Builds the tree from SAX events, leaving out every value whose member the filter rejects (and
-/// everything inside it).
+/// Feeds a TreeBuilder the SAX events of the members the filter keeps; a rejected member's value
+/// (and everything inside it) is skipped.
 class SubsetBuilder final : public json::json_sax_t {
  public:
-  explicit SubsetBuilder(const MemberFilter& keep) : keep_(keep) {}
+  explicit SubsetBuilder(const MemberFilter& keep) : keep_(keep) { tree_.begin(); }
 
   bool null() override { return scalar(nullptr); }
   bool boolean(bool v) override { return scalar(v); }
@@ -31,15 +32,13 @@ class SubsetBuilder final : public json::json_sax_t {
 
   bool key(string_t& name) override {
     if (skipped_ > 0) return true;
-    // The object holding this key is the innermost open container: its depth is the stack's size.
-    const int depth = static_cast<int>(stack_.size());
-    if (depth == 1) section_ = name;
-    if (keep_ && !keep_(depth, depth == 1 ? std::string_view() : std::string_view(section_), name)) {
+    // The object holding this key is the innermost open container: its depth is depth_.
+    if (depth_ == 1) section_ = name;
+    if (keep_ && !keep_(depth_, depth_ == 1 ? std::string_view() : std::string_view(section_), name)) {
       skip_next_ = true;
       return true;
     }
-    // A repeated key replaces the earlier value, as nlohmann's parser does.
-    slot_ = &stack_.back()->get_ref<json::object_t&>()[name];
+    (void)tree_.key(name);  // a repeated key: the later value replaces the earlier, as in nlohmann's parser
     return true;
   }
 
@@ -50,7 +49,7 @@ class SubsetBuilder final : public json::json_sax_t {
     throw json::other_error::create(599, e.what(), nullptr);
   }
 
-  json take() { return std::move(root_); }
+  json take() { return tree_.take(); }
 
  private:
   template <class Value>
@@ -60,7 +59,7 @@ class SubsetBuilder final : public json::json_sax_t {
       skip_next_ = false;
       return true;
     }
-    place(json(std::forward<Value>(v)));
+    tree_.value(std::forward<Value>(v));
     return true;
   }
 
@@ -70,7 +69,8 @@ class SubsetBuilder final : public json::json_sax_t {
       ++skipped_;
       return true;
     }
-    stack_.push_back(place(std::move(container)));
+    tree_.start(std::move(container));
+    ++depth_;
     return true;
   }
 
@@ -79,29 +79,14 @@ class SubsetBuilder final : public json::json_sax_t {
       --skipped_;
       return true;
     }
-    stack_.pop_back();
+    tree_.end();
+    --depth_;
     return true;
   }
 
-  json* place(json&& v) {
-    if (stack_.empty()) {
-      root_ = std::move(v);
-      return &root_;
-    }
-    json& top = *stack_.back();
-    if (top.is_array()) {
-      auto& items = top.get_ref<json::array_t&>();
-      items.push_back(std::move(v));
-      return &items.back();
-    }
-    *slot_ = std::move(v);
-    return slot_;
-  }
-
   const MemberFilter& keep_;
-  json root_;
-  std::vector<json*> stack_;  // open containers kept; a parent only grows once its child has ended
-  json* slot_ = nullptr;      // the member named by the last kept key
+  TreeBuilder tree_;
+  int depth_ = 0;             // containers open in the tree
   std::string section_;       // the root member being read
   bool skip_next_ = false;    // the next value belongs to a rejected member
   int skipped_ = 0;           // depth inside a rejected container

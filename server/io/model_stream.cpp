@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "io/json_pointer.hpp"
+#include "io/tree_builder.hpp"
 #include "io/model_reader.hpp"
 #include "io/state_codec.hpp"
 #include "io/value_quote.hpp"
@@ -41,58 +42,6 @@ struct TrackedIterator {
     return before;
   }
   bool operator==(const TrackedIterator& other) const { return at == other.at; }
-};
-
-/// Builds a tree from SAX events, like nlohmann's own DOM parser, but reports a repeated key
-/// (the later value replaces the earlier one, as nlohmann's parser does).
-class TreeBuilder {
- public:
-  void begin() {
-    root_ = json();
-    stack_.clear();
-    active_ = true;
-  }
-  [[nodiscard]] bool active() const { return active_; }
-
-  template <class Value>
-  void value(Value&& v) {
-    place(json(std::forward<Value>(v)));
-  }
-  void start(json container) { stack_.push_back(place(std::move(container))); }
-  /// False when the object already has this key.
-  bool key(const std::string& name) {
-    auto& members = stack_.back()->get_ref<json::object_t&>();
-    const auto [it, fresh] = members.try_emplace(name);
-    slot_ = &it->second;
-    return fresh;
-  }
-  void end() { stack_.pop_back(); }
-  /// True once the value that begin() started is complete.
-  [[nodiscard]] bool complete() const { return active_ && stack_.empty(); }
-  json take() {
-    active_ = false;
-    return std::move(root_);
-  }
-
- private:
-  json* place(json&& v) {
-    if (stack_.empty()) {
-      root_ = std::move(v);
-      return &root_;
-    }
-    json& top = *stack_.back();
-    if (top.is_array()) {
-      top.get_ref<json::array_t&>().push_back(std::move(v));
-      return &top.get_ref<json::array_t&>().back();
-    }
-    *slot_ = std::move(v);
-    return slot_;
-  }
-
-  json root_;
-  std::vector<json*> stack_;  // open containers; a parent only grows once its child has ended
-  json* slot_ = nullptr;      // the member named by the last key
-  bool active_ = false;
 };
 
 /// nlohmann's what() starts with "[json.exception.parse_error.101] "; the user needs the rest.
