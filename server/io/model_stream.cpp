@@ -8,9 +8,9 @@
 #include <utility>
 
 #include "io/json_pointer.hpp"
-#include "io/tree_builder.hpp"
 #include "io/model_reader.hpp"
 #include "io/state_codec.hpp"
+#include "io/tree_builder.hpp"
 #include "io/value_quote.hpp"
 
 namespace saasgaps::io {
@@ -120,8 +120,6 @@ class ModelStream final : public json::json_sax_t {
 
   // ---- results
   [[nodiscard]] const std::optional<InputIssue>& error() const { return error_; }
-  /// The error is a syntax error: the text is not JSON.
-  [[nodiscard]] bool not_json() const { return not_json_; }
   /// Throws the parse error: NotJsonText for a syntax error, ModelError for a number out of range.
   [[noreturn]] void throw_error() const {
     if (not_json_) throw NotJsonText({*error_});
