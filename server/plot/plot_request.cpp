@@ -46,10 +46,9 @@ ResultMembers result_members_for(const PlotRequest& request) {
   // Every other plot draws the mesh (result_mesh.cpp): all of each node and gap, but of each
   // element only its id, material and nodes, and the value of the element field plotted (field.cpp).
   // An element holds 18 members; these are 3 or 4 of them.
-  std::string field_key;
-  for (const FieldInfo& field : fields()) {
-    if (field.name == request.name && field.location == FieldLocation::element) field_key = field.key;
-  }
+  // (Callers have checked the name: every plot but convergence is a field.)
+  const FieldInfo& field = find_field(request.name);
+  const std::string field_key(field.location == FieldLocation::element ? field.key : std::string_view());
   return [field_key](int depth, std::string_view section, std::string_view key) {
     // depth 3 under "elements": a member of one element.
     if (depth != 3 || section != "elements") return true;
