@@ -4,6 +4,7 @@
 
 #include "cli/file_io.hpp"
 #include "io/document_kind.hpp"
+#include "io/json_limits.hpp"
 
 namespace saasgaps::cli {
 
@@ -13,6 +14,9 @@ nlohmann::json read_result_document(const std::string& path, const io::MemberFil
     document = io::parse_json_subset(read_file(path), members);
   } catch (const nlohmann::json::parse_error& e) {
     throw std::runtime_error(path + " is not a result document (JSON): " + e.what());
+  } catch (const io::NestingTooDeep& e) {
+    throw std::runtime_error(path + " is not a result document: " + e.issues().front().pointer + ": " +
+                             e.issues().front().detail);
   }
   switch (io::document_kind(document)) {
     case io::DocumentKind::result: return document;

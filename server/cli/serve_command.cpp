@@ -183,7 +183,7 @@ int run_serve(const ServeOptions& options) {
   // Models submitted to the local pool go to their worker already read (up to one per worker).
   service::ModelHandoff handoff(static_cast<std::size_t>(options.workers));
   service::HttpApi api(store, hub, {token, options.max_streams, options.workers, options.host, allowed_hosts,
-                                    slurm ? nullptr : &handoff});
+                                    slurm ? nullptr : &handoff, options.max_body});
   api.install(server);
 
   const int port = options.port == 0 ? server.bind_to_any_port(options.host)

@@ -73,9 +73,12 @@ int run_solve(const SolveOptions& options) {
   if (!options.resume_from.empty()) {
     nlohmann::json saved;
     try {
-      saved = nlohmann::json::parse(read_file(options.resume_from));
-    } catch (const nlohmann::json::parse_error& e) {
-      throw SolverError("cannot read the restart state " + options.resume_from + ": " + e.what());
+      saved = io::parse_document(read_file(options.resume_from));
+    } catch (const ModelError& e) {
+      // Not JSON, or beyond a limit (io/json_limits.hpp): like any restart state that does not fit.
+      const InputIssue& issue = e.issues().front();
+      throw SolverError("cannot read the restart state " + options.resume_from + ": " +
+                        (issue.pointer.empty() ? "" : issue.pointer + ": ") + issue.detail);
     }
     resume = io::state_from_json(saved, digest);
   }

@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "io/json_limits.hpp"
 #include "io/tree_builder.hpp"
 
 namespace saasgaps::io {
@@ -31,6 +32,7 @@ class SubsetBuilder final : public json::json_sax_t {
   bool end_array() override { return close(); }
 
   bool key(string_t& name) override {
+    path_.key(name);
     if (skipped_ > 0) return true;
     // The object holding this key is the innermost open container: its depth is depth_.
     if (depth_ == 1) section_ = name;
@@ -43,10 +45,7 @@ class SubsetBuilder final : public json::json_sax_t {
   }
 
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
-    // Rethrow what nlohmann::json::parse would have thrown.
-    if (const auto* p = dynamic_cast<const json::parse_error*>(&e)) throw *p;
-    if (const auto* r = dynamic_cast<const json::out_of_range*>(&e)) throw *r;
-    throw json::other_error::create(599, e.what(), nullptr);
+    rethrow_parse_exception(e);  // what nlohmann::json::parse would have thrown
   }
 
   json take() { return tree_.take(); }
@@ -54,6 +53,7 @@ class SubsetBuilder final : public json::json_sax_t {
  private:
   template <class Value>
   bool scalar(Value&& v) {
+    path_.next();
     if (skipped_ > 0) return true;
     if (skip_next_) {
       skip_next_ = false;
@@ -64,6 +64,7 @@ class SubsetBuilder final : public json::json_sax_t {
   }
 
   bool open(json container) {
+    path_.open(container.is_object());  // skipped or not: the limit is the document's
     if (skipped_ > 0 || skip_next_) {
       skip_next_ = false;
       ++skipped_;
@@ -75,6 +76,7 @@ class SubsetBuilder final : public json::json_sax_t {
   }
 
   bool close() {
+    path_.close();
     if (skipped_ > 0) {
       --skipped_;
       return true;
@@ -85,6 +87,7 @@ class SubsetBuilder final : public json::json_sax_t {
   }
 
   const MemberFilter& keep_;
+  JsonPath path_;
   TreeBuilder tree_;
   int depth_ = 0;             // containers open in the tree
   std::string section_;       // the root member being read

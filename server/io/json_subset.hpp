@@ -22,7 +22,8 @@ using MemberFilter = std::function<bool(int depth, std::string_view section, std
 
 /// The document with only the members `keep` accepts (everything when `keep` is empty). Text that is
 /// not JSON throws nlohmann::json::parse_error, as nlohmann::json::parse does; repeated keys keep
-/// the last value, as it does.
+/// the last value, as it does. A document nesting deeper than max_json_depth throws NestingTooDeep
+/// (io/json_limits.hpp).
 nlohmann::json parse_json_subset(std::string_view text, const MemberFilter& keep);
 
 }  // namespace saasgaps::io

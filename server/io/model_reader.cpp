@@ -2,6 +2,7 @@
 
 #include "errors.hpp"
 #include "io/document_kind.hpp"
+#include "io/json_limits.hpp"
 #include "io/model_stream.hpp"
 #include "io/section_reader.hpp"
 
@@ -24,6 +25,8 @@ Model parse_model(std::string_view text, std::string* digest) {
     return reader.finish();
   } catch (const NotJsonText&) {
     throw;  // no document to name
+  } catch (const NestingTooDeep&) {
+    throw;  // nor here: the pass stopped at the limit
   } catch (const ModelError& e) {
     rethrow_naming_document(e);
   }

@@ -49,13 +49,15 @@ class NotJsonText : public ModelError {
 Model read_model(const nlohmann::json& document);
 
 /// Parses JSON text into a document, for callers that need the tree itself. Throws ModelError when the text is not JSON (one issue at ""), when a number is beyond the
-/// range of a double (at the number's pointer) and when an object repeats a key (at that key).
+/// range of a double (at the number's pointer) and when an object repeats a key (at that key);
+/// NestingTooDeep (a ModelError) when it nests deeper than max_json_depth (io/json_limits.hpp).
 nlohmann::json parse_document(std::string_view text);
 
 /// Reads JSON text straight into a Model, with the checks of read_model. Text that is not JSON gives
 /// NotJsonText, one issue at pointer "" with the parser's message and byte position; a number too large for a
 /// double is reported at its own pointer; repeated keys are reported (at the repeated key's
-/// pointer) before the issues of read_model. With `digest`, also sets it to the model_digest
+/// pointer) before the issues of read_model; a document nesting deeper than max_json_depth gives
+/// NestingTooDeep alone, at the place of the limit. With `digest`, also sets it to the model_digest
 /// (io/state_codec.hpp) of the document, for restart states.
 Model parse_model(std::string_view text, std::string* digest = nullptr);
 

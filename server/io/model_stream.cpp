@@ -7,7 +7,7 @@
 #include <iterator>
 #include <utility>
 
-#include "io/json_pointer.hpp"
+#include "io/json_limits.hpp"
 #include "io/model_reader.hpp"
 #include "io/state_codec.hpp"
 #include "io/tree_builder.hpp"
@@ -53,8 +53,8 @@ std::string without_exception_tag(const char* what) {
   return text;
 }
 
-/// The SAX handler. Depth = open containers (frames_). The root object is frames_[0]; its members'
-/// values start at depth 1; items of a streamed array at depth 2.
+/// The SAX handler. Depth = open containers (path_.depth()): 1 inside the root object, so its
+/// members' values start at depth 1; items of a streamed array at depth 2.
 class ModelStream final : public json::json_sax_t {
  public:
   enum class Mode {
@@ -70,7 +70,7 @@ class ModelStream final : public json::json_sax_t {
     cursor_ = base_;
     if (section) {
       // A kept span is the value of one member of the root: pretend the root is open at its key.
-      frames_.assign(1, Frame{true, std::string(section_key(*section)), 0});
+      path_.start_at_member(std::string(section_key(*section)));
       root_is_object_ = true;
       section_ = *section;
       target_ = streams_items(*section) ? Target::items : Target::whole;
@@ -94,13 +94,12 @@ class ModelStream final : public json::json_sax_t {
   bool end_array() override { return close(); }
 
   bool key(json::string_t& name) override {
-    Frame& top = frames_.back();
-    top.key = name;
+    path_.key(name);
     if (builder_.active()) {
       if (!builder_.key(name)) repeated_here();
       return true;
     }
-    if (frames_.size() == 1 && mode_ == Mode::model) root_member(name);
+    if (path_.depth() == 1 && mode_ == Mode::model) root_member(name);
     return true;
   }
 
@@ -162,12 +161,6 @@ class ModelStream final : public json::json_sax_t {
   }
 
  private:
-  struct Frame {
-    bool is_object = false;
-    std::string key;        ///< objects: the current member
-    std::size_t index = 0;  ///< arrays: the current item
-  };
-
   /// What happens to the value of the root member being read.
   enum class Target {
     none,   ///< nothing yet / an unknown or repeated key: built and dropped
@@ -176,14 +169,10 @@ class ModelStream final : public json::json_sax_t {
     keep,   ///< skipped, its span kept for later
   };
 
-  [[nodiscard]] std::string pointer() const {
-    std::string text;
-    for (const Frame& f : frames_) text = f.is_object ? pointer_append(text, f.key) : pointer_append(text, f.index);
-    return text;
-  }
+  [[nodiscard]] std::string pointer() const { return path_.pointer(); }
 
   void repeated_here() {
-    repeated_.push_back(InputIssue{pointer(), "key " + quote_string(frames_.back().key) +
+    repeated_.push_back(InputIssue{pointer(), "key " + quote_string(path_.top().key) +
                                                   " appears more than once in this object; a JSON reader keeps "
                                                   "only one of the values, so give each key once"});
   }
@@ -231,68 +220,69 @@ class ModelStream final : public json::json_sax_t {
     if (builder_.active()) {
       builder_.value(std::forward<Value>(v));
       if (builder_.complete()) built();
-    } else if (frames_.empty()) {  // the whole document is a scalar
+    } else if (path_.depth() == 0) {  // the whole document is a scalar
       builder_.begin();
       builder_.value(std::forward<Value>(v));
       built();
-    } else if (streaming_ && frames_.size() == 2) {  // a scalar item of a streamed array
+    } else if (streaming_ && path_.depth() == 2) {  // a scalar item of a streamed array
       builder_.begin();
       builder_.value(std::forward<Value>(v));
       built();
-    } else if (frames_.size() == 1 && mode_ == Mode::model) {
+    } else if (path_.depth() == 1 && mode_ == Mode::model) {
       begin_member_value(false, false);
       builder_.value(std::forward<Value>(v));
       built();
     }
-    next_item();
+    path_.next();
     return true;
   }
 
   bool open(bool is_object) {
+    // Throws NestingTooDeep one level past the limit, before anything is built.
+    const std::size_t depth = path_.depth();
+    path_.open(is_object);
     if (builder_.active()) {
       builder_.start(is_object ? json::object() : json::array());
-    } else if (frames_.empty()) {
+    } else if (depth == 0) {
       if (is_object && mode_ == Mode::model) {
         root_is_object_ = true;
       } else {  // the document itself is built
         builder_.begin();
         builder_.start(is_object ? json::object() : json::array());
       }
-    } else if (streaming_ && frames_.size() == 2) {
+    } else if (streaming_ && depth == 2) {
       builder_.begin();
       builder_.start(is_object ? json::object() : json::array());
-    } else if (frames_.size() == 1 && !streaming_) {
+    } else if (depth == 1 && !streaming_) {
       begin_member_value(true, is_object);
       if (builder_.active()) builder_.start(is_object ? json::object() : json::array());
     }
-    frames_.push_back(Frame{is_object, {}, 0});
     return true;
   }
 
   bool close() {
-    frames_.pop_back();
+    path_.close();
     if (builder_.active()) {
       builder_.end();
       if (builder_.complete()) built();
-    } else if (streaming_ && frames_.size() == 1) {  // the streamed array ends
+    } else if (streaming_ && path_.depth() == 1) {  // the streamed array ends
       streaming_ = false;
       const auto k = static_cast<std::size_t>(section_);
       if (digest_) dumps_[k] += "]";
       reader_->end_items(section_, items_);
       items_ = 0;
       done_[k] = true;
-    } else if (target_ == Target::keep && frames_.size() == 1) {
+    } else if (target_ == Target::keep && path_.depth() == 1) {
       kept_[static_cast<std::size_t>(section_)] = {keep_from_, static_cast<std::size_t>(cursor_ - base_)};
       target_ = Target::none;
     }
-    next_item();
     return true;
   }
 
   /// A value that the builder started is complete: deliver it.
   void built() {
     json value = builder_.take();
-    if (frames_.empty() || mode_ == Mode::tree) {
+    if (path_.depth() == 0 || mode_ == Mode::tree) {
       tree_ = std::move(value);
       return;
     }
@@ -314,10 +304,6 @@ class ModelStream final : public json::json_sax_t {
       kept_scalar_[k] = true;
     }
     target_ = Target::none;
-  }
-
-  void next_item() {
-    if (!frames_.empty() && !frames_.back().is_object) ++frames_.back().index;
   }
 
   /// model_digest: the fingerprint of the compact dump of the root without title, description and
@@ -351,7 +337,7 @@ class ModelStream final : public json::json_sax_t {
   const char* base_ = nullptr;
   const char* cursor_ = nullptr;
 
-  std::vector<Frame> frames_;
+  JsonPath path_;
   TreeBuilder builder_;
   json tree_;
   std::optional<InputIssue> error_;

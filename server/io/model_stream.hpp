@@ -12,6 +12,8 @@
 /// - The pass tracks the JSON Pointer of the value being parsed, so a repeated key and a number
 ///   beyond the range of a double are reported where they are. (nlohmann's own tree keeps only the
 ///   last of repeated keys and forgets where a parse error was.)
+/// - The pass stops with NestingTooDeep at the first container nested deeper than max_json_depth
+///   (io/json_limits.hpp), before anything of it is built.
 
 #include <optional>
 #include <string>

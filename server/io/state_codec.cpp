@@ -4,6 +4,7 @@
 
 #include "errors.hpp"
 #include "io/history_json.hpp"
+#include "io/json_limits.hpp"
 
 namespace saasgaps::io {
 
@@ -146,14 +147,18 @@ std::vector<std::uint8_t> state_to_cbor(const RestartState& state, const std::st
   return json::to_cbor(state_to_json(state, digest));
 }
 
-RestartState state_from_cbor(const std::vector<std::uint8_t>& bytes, const std::string& expected_digest) {
-  json document;
+json restart_state_tree(std::span<const std::uint8_t> cbor) {
   try {
-    document = json::from_cbor(bytes);
+    return parse_cbor(cbor);
   } catch (const json::exception& e) {
     throw SolverError(std::string("malformed restart state: ") + e.what());
+  } catch (const NestingTooDeep& e) {
+    throw SolverError("malformed restart state: " + e.issues().front().pointer + ": " + e.issues().front().detail);
   }
-  return state_from_json(document, expected_digest);
+}
+
+RestartState state_from_cbor(const std::vector<std::uint8_t>& bytes, const std::string& expected_digest) {
+  return state_from_json(restart_state_tree(bytes), expected_digest);
 }
 
 }  // namespace saasgaps::io

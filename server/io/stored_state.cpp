@@ -82,12 +82,7 @@ RestartState decode_stored_state(std::span<const std::uint8_t> bytes, const std:
   inflateEnd(&stream);
   if (status != Z_STREAM_END) throw SolverError("malformed restart state: the compressed data is damaged");
 
-  json document;
-  try {
-    document = json::from_cbor(cbor);
-  } catch (const json::exception& e) {
-    throw SolverError(std::string("malformed restart state: ") + e.what());
-  }
+  json document = restart_state_tree(cbor);
   if (document.is_object() && document.contains("displacement") && document["displacement"].is_binary()) {
     document["displacement"] = unshuffled(document["displacement"].get_binary());
   }

@@ -11,6 +11,7 @@
 
 #include "errors.hpp"
 #include "io/json_pointer.hpp"
+#include "io/json_limits.hpp"
 #include "io/json_subset.hpp"
 #include "io/json_text.hpp"
 #include "io/model_reader.hpp"
@@ -19,6 +20,7 @@
 #include "plot/plot_request.hpp"
 #include "service/assembly_upload.hpp"
 #include "service/guarded_server.hpp"
+#include "service/job_path.hpp"
 #include "service/log.hpp"
 #include "service/metrics.hpp"
 #include "service/problem.hpp"
@@ -44,18 +46,6 @@ std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h = 146959810393466560
 /// FNV-1a of a request body: tells an idempotent replay from a different request under the same key.
 std::string body_digest(std::string_view body) { return std::to_string(fnv1a(body)); }
 
-std::int64_t job_id(const httplib::Request& req) {
-  std::int64_t id = 0;
-  const std::string text = req.matches[1];
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), id);
-  // The route matched digits only, so the one failure is a number beyond int64: no such job.
-  if (error != std::errc() || end != text.data() + text.size()) {
-    throw HttpError(404, "Not Found", "no job " + text + " (job ids run from 1 to " +
-                                          std::to_string(std::numeric_limits<std::int64_t>::max()) + ")");
-  }
-  return id;
-}
-
 /// An optional integer query parameter within [low, high]; 400 naming it otherwise.
 std::optional<std::int64_t> integer_parameter(const httplib::Request& req, const std::string& name,
                                               std::int64_t low, std::int64_t high) {
@@ -75,8 +65,11 @@ std::optional<std::int64_t> integer_parameter(const httplib::Request& req, const
 /// the whole job unreadable).
 json stored_json(const std::optional<std::string>& text) {
   if (!text) return nullptr;
-  json value = json::parse(*text, nullptr, false);
-  return value.is_discarded() ? json(nullptr) : value;
+  try {
+    return io::parse_document(*text);
+  } catch (const ModelError&) {
+    return nullptr;
+  }
 }
 
 json job_json(const JobRecord& j) {
@@ -117,13 +110,10 @@ json job_list_item(const JobRecord& j) {
 }
 
 /// The names of the model's units (its top-level "units" object; {} when it names none), read
-/// from the stored model text without building the rest of it: the parser's callback drops every
-/// other top-level member as it goes.
+/// from the stored model text without building the rest of it.
 json model_units(const std::string& model_text) {
-  const json model = json::parse(model_text, [](int depth, json::parse_event_t event, json& parsed) {
-    if (depth == 1 && event == json::parse_event_t::key) return parsed == "units";
-    return true;
-  });
+  const json model =
+      io::parse_json_subset(model_text, [](int depth, std::string_view, std::string_view key) { return depth > 1 || key == "units"; });
   const auto units = model.find("units");
   return units != model.end() && units->is_object() ? *units : json::object();
 }
@@ -133,14 +123,10 @@ void send_json(httplib::Response& res, int status, const json& body) {
   res.set_content(io::json_text(body), "application/json");
 }
 
-/// Reads a JSON request body; 400 when it is not JSON.
-json json_body(const httplib::Request& req) {
-  json body = json::parse(req.body, nullptr, false);
-  if (body.is_discarded()) {
-    throw HttpError(400, "Bad Request", "the request body is not JSON");
-  }
-  return body;
-}
+/// Reads a JSON request body as models are read (io::parse_document): 400 when it is not JSON
+/// (io::NotJsonText), 422 naming the pointer of a repeated key, of a number beyond a double, or of
+/// nesting beyond io::max_json_depth.
+json json_body(const httplib::Request& req) { return io::parse_document(req.body); }
 
 /// The resume body {tensile_schedule?, max_iterations?, extrapolation_factor?}: every problem is
 /// reported with its pointer, like a model.
@@ -201,7 +187,7 @@ HttpApi::HttpApi(JobStore& store, EventHub& hub, ApiOptions options)
     : store_(store),
       hub_(hub),
       options_(std::move(options)),
-      guard_({options_.token, options_.listen_host, options_.allowed_hosts}) {}
+      guard_({options_.token, options_.listen_host, options_.allowed_hosts, options_.max_body}) {}
 
 namespace {
 
@@ -250,11 +236,16 @@ json stored_result(JobStore& store, std::int64_t id, const io::MemberFilter& mem
   if (!result) {
     throw HttpError(404, "Not Found", "job " + std::to_string(id) + " has no result yet (" + to_string(store.get(id).state) + ")");
   }
+  const auto damaged = [id](const std::string& what) {
+    return HttpError(500, "Internal Server Error", "the stored result of job " + std::to_string(id) + " is damaged (" +
+                                                       what + "); resume the job to compute it again");
+  };
   try {
     return io::parse_json_subset(*result, members);
   } catch (const json::exception&) {
-    throw HttpError(500, "Internal Server Error", "the stored result of job " + std::to_string(id) +
-                                                      " is damaged (not JSON); resume the job to compute it again");
+    throw damaged("not JSON");
+  } catch (const io::NestingTooDeep& e) {  // results are checked when stored: this is damage too
+    throw damaged(e.issues().front().pointer + ": " + e.issues().front().detail);
   }
 }
 
@@ -380,10 +371,10 @@ void HttpApi::install(httplib::Server& server) {
   server.Post("/v1/imports", [this](const httplib::Request& req, httplib::Response& res) { import_assembly(req, res); });
   server.Get("/v1/jobs", [this](const httplib::Request& req, httplib::Response& res) { list(req, res); });
   server.Get(R"(/v1/jobs/(\d+))", [this](const httplib::Request& req, httplib::Response& res) {
-    send_json(res, 200, job_json(store_.get(job_id(req))));
+    send_json(res, 200, job_json(store_.get(job_in_path(req))));
   });
   server.Get(R"(/v1/jobs/(\d+)/iterations)", [this](const httplib::Request& req, httplib::Response& res) {
-    const std::int64_t id = job_id(req);
+    const std::int64_t id = job_in_path(req);
     const auto after = integer_parameter(req, "after", 0, 1'000'000'000).value_or(0);
     std::string rows;
     for (const std::string& row : store_.iterations(id, static_cast<int>(after))) {
@@ -394,7 +385,7 @@ void HttpApi::install(httplib::Server& server) {
   });
   server.Get(R"(/v1/jobs/(\d+)/events)", [this](const httplib::Request& req, httplib::Response& res) { events(req, res); });
   server.Get(R"(/v1/jobs/(\d+)/result)", [this](const httplib::Request& req, httplib::Response& res) {
-    const std::int64_t id = job_id(req);
+    const std::int64_t id = job_in_path(req);
     std::shared_ptr<JobStore::StoredResult> result = store_.open_result(id);
     if (!result) {
       throw HttpError(404, "Not Found", "job " + std::to_string(id) + " has no result yet (" +
@@ -418,15 +409,15 @@ void HttpApi::install(httplib::Server& server) {
         });
   });
   server.Get(R"(/v1/jobs/(\d+)/model)", [this](const httplib::Request& req, httplib::Response& res) {
-    std::string model = store_.model(job_id(req));
+    std::string model = store_.model(job_in_path(req));
     if (not_modified(req, res, entity_tag(model))) return;
     res.set_content(std::move(model), "application/json");
   });
   server.Get(R"(/v1/jobs/(\d+)/units)", [this](const httplib::Request& req, httplib::Response& res) {
-    send_json(res, 200, model_units(store_.model(job_id(req))));
+    send_json(res, 200, model_units(store_.model(job_in_path(req))));
   });
   server.Post(R"(/v1/jobs/(\d+)/cancel)", [this](const httplib::Request& req, httplib::Response& res) {
-    const JobRecord job = store_.cancel(job_id(req));
+    const JobRecord job = store_.cancel(job_in_path(req));
     log_info("job_cancel_requested", {{"job", job.id}, {"request_id", res.get_header_value("X-Request-Id")},
                                       {"state", to_string(job.state)}});
     send_json(res, 202, job_json(job));
@@ -434,11 +425,11 @@ void HttpApi::install(httplib::Server& server) {
   });
   server.Post(R"(/v1/jobs/(\d+)/resume)", [this](const httplib::Request& req, httplib::Response& res) { resume(req, res); });
   server.Delete(R"(/v1/jobs/(\d+))", [this](const httplib::Request& req, httplib::Response& res) {
-    store_.remove(job_id(req));
+    store_.remove(job_in_path(req));
     res.status = 204;
   });
   server.Get(R"(/v1/jobs/(\d+)/result\.vtu)", [this](const httplib::Request& req, httplib::Response& res) {
-    const std::int64_t id = job_id(req);
+    const std::int64_t id = job_in_path(req);
     if (not_modified(req, res, result_tag(store_, id, 0, "vtu"))) return;
     const json result = stored_result(store_, id);
     if (result.value("status", "") == "failed") {
@@ -454,7 +445,7 @@ void HttpApi::install(httplib::Server& server) {
     res.set_content(io::result_to_vtu(result, format), "application/xml");
   });
   server.Get(R"(/v1/jobs/(\d+)/plots/(\w+)\.(png|svg|csv))", [this](const httplib::Request& req, httplib::Response& res) {
-    const std::int64_t id = job_id(req);
+    const std::int64_t id = job_in_path(req);
     const plot::PlotRequest request = plot_request(req);
     try {
       plot::require_plot_name(request.name);
@@ -540,7 +531,7 @@ void HttpApi::list(const httplib::Request& req, httplib::Response& res) {
 }
 
 void HttpApi::resume(const httplib::Request& req, httplib::Response& res) {
-  const std::int64_t id = job_id(req);
+  const std::int64_t id = job_in_path(req);
   RunSettings changes;
   if (!req.body.empty()) {
     changes = resume_changes(json_body(req), io::parse_model(store_.model(id)).gaps.has_value());
@@ -553,7 +544,7 @@ void HttpApi::resume(const httplib::Request& req, httplib::Response& res) {
 }
 
 void HttpApi::events(const httplib::Request& req, httplib::Response& res) {
-  const std::int64_t id = job_id(req);
+  const std::int64_t id = job_in_path(req);
   (void)store_.get(id);  // 404 before a stream is opened
   if (++open_streams_ > options_.max_streams) {
     --open_streams_;

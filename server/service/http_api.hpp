@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -25,6 +26,7 @@ struct ApiOptions {
   std::string listen_host = "127.0.0.1";   ///< a Host name always accepted
   std::vector<std::string> allowed_hosts;  ///< more Host names accepted without a token
   ModelHandoff* handoff = nullptr;  ///< where submitted models wait for the worker pool (local executor)
+  std::size_t max_body = std::numeric_limits<std::size_t>::max();  ///< --max-body: the guard's 413
 };
 
 class HttpApi {

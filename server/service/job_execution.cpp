@@ -68,11 +68,11 @@ void note_iteration(std::int64_t job, const std::string& row) {
   int attempt = 1;
   int iteration = 0;
   try {
-    const nlohmann::json j = nlohmann::json::parse(row);
+    const nlohmann::json j = io::parse_document(row);
     seconds = j.value("seconds", 0.0);
     attempt = j.value("attempt", 1);
     iteration = j.value("iteration", 0);
-  } catch (const nlohmann::json::exception&) {
+  } catch (const std::exception&) {  // nlohmann's for a figure of the wrong type, ModelError for the text
     // The row is committed already; a line without its figures is better than none.
   }
   Metrics::global().count_iteration(seconds);

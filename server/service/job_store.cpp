@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/json_text.hpp"
+#include "io/model_reader.hpp"
 
 namespace saasgaps::service {
 
@@ -103,7 +104,12 @@ json settings_json(const RunSettings& s) {
 RunSettings parse_settings(const std::string& text) {
   // Written by settings_json; anything else is damage, read as "no changes" rather than an error
   // on every read of the job.
-  const json j = json::parse(text, nullptr, false);
+  json j;
+  try {
+    j = io::parse_document(text);
+  } catch (const ModelError&) {
+    // damage: j stays null
+  }
   RunSettings s;
   if (!j.is_object()) return s;
   if (j.contains("tensile_schedule")) s.tensile_schedule = j["tensile_schedule"].get<std::vector<double>>();

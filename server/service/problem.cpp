@@ -1,6 +1,7 @@
 #include "service/problem.hpp"
 
 #include "errors.hpp"
+#include "io/json_limits.hpp"
 #include "io/json_text.hpp"
 #include "io/model_reader.hpp"
 #include "service/job_store.hpp"
@@ -46,6 +47,12 @@ void respond_to_exception(const httplib::Request& req, httplib::Response& res, s
     std::string detail = e.issues().front().detail;
     if (const auto colon = detail.find(": "); colon != std::string::npos) detail.erase(0, colon + 2);
     write_problem(res, 400, "Bad Request", "the request body is not JSON: " + detail, nullptr);
+  } catch (const io::NestingTooDeep& e) {
+    // 422, not 413: the body is within --max-body and is JSON; one of its values breaks a documented
+    // rule of every document (docs/operations.md, "Limits"), at a place the client can find.
+    const InputIssue& issue = e.issues().front();
+    write_problem(res, 422, "Document nested too deeply", issue.pointer + ": " + issue.detail,
+                  json::array({{{"pointer", issue.pointer}, {"detail", issue.detail}}}));
   } catch (const ModelError& e) {
     json errors = json::array();
     for (const InputIssue& issue : e.issues()) errors.push_back({{"pointer", issue.pointer}, {"detail", issue.detail}});

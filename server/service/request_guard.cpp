@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <cstdint>
 #include <regex>
 
 #include "service/guarded_server.hpp"
@@ -25,6 +27,15 @@ bool same_secret(const std::string& given, const std::string& expected) {
     difference |= static_cast<unsigned char>(expected[i] ^ (i < given.size() ? given[i] : 0));
   }
   return difference == 0;
+}
+
+/// Whether a Content-Length value is at most `limit`. Text that is not a decimal count is left to
+/// cpp-httplib (400); a count beyond 64 bits is beyond any limit.
+bool fits(const std::string& length, std::size_t limit) {
+  std::uint64_t bytes = 0;
+  const auto [end, error] = std::from_chars(length.data(), length.data() + length.size(), bytes);
+  if (error == std::errc::result_out_of_range) return false;
+  return error != std::errc() || end != length.data() + length.size() || bytes <= limit;
 }
 
 bool is_public(const std::string& path) {
@@ -131,6 +142,14 @@ bool RequestGuard::admit(const httplib::Request& req, httplib::Response& res) co
   }
   if (lengths.first != lengths.second && req.has_header("Transfer-Encoding")) {
     refuse(res, 400, "Bad Request", "the request has both Content-Length and Transfer-Encoding; send one of them");
+    return false;
+  }
+  if (lengths.first != lengths.second && !fits(lengths.first->second, options_.max_body)) {
+    // cpp-httplib would skip a body beyond its limit by reading it, until the body deadline closes
+    // the connection without an answer (issue 17: a Content-Length of 10^12).
+    refuse(res, 413, "Content Too Large",
+           "the request body of Content-Length " + lengths.first->second + " bytes is larger than the " +
+               std::to_string(options_.max_body) + " bytes the server accepts (--max-body)");
     return false;
   }
   if (req.get_header_value_count("Host") > 1) {

@@ -2,7 +2,8 @@
 /// Checks every request's head before routing (cpp-httplib's pre-routing handler), in this order:
 /// 1. message framing: two Content-Length values that differ, or Content-Length together with
 ///    Transfer-Encoding, are refused (400, RFC 9112 section 6.3): a proxy and this server could
-///    otherwise read different requests out of the same bytes;
+///    otherwise read different requests out of the same bytes; a Content-Length beyond --max-body
+///    is refused (413) before a byte of the body is read;
 /// 2. Host: without a token the server answers only to the names it listens on (loopback names, the
 ///    --host address, and --allow-host names), so a DNS-rebinding page cannot reach it (421);
 /// 3. Origin: a state-changing request (POST, PUT, PATCH, DELETE) whose Origin is not this server is
@@ -18,6 +19,8 @@
 
 #include <httplib.h>
 
+#include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +31,7 @@ struct GuardOptions {
   std::optional<std::string> token;
   std::string listen_host = "127.0.0.1";
   std::vector<std::string> allowed_hosts;  ///< extra Host names accepted without a token
+  std::size_t max_body = std::numeric_limits<std::size_t>::max();  ///< --max-body, bytes
 };
 
 class RequestGuard {

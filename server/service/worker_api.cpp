@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "service/job_path.hpp"
 #include "service/problem.hpp"
 #include "service/worker_protocol.hpp"
 
@@ -12,14 +13,6 @@ namespace saasgaps::service {
 namespace {
 
 namespace protocol = worker_protocol;
-
-std::int64_t path_job(const httplib::Request& req) {
-  std::int64_t id = 0;
-  const std::string text = req.matches[1];
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), id);
-  if (error != std::errc() || end != text.data() + text.size()) throw JobNotFound(0);
-  return id;
-}
 
 Lease request_lease(const httplib::Request& req) {
   const std::optional<Lease> lease = protocol::parse_lease(req.get_header_value(protocol::lease_header));
@@ -48,7 +41,7 @@ void install_worker_api(httplib::Server& server, JobStore& store, EventHub& hub)
   server.Post(R"(/v1/jobs/(\d+)/lease)", [&store, &hub](const httplib::Request& req, httplib::Response& res) {
     const std::string who = req.get_header_value("User-Agent");
     const std::string worker = "worker " + req.remote_addr + (who.empty() ? "" : " " + who);
-    const ClaimedJob claimed = store.claim_job(path_job(req), worker);
+    const ClaimedJob claimed = store.claim_job(job_in_path(req), worker);
     note_run_started(claimed, worker);
     res.status = 201;
     res.set_content(nlohmann::json{{"attempt", claimed.lease.attempt}, {"secret", claimed.lease.secret}}.dump(),
@@ -56,10 +49,10 @@ void install_worker_api(httplib::Server& server, JobStore& store, EventHub& hub)
     hub.notify();
   });
   server.Get(R"(/v1/jobs/(\d+)/work)", [&store](const httplib::Request& req, httplib::Response& res) {
-    res.set_content(protocol::encode_work(store.work(path_job(req), request_lease(req))), protocol::cbor_type);
+    res.set_content(protocol::encode_work(store.work(job_in_path(req), request_lease(req))), protocol::cbor_type);
   });
   server.Post(R"(/v1/jobs/(\d+)/work/iterations)", [&store, &hub](const httplib::Request& req, httplib::Response& res) {
-    const std::int64_t id = path_job(req);
+    const std::int64_t id = job_in_path(req);
     const Lease lease = request_lease(req);
     const protocol::Iteration it = decoded(req, protocol::decode_iteration);
     store.record_iteration(id, it.iteration, it.row, it.state, {}, &lease);
@@ -69,7 +62,7 @@ void install_worker_api(httplib::Server& server, JobStore& store, EventHub& hub)
                     "application/json");
   });
   server.Post(R"(/v1/jobs/(\d+)/work/finish)", [&store, &hub](const httplib::Request& req, httplib::Response& res) {
-    const std::int64_t id = path_job(req);
+    const std::int64_t id = job_in_path(req);
     const Lease lease = request_lease(req);
     const protocol::Finish f = decoded(req, protocol::decode_finish);
     store.finish(id, f.state, f.result, f.message, f.error, {}, &lease);

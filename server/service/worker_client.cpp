@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "io/model_reader.hpp"
 #include "service/worker_protocol.hpp"
 
 namespace saasgaps::service {
@@ -16,6 +17,17 @@ namespace {
 
 namespace protocol = worker_protocol;
 using nlohmann::json;
+
+/// A JSON answer of the service, read within the limits of io/json_limits.hpp; a broken one is a
+/// failure of the run (exit 1), not a bad model.
+json answer_json(const std::string& body) {
+  try {
+    return io::parse_document(body);
+  } catch (const ModelError& e) {
+    throw std::runtime_error("the service's answer is not JSON the worker can read: " + e.issues().front().pointer +
+                             " " + e.issues().front().detail);
+  }
+}
 
 /// The service, with bounded retries: connection failures and 5xx answers are tried again after a
 /// growing pause (doubling, at most 5 s) until options.retry_for has passed.
@@ -69,7 +81,12 @@ class ServiceConnection {
 
  private:
   static std::string problem_detail(const std::string& body) {
-    const json j = json::parse(body, nullptr, false);
+    json j;
+    try {
+      j = io::parse_document(body);
+    } catch (const ModelError&) {
+      return body.substr(0, 200);
+    }
     if (j.is_object() && j.contains("detail") && j["detail"].is_string()) return j["detail"];
     return body.substr(0, 200);
   }
@@ -85,7 +102,7 @@ class HttpSink final : public RunSink {
   HttpSink(ServiceConnection& service, std::string job_path) : service_(service), path_(std::move(job_path)) {}
 
   void iteration(int iteration, const std::string& row, const std::vector<std::uint8_t>& state) override {
-    const json answer = json::parse(service_.send("POST", path_ + "/work/iterations",
+    const json answer = answer_json(service_.send("POST", path_ + "/work/iterations",
                                                   protocol::encode_iteration(iteration, row, state)));
     stop_ = answer.value("stop", false);
     service_.log("iteration " + std::to_string(iteration) + " committed" + (stop_.load() ? "; a stop was requested" : ""));
@@ -116,7 +133,7 @@ int run_worker(const WorkerOptions& options) {
     if (options.lease) {
       lease = *options.lease;
     } else {
-      const json granted = json::parse(service.send("POST", path + "/lease", "", "application/json"));
+      const json granted = answer_json(service.send("POST", path + "/lease", "", "application/json"));
       lease = {granted.at("attempt").get<int>(), granted.at("secret").get<std::string>()};
     }
     service.set_lease(lease);

@@ -3,6 +3,9 @@
 #include <charconv>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <string_view>
+
+#include "io/json_limits.hpp"
 
 namespace saasgaps::service::worker_protocol {
 
@@ -10,10 +13,29 @@ using nlohmann::json;
 
 namespace {
 
+/// The body as a tree, within io::max_json_depth (the decoder recurses per level: io/json_limits.hpp).
+/// Throws io::NestingTooDeep (422) past the limit.
 json decode(const std::string& body) {
-  json j = json::from_cbor(body, true, false);
-  if (j.is_discarded() || !j.is_object()) throw std::invalid_argument("the body is not a CBOR map");
+  json j;
+  try {
+    j = io::parse_cbor(std::string_view(body));
+  } catch (const json::exception&) {
+    throw std::invalid_argument("the body is not a CBOR map");
+  }
+  if (!j.is_object()) throw std::invalid_argument("the body is not a CBOR map");
   return j;
+}
+
+/// Whether the JSON text in the body's member `name` is JSON within io::max_json_depth: the service
+/// stores it and serves it (and parses it for plots), so it must be as good as what it writes itself.
+void require_json(const std::string& text, const char* name) {
+  try {
+    if (io::accept_json(text)) return;
+  } catch (const io::NestingTooDeep& e) {
+    const InputIssue& issue = e.issues().front();
+    throw io::NestingTooDeep({{issue.pointer, std::string("in the JSON text of the body's \"") + name + "\": " + issue.detail}});
+  }
+  throw std::invalid_argument(std::string("the body's \"") + name + "\" is not JSON");
 }
 
 template <class T>
@@ -84,7 +106,7 @@ Iteration decode_iteration(const std::string& body) {
   Iteration it{field<int>(j, "iteration"), field<std::string>(j, "row"), bytes(j, "state")};
   if (it.iteration < 1) throw std::invalid_argument("the body's \"iteration\" must be >= 1");
   // The row is stored and served as JSON text: it must be JSON.
-  if (!json::accept(it.row)) throw std::invalid_argument("the body's \"row\" is not JSON");
+  require_json(it.row, "row");
   return it;
 }
 
@@ -110,7 +132,7 @@ Finish decode_finish(const std::string& body) {
   finish.result = optional_text(j, "result");
   finish.message = optional_text(j, "message");
   finish.error = optional_text(j, "error");
-  if (finish.result && !json::accept(*finish.result)) throw std::invalid_argument("the body's \"result\" is not JSON");
+  if (finish.result) require_json(*finish.result, "result");
   return finish;
 }
 

@@ -48,6 +48,7 @@ struct Finish {
 std::string encode_finish(const Finish& finish);
 Finish decode_finish(const std::string& body);
 
-/// A body that does not decode: std::invalid_argument naming the field.
+/// A body that does not decode: std::invalid_argument naming the field. A body (or the JSON text of
+/// a row or result in it) nesting deeper than io::max_json_depth: io::NestingTooDeep.
 
 }  // namespace saasgaps::service::worker_protocol

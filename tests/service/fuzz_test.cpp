@@ -1,6 +1,7 @@
 // Fuzzing with a fixed seed: 1,000 model documents mutated from the examples, posted as jobs, and
-// 1,000 raw HTTP requests built from mangled parts. Whatever arrives: no crash, no 5xx, no hang,
-// and every refusal of a model names its places with JSON Pointers.
+// 1,000 raw HTTP requests built from mangled parts; then models and resume bodies with deep and wide
+// nesting spliced in, and multipart imports with fuzzed parts. Whatever arrives: no crash, no 5xx,
+// no hang, and every refusal of a document names its places with JSON Pointers.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -64,6 +65,105 @@ json mutate(json document, std::mt19937& random) {
     }
   }
   return document;
+}
+
+/// Every error of a 422 has a pointer and a detail.
+void expect_pointed_problem(const httplib::Result& r, const std::string& sent) {
+  ASSERT_EQ(r->status, 422) << r->body << "\n" << sent.substr(0, 300);
+  const json problem = json::parse(r->body);
+  ASSERT_FALSE(problem["errors"].empty()) << r->body;
+  for (const json& e : problem["errors"]) {
+    ASSERT_TRUE(e["pointer"].is_string()) << r->body;
+    ASSERT_FALSE(e["detail"].get<std::string>().empty()) << r->body;
+  }
+}
+
+/// Deep or wide JSON text: nested arrays, objects or both, `levels` deep (open only, when
+/// `unclosed`), or an array of `levels` empty containers.
+std::string nesting(std::mt19937& random, int levels) {
+  const int kind = std::uniform_int_distribution<int>(0, 4)(random);
+  std::string text;
+  if (kind == 4) {  // wide: [[],{},[],...]
+    text = "[";
+    for (int k = 0; k < levels; ++k) text += k % 2 == 0 ? "[]," : "{\"k\":{}},";
+    text.back() = ']';
+    return text;
+  }
+  std::string closing;
+  for (int k = 0; k < levels; ++k) {
+    const bool object = kind == 1 || (kind == 2 && random() % 2 == 0);
+    text += object ? "{\"n\":" : "[";
+    closing += object ? '}' : ']';
+  }
+  if (kind == 3) return text;  // unclosed: not JSON, but the limit may come first
+  return text + "0" + std::string(closing.rbegin(), closing.rend());
+}
+
+int random_levels(std::mt19937& random) {
+  static const int levels[] = {1, 2, 10, 60, 61, 62, 63, 64, 65, 100, 1000, 100000};
+  return levels[random() % std::size(levels)];
+}
+
+TEST_F(Fuzz, DeepAndWideNestingInModelsResumesAndImports) {
+  ServerProcess server(database(), {"--header-timeout", "2", "--max-body", "4194304"});
+  httplib::Client client = server.client();
+  std::mt19937 random(1977);
+  const json seed = json::parse(example_text("report-problem1.json"));
+  std::vector<json::json_pointer> places;
+  collect_pointers(seed, json::json_pointer(), places);
+  const std::string marker = "\"@nesting@\"";
+  for (int k = 0; k < 300; ++k) {
+    // A value of the model (or a new member of an object) becomes the nesting.
+    json document = seed;
+    const json::json_pointer place = places[random() % places.size()];
+    if (place.empty()) continue;
+    json& parent = document[place.parent_pointer()];
+    if (parent.is_object() && random() % 2 == 0) {
+      parent["x" + std::to_string(k)] = "@nesting@";
+    } else {
+      document[place] = "@nesting@";
+    }
+    std::string text = document.dump();
+    text.replace(text.find(marker), marker.size(), nesting(random, random_levels(random)));
+    const httplib::Result r = client.Post("/v1/jobs", text, "application/json");
+    ASSERT_TRUE(r) << "no answer to nesting " << k << " at " << place.to_string();
+    ASSERT_LT(r->status, 500) << r->body;
+    if (r->status == 202) {
+      client.Post("/v1/jobs/" + json::parse(r->body)["id"].dump() + "/cancel", "", "application/json");
+    } else if (r->status != 400) {  // 400: unclosed nesting within the limit is not JSON
+      expect_pointed_problem(r, text);
+    }
+  }
+  // Resume bodies: the first job exists (or a 404 answers first; either way not a crash).
+  for (int k = 0; k < 50; ++k) {
+    const std::string body = "{\"tensile_schedule\": " + nesting(random, random_levels(random)) + "}";
+    const httplib::Result r = client.Post("/v1/jobs/1/resume", body, "application/json");
+    ASSERT_TRUE(r) << "no answer to resume body " << k;
+    ASSERT_LT(r->status, 500) << r->body;
+  }
+  // Multipart imports: the assembly part mutated or replaced by nesting, the mesh part present,
+  // missing or misnamed, extra parts with odd names.
+  const json assembly = json::parse(example_text("assemblies/ring-fit.assembly.json"));
+  const std::string geo = example_text("assemblies/ring-fit.geo");
+  for (int k = 0; k < 60; ++k) {
+    httplib::MultipartFormDataItems parts;
+    const int shape = static_cast<int>(random() % 4);
+    const std::string part = shape == 0 ? nesting(random, random_levels(random))
+                             : shape == 1 ? std::string(random() % 200, '\xFF')
+                                          : mutate(assembly, random).dump();
+    parts.push_back({random() % 10 == 0 ? "assembly2" : "assembly", part, "", "application/json"});
+    switch (random() % 4) {
+      case 0: break;  // no mesh
+      case 1: parts.push_back({"mesh", geo, "other.geo", "text/plain"}); break;
+      default: parts.push_back({"mesh", geo, "ring-fit.geo", "text/plain"}); break;
+    }
+    if (random() % 3 == 0) parts.push_back({"extra", nesting(random, random_levels(random)), "../x.json", ""});
+    const httplib::Result r = client.Post("/v1/imports", parts);
+    ASSERT_TRUE(r) << "no answer to import " << k;
+    ASSERT_LT(r->status, 500) << r->body << "\n" << part.substr(0, 300);
+    if (r->status == 422) expect_pointed_problem(r, part);
+  }
+  EXPECT_EQ(get_json(client, "/healthz")["status"], "ok");
 }
 
 TEST_F(Fuzz, ThousandMutatedModelsAndThousandRawRequests) {

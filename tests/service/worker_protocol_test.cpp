@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "io/json_limits.hpp"
 #include "service/server_process.hpp"
 #include "service/slurm_executor.hpp"
 #include "service/subprocess.hpp"
@@ -46,6 +47,29 @@ TEST(WorkerProtocol, IterationsAndFinishesRoundTripTheirBytes) {
   EXPECT_THROW(protocol::decode_iteration(protocol::encode_iteration(0, "{}", state)), std::invalid_argument);
   EXPECT_THROW(protocol::decode_iteration(protocol::encode_iteration(1, "{not json", state)), std::invalid_argument);
   EXPECT_THROW(protocol::decode_iteration("\xa0"), std::invalid_argument);  // an empty CBOR map
+}
+
+/// Issue 17: nlohmann's CBOR decoder recurses once per level; 10^5 levels overflowed the stack.
+TEST(WorkerProtocol, DeepBodiesAreRefusedAtTheirPointer) {
+  // {"iteration": 1, "row": "{}", "state": [[[...1...]]]} with 10^5 arrays, written byte by byte.
+  std::string body = "\xA3\x69iteration\x01\x63row\x62{}\x65state";
+  body += std::string(100000, '\x81') + '\x01';
+  try {
+    (void)protocol::decode_iteration(body);
+    ADD_FAILURE() << "a body nested 10^5 deep was accepted";
+  } catch (const io::NestingTooDeep& e) {
+    ASSERT_EQ(e.issues().size(), 1u);
+    std::string pointer = "/state";
+    for (int k = 0; k < 63; ++k) pointer += "/0";
+    EXPECT_EQ(e.issues().front().pointer, pointer);
+  }
+  // The JSON text of a row or a result is stored and served: it is held to the same limit.
+  const std::string deep_text = std::string(100000, '[') + std::string(100000, ']');
+  EXPECT_THROW(protocol::decode_iteration(protocol::encode_iteration(1, deep_text, {})), io::NestingTooDeep);
+  EXPECT_THROW(protocol::decode_finish(protocol::encode_finish({JobState::converged, deep_text, {}, {}})),
+               io::NestingTooDeep);
+  const std::string at_limit = std::string(64, '[') + std::string(64, ']');
+  EXPECT_EQ(protocol::decode_iteration(protocol::encode_iteration(1, at_limit, {})).row, at_limit);
 }
 
 TEST(SlurmBatchScript, EveryWordSurvivesTheShellIntact) {
