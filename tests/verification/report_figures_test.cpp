@@ -121,6 +121,12 @@ TEST(ReadmeWorkedExample, IterationTableOfProblem3Case1) {
 
 TEST(PlotsDocument, ClosureAndContactPressureOfProblem3Case1) {
   const Solution s = example("report-problem3-case1.json");
+  // The effective stress's range, 787.2 to 7754: the data of plot_units_test's nice_scale case that
+  // gives docs/plots.md's "12 bands of 600 from 600 to 7800 for the beam's effective stress".
+  const auto [least, most] = std::minmax_element(
+      s.elements.begin(), s.elements.end(), [](const ElementResult& a, const ElementResult& b) { return a.effective < b.effective; });
+  EXPECT_TRUE(rounds_to(least->effective, "787.2"));
+  EXPECT_TRUE(rounds_to(most->effective, "7754"));
   // "Iteration 1 overcloses the centre gaps to 260 %" (259.2: to two digits).
   EXPECT_TRUE(rounds_to(s.history.front().max_closure / 10.0, "26"));
   // "presses on the foundation with 211 psi at the centre span; the five closed gaps (81-85, the first
