@@ -46,6 +46,9 @@ struct ExampleRun {
   [[nodiscard]] fs::path data_file() const { return fs::path(SAASGAPS_REGRESSION_DATA_DIR) / (stem() + ".txt"); }
 };
 
+/// gtest's name for a run in its messages (instead of a dump of its bytes).
+void PrintTo(const ExampleRun& run, std::ostream* os) { *os << run.stem(); }
+
 /// Every JSON model of schemas/examples, sorted, and the exact-contact variant of those with classic gaps.
 std::vector<ExampleRun> runs() {
   std::vector<std::string> files;
