@@ -119,6 +119,16 @@ TEST(ReadmeWorkedExample, IterationTableOfProblem3Case1) {
   EXPECT_NE(s.message.find("(gap 86: closure 94.4 %, sigma_m -65.0159)"), std::string::npos) << s.message;
 }
 
+TEST(ResultsDocument, NotConvergedMessageOfTheReadmesStoppedRun) {
+  // docs/results.md's not-converged message is the README restart example's first run (case 3 stopped
+  // at 5 iterations): "gap 81 overclosed beyond the tolerance (closure 133.651 %); ...".
+  ResumeOptions five;
+  five.max_iterations = 5;
+  const Solution s = solve(example_model("report-problem3-case3.json"), nullptr, nullptr, five);
+  EXPECT_EQ(s.status, RunStatus::not_converged);
+  EXPECT_NE(s.message.find("gap 81 overclosed beyond the tolerance (closure 133.651 %)"), std::string::npos) << s.message;
+}
+
 TEST(PlotsDocument, ClosureAndContactPressureOfProblem3Case1) {
   const Solution s = example("report-problem3-case1.json");
   // The effective stress's range, 787.2 to 7754: the data of plot_units_test's nice_scale case that
