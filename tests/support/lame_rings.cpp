@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace saasgaps::testing::lame_rings {
 
@@ -16,20 +18,23 @@ double contact_pressure(double closure) {
   return (closure * delta - free_growth) / (inner - outer);
 }
 
-void expect_contact(const Model& m, const Solution& s) {
+void expect_contact(const Model& m, const Solution& s, double tolerance) {
   ASSERT_EQ(s.status, RunStatus::converged) << s.message;
-  const double tolerance = m.gaps->closure_tolerance;
-  double closure_sum = 0.0;
+  const double closure_tolerance = m.gaps->closure_tolerance;
   for (const GapResult& g : s.gaps) {
-    EXPECT_GT(g.eps_m, -1.0 - tolerance) << "gap " << g.id;
-    EXPECT_LT(g.eps_m, -1.0 + tolerance) << "gap " << g.id;
-    closure_sum += g.closure / 100.0;
+    EXPECT_GT(g.eps_m, -1.0 - closure_tolerance) << "gap " << g.id;
+    EXPECT_LT(g.eps_m, -1.0 + closure_tolerance) << "gap " << g.id;
   }
-  const double p = contact_pressure(closure_sum / static_cast<double>(s.gaps.size()));
+  // The given clearance closed (closure 1), not the closures the solver reached: an independent check.
+  const double p = contact_pressure(1.0);
   ASSERT_GT(p, 0.0);
+  double worst = 0.0;
   for (const GapResult& g : s.gaps) {
-    EXPECT_LT(std::abs(-g.sigma_m - p) / p, 0.02) << "gap " << g.id << ": " << g.sigma_m << " vs " << -p;
+    const double error = std::abs(-g.sigma_m - p) / p;
+    worst = std::max(worst, error);
+    EXPECT_LT(error, tolerance) << "gap " << g.id << ": " << g.sigma_m << " vs " << -p;
   }
+  std::printf("ring fit: gap pressure within %.3e of Lame's %.1f\n", worst, p);
 }
 
 }  // namespace saasgaps::testing::lame_rings

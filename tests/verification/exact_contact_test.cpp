@@ -22,6 +22,7 @@
 #include "stiffness_system.hpp"
 #include "support/examples.hpp"
 #include "support/mesh_builder.hpp"
+#include "support/quoted_figure.hpp"
 #include "support/ring_fit.hpp"
 
 namespace saasgaps {
@@ -100,7 +101,7 @@ Hertz hertz_model(double h) {
 
 /// Node pressures along the contact: -sigma_m is per gap; the pair pressure at node k comes from the
 /// gap's mean of its two pairs, so take the gaps' values at their centres.
-TEST(ExactHertz, PeakPressureAndHalfWidthWithinTwoPercent) {
+TEST(ExactHertz, PeakPressureAndHalfWidthAsDocumented) {
   const Hertz H = hertz_model(hertz_a / 25.0);
   const Solution s = solve(H.model);
   ASSERT_EQ(s.status, RunStatus::converged) << s.message;
@@ -119,12 +120,18 @@ TEST(ExactHertz, PeakPressureAndHalfWidthWithinTwoPercent) {
   const double intercept = (sy - slope * sx) / count;
   const double p0 = std::sqrt(intercept), a = std::sqrt(-intercept / slope);
   // The first gap's centre is at h/2: p(h/2) = p0 (1 - h^2/8a^2), 0.02 % below p0.
-  std::printf("Hertz: %d active sets, %.3f s; ", s.history.back().active_set_iterations, s.history.back().seconds);
-  std::printf("Hertz: p0 %.1f (fit %.1f) vs %.1f, a %.4f (last closed gap centre %.4f) vs %.4f, %zu gaps\n", peak, p0,
-              hertz_p0, a, last_closed, hertz_a, s.gaps.size());
-  EXPECT_LT(std::abs(peak / hertz_p0 - 1.0), 0.02);
-  EXPECT_LT(std::abs(p0 / hertz_p0 - 1.0), 0.02);
-  EXPECT_LT(std::abs(a / hertz_a - 1.0), 0.02);
+  const double peak_error = peak / hertz_p0 - 1.0, fit_error = p0 / hertz_p0 - 1.0, a_error = a / hertz_a - 1.0;
+  std::printf("Hertz: %d active sets; p0 %.1f (%.3e; fit %.1f, %.3e) vs %.1f, a %.5f (%.3e; last closed gap centre %.4f) "
+              "vs %.4f, %zu gaps\n",
+              s.history.back().active_set_iterations, peak, peak_error, p0, fit_error, hertz_p0, a, a_error, last_closed,
+              hertz_a, s.gaps.size());
+  // docs/contact.md: "p0 -0.06 %, a -0.05 % (fit of p^2 against x^2)" (p0: the peak gap's pressure;
+  // the fit's p0 is -0.041 %), and "Hertz: 8 active sets". The half-width's error is observed at
+  // -0.060 %, not the -0.05 % docs/contact.md quotes: pinned as observed (-5.97e-4).
+  EXPECT_TRUE(testing::rounds_to(100.0 * peak_error, "-0.06"));
+  EXPECT_LT(std::abs(a_error), 6.6e-4);
+  EXPECT_LT(std::abs(fit_error), 4.6e-4);  // observed -4.14e-4
+  EXPECT_EQ(s.history.back().active_set_iterations, 8);
   EXPECT_NEAR(last_closed, hertz_a, 1.5 * hertz_a / 25.0);
 }
 
@@ -146,10 +153,14 @@ TEST(ExactReport, Problem1BodyRestsOnItsGapsAtAThousandPsi) {
       continue;
     }
     EXPECT_EQ(g.state, GapState::closed) << "gap " << g.id;
-    EXPECT_NEAR(g.sigma_m, -1000.0, 1.0) << "gap " << g.id;
-    EXPECT_NEAR(g.closure, 100.0, 1e-6) << "gap " << g.id;
+    // docs/contact.md: "-1000.00 psi on every gap and in the body"; observed within 4.4e-5 psi.
+    EXPECT_NEAR(g.sigma_m, -1000.0, 6e-5) << "gap " << g.id;
+    EXPECT_NEAR(g.closure, 100.0, 1e-9) << "gap " << g.id;  // observed 5.9e-11
   }
-  for (const ElementResult& e : s.elements) EXPECT_NEAR(e.stress[zz], -1000.0, 1.0) << "element " << e.id;
+  // Observed within 3.2e-4 psi.
+  for (const ElementResult& e : s.elements) EXPECT_NEAR(e.stress[zz], -1000.0, 4e-4) << "element " << e.id;
+  // "10^-16 to 10^-12 in the tests": round-off, observed 1.6e-12 here.
+  EXPECT_LT(s.history.back().complementarity, 1e-11);
 }
 
 TEST(ExactReport, Problem2ThermalGrowthClosesGap20AtTenThousandPsi) {
@@ -159,9 +170,12 @@ TEST(ExactReport, Problem2ThermalGrowthClosesGap20AtTenThousandPsi) {
   for (const GapResult& g : s.gaps) {
     if (g.id != 20) continue;
     EXPECT_EQ(g.state, GapState::closed);
-    EXPECT_NEAR(g.sigma_m, -10000.0, 10.0);
+    // docs/contact.md: "10000.0 psi in gap 20 and every element"; observed within 8.7e-5 psi.
+    EXPECT_NEAR(g.sigma_m, -10000.0, 1.1e-4);
   }
-  for (const ElementResult& e : s.elements) EXPECT_NEAR(e.stress[rr], -10000.0, 10.0) << "element " << e.id;
+  // Observed within 3.7e-4 psi.
+  for (const ElementResult& e : s.elements) EXPECT_NEAR(e.stress[rr], -10000.0, 4.5e-4) << "element " << e.id;
+  EXPECT_LT(s.history.back().complementarity, 1e-11);  // round-off, observed 5e-16
 }
 
 // ---- An independent second method: penalty springs on the ordinary assembled system.
@@ -244,18 +258,21 @@ void expect_same_displacements(const Model& m, const Solution& s, double toleran
   for (std::size_t n = 0; n < s.nodes.size(); ++n) {
     worst = std::max({worst, std::abs(s.nodes[n].u_r - reference[2 * n]), std::abs(s.nodes[n].u_z - reference[2 * n + 1])});
   }
-  std::printf("exact vs penalty: largest displacement %.6e, worst difference %.3e\n", largest, worst);
+  std::printf("exact vs penalty: largest displacement %.6e, worst difference %.3e (%.2e of it)\n", largest, worst,
+              worst / largest);
   EXPECT_LT(worst, tolerance * largest);
 }
 
+// docs/contact.md quotes "2e-10 and 2e-8 of the largest"; observed 1.32e-9 (beam) and 1.90e-8 (Hertz):
+// the penalty's own error at k = 10^6 max diag K.
 TEST(ExactCrossCheck, PenaltyMethodAgreesOnTheReportBeam) {
   const Model m = testing::example_model("report-problem3-case1-exact.json");
-  expect_same_displacements(m, solve(m), 1e-5);
+  expect_same_displacements(m, solve(m), 1.6e-9);
 }
 
 TEST(ExactCrossCheck, PenaltyMethodAgreesOnHertz) {
   const Hertz H = hertz_model(hertz_a / 8.0);
-  expect_same_displacements(H.model, solve(H.model), 1e-5);
+  expect_same_displacements(H.model, solve(H.model), 2.2e-8);
 }
 
 // ---- Bad input and problems without a solution.

@@ -2,7 +2,8 @@
 // held at both ends: plane strain along z) and in plane strain (a quarter annulus):
 //   sigma_r = A - B / r^2, sigma_theta = A + B / r^2, A = p a^2 / (b^2 - a^2), B = p a^2 b^2 / (b^2 - a^2).
 // The stresses of the bore element (the innermost ring), against the exact values at its centre, must
-// be within 1 % on a modest mesh, and the error must fall as the mesh is refined.
+// be within the observed error on a modest mesh (8 radial elements; the README quotes the hoop
+// errors), and the error must fall as the mesh is refined.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 
 #include "analysis.hpp"
 #include "support/mesh_builder.hpp"
+#include "support/quoted_figure.hpp"
 
 namespace saasgaps {
 namespace {
@@ -95,21 +97,32 @@ Bore plane_strain_bore(int radial_elements) {
 double hoop_error(const Bore& bore) { return std::abs(bore.hoop - exact_hoop(bore.radius)) / exact_hoop(a); }
 double radial_error(const Bore& bore) { return std::abs(bore.radial - exact_radial(bore.radius)) / p; }
 
-/// Within 1 % on the modest mesh, and both errors falling as the mesh is refined.
-void expect_accurate_and_converging(Bore (*bore)(int radial_elements)) {
+/// Errors of the modest mesh, as observed, and the README's quoted hoop error (%).
+struct Observed {
+  double hoop, radial;
+  const char* quoted_hoop_percent;
+};
+
+/// Within the observed errors on the modest mesh, and both errors falling as the mesh is refined.
+void expect_accurate_and_converging(Bore (*bore)(int radial_elements), const Observed& bound) {
   const Bore coarse = bore(4), modest = bore(8), fine = bore(16);
-  EXPECT_LT(hoop_error(modest), 0.01) << "hoop " << modest.hoop << " vs " << exact_hoop(modest.radius);
-  EXPECT_LT(radial_error(modest), 0.01) << "radial " << modest.radial << " vs " << exact_radial(modest.radius);
+  EXPECT_LT(hoop_error(modest), bound.hoop) << "hoop " << modest.hoop << " vs " << exact_hoop(modest.radius);
+  EXPECT_LT(radial_error(modest), bound.radial) << "radial " << modest.radial << " vs " << exact_radial(modest.radius);
+  EXPECT_TRUE(testing::rounds_to(100.0 * hoop_error(modest), bound.quoted_hoop_percent));
   EXPECT_LT(hoop_error(fine), hoop_error(modest));
   EXPECT_LT(hoop_error(modest), hoop_error(coarse));
   EXPECT_LT(radial_error(fine), radial_error(modest));
   EXPECT_LT(radial_error(modest), radial_error(coarse));
 }
 
-TEST(LameCylinder, AxisymmetricBoreWithinOnePercentAndConverging) { expect_accurate_and_converging(axisymmetric_bore); }
+TEST(LameCylinder, AxisymmetricBoreWithinTheObservedErrorAndConverging) {
+  // Observed 1.378e-3 (hoop, the README's "0.14 %") and 1.954e-3 (radial).
+  expect_accurate_and_converging(axisymmetric_bore, {1.5e-3, 2.15e-3, "0.14"});
+}
 
-TEST(LameCylinder, PlaneStrainQuarterAnnulusBoreWithinOnePercentAndConverging) {
-  expect_accurate_and_converging(plane_strain_bore);
+TEST(LameCylinder, PlaneStrainQuarterAnnulusBoreWithinTheObservedErrorAndConverging) {
+  // Observed 2.25e-4 (hoop, the README's "0.02 %") and 2.953e-3 (radial).
+  expect_accurate_and_converging(plane_strain_bore, {2.5e-4, 3.25e-3, "0.02"});
 }
 
 }  // namespace

@@ -66,6 +66,7 @@ INSTANTIATE_TEST_SUITE_P(ReportProblems, ExactRestart,
 TEST(Restart, ANotConvergedRunResumesWithMoreIterations) {
   const Model model = testing::example_model("report-problem3-case3.json");
   const Solution uninterrupted = solve(model);
+  EXPECT_EQ(uninterrupted.iterations, 15);  // the README's restart example: "converges at 15"
   ResumeOptions short_run;
   short_run.max_iterations = 6;
   Recorder saved;

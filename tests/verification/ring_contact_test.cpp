@@ -1,8 +1,9 @@
 // Our own closed-form check of the gap iteration: two concentric steel rings, the inner one heated
 // across a small radial gap into the outer one (support/lame_rings.hpp states Lame's solution). The
-// gaps' normal stress must be within 2 % of -p and every gap's closure within the tolerance, both in
-// axisymmetry (a slice of the rings held in z) and in plane strain (a quarter annulus, gap elements
-// at many angles).
+// gaps' normal stress must be within the observed deviation from -p (p for the given clearance closed)
+// and every gap's closure within the tolerance, both in axisymmetry (a slice of the rings held in z)
+// and in plane strain (a quarter annulus, gap elements at many angles). The classic iteration stops
+// with the gaps 1.26 % overclosed, so it transmits 0.7-0.8 % less than Lame's pressure.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include "analysis.hpp"
 #include "support/lame_rings.hpp"
 #include "support/mesh_builder.hpp"
+#include "support/quoted_figure.hpp"
 #include "support/ring_fit.hpp"
 
 namespace saasgaps {
@@ -36,14 +38,19 @@ Model quarter_annulus_rings(int radial_elements, int hoop_elements, double xfact
   return m;
 }
 
+TEST(RingContact, LamePressureOfTheFitIsTheReadmesFigure) {
+  // The README's CalculiX comparison (the same rings as make_ring_model.py): "the Lame value (12,610.8 psi)".
+  EXPECT_TRUE(testing::rounds_to(testing::lame_rings::contact_pressure(1.0), "12610.8"));
+}
+
 TEST(RingContact, AxisymmetricContactPressureMatchesLame) {
   const Model m = axisymmetric_rings(12);
-  expect_contact(m, solve(m));
+  expect_contact(m, solve(m), 0.0088);  // observed 8.04e-3 low (closure 101.26 %)
 }
 
 TEST(RingContact, PlaneStrainQuarterAnnulusWithGapsAtManyAngles) {
   const Model m = quarter_annulus_rings(8, 24, 0.0);
-  expect_contact(m, solve(m));
+  expect_contact(m, solve(m), 0.008);  // observed 7.26e-3 low (closure 101.26 %)
 }
 
 TEST(RingContact, ExtrapolationReachesTheSameContactSooner) {
@@ -51,7 +58,7 @@ TEST(RingContact, ExtrapolationReachesTheSameContactSooner) {
   const Model extrapolating = quarter_annulus_rings(8, 24, 0.5);
   const Solution without = solve(plain);
   const Solution with = solve(extrapolating);
-  expect_contact(extrapolating, with);
+  expect_contact(extrapolating, with, 0.0012);  // observed 1.04e-3 low (closure 100.31 %)
   bool used = false;
   for (const IterationRecord& row : with.history) used = used || row.extrapolated;
   EXPECT_TRUE(used);
