@@ -1,4 +1,4 @@
-// The README's "Table IIIa in exact mode" (the report's Problem 3, case 1, solved by the classic
+// docs/contact.md's "Table IIIa in exact mode" (the report's Problem 3, case 1, solved by the classic
 // iteration and by the exact contact mode) and docs/contact.md's statements about the classic-mode
 // warning, each figure pinned to the digits quoted (support/quoted_figure.hpp).
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// The figures README.md and docs/plots.md quote for the report's problems in the classic mode (the
-// worked example's iteration table, the "this code" column of the README's Verification table, the
+// The figures README.md, docs/verification.md and docs/plots.md quote for the report's problems in the classic mode (the
+// worked example's iteration table, the "this code" column of docs/verification.md's table, the
 // plots' captions), each pinned to the digits quoted (support/quoted_figure.hpp): if a number moves
 // enough to change what the docs print, this fails and the docs must be re-measured.
 // The report's own figures, with the observed deviations, are in report_tables_test.cpp.
@@ -24,7 +24,7 @@ double sigma_r_62(const IterationRecord& row) { return by_id(row.watch_elements,
 Solution example(const std::string& name) { return solve(example_model(name)); }
 
 TEST(ReadmeVerificationTable, BeamDeflectionsModelAAndB) {
-  // README "58.9 % / 87.9 %"; docs/algorithm.md "0.589 of the exact 0.009 in", "0.879".
+  // docs/verification.md "58.9 % / 87.9 %"; docs/algorithm.md "0.589 of the exact 0.009 in", "0.879".
   const double a = -by_id(example("report-beam-model-a.json").nodes, 14).u_z / 0.009;
   const double b = -by_id(example("report-beam-model-b.json").nodes, 86).u_z / 0.009;
   EXPECT_TRUE(rounds_to(100.0 * a, "58.9"));
@@ -67,7 +67,7 @@ TEST(ReadmeVerificationTable, TableIIIaFirstAndConvergedIterations) {
   EXPECT_TRUE(rounds_to(sigma_r_62(s.history.back()), "6977"));
   const auto peak = std::max_element(s.elements.begin(), s.elements.end(),
                                      [](const ElementResult& a, const ElementResult& b) { return a.effective < b.effective; });
-  // The README and docs/plots.md: "The peak, 7754 psi in element 68".
+  // docs/plots.md: "The peak, 7754 psi in element 68".
   EXPECT_TRUE(rounds_to(peak->effective, "7754"));
   EXPECT_EQ(peak->id, 68);
 }
