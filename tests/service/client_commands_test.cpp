@@ -96,13 +96,15 @@ TEST_F(ClientCommands, InvalidModelIsExitTwoWithEveryPointer) {
   json model = json::parse(example_text("report-problem1.json"));
   model["analysis"]["type"] = "plane";
   model["nodes"][0]["r"] = "x";
+  model["solver"]["max_iterations"] = 1000000000;  // the command line's limit holds over HTTP too
   std::ofstream(dir_ / "bad.json") << model.dump();
   const Shell r = shell("", "saasgaps submit bad.json --server " + url(server));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_EQ(r.out, "");
-  EXPECT_CONTAINS(r.err, "error: Invalid model (HTTP 422): 2 errors");
+  EXPECT_CONTAINS(r.err, "error: Invalid model (HTTP 422): 3 errors");
   EXPECT_CONTAINS(r.err, "\n/analysis/type: ");
   EXPECT_CONTAINS(r.err, "\n/nodes/0/r: ");
+  EXPECT_CONTAINS(r.err, "\n/solver/max_iterations: max_iterations = 1000000000 is out of range: need 1 <= max_iterations <= 100000");
   // No server there: exit 1 naming the URL.
   const Shell away = shell("", "saasgaps jobs --server http://127.0.0.1:" + std::to_string(free_port()));
   EXPECT_EQ(away.exit_code, 1);
