@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/file_io.hpp"
+#include "cli/usage.hpp"
 #include "io/assembly_reader.hpp"
 #include "io/model_reader.hpp"
 
@@ -20,10 +21,12 @@ int run_import(const ImportOptions& options) {
   } else {
     write_file_atomically(options.model_path, text);
   }
-  const auto count = [&](const char* key) { return model.contains(key) ? model[key].size() : std::size_t{0}; };
-  const std::size_t gaps = model.contains("gaps") ? model["gaps"]["elements"].size() : 0;
-  std::cerr << "imported " << options.assembly_path << ": " << count("nodes") << " nodes, " << count("elements")
-            << " elements, " << gaps << " gap elements, " << count("constraints") << " constrained nodes\n";
+  const auto count = [&](const char* key, const char* noun) {
+    return plural(model.contains(key) ? static_cast<long long>(model[key].size()) : 0, noun);
+  };
+  const long long gaps = model.contains("gaps") ? static_cast<long long>(model["gaps"]["elements"].size()) : 0;
+  std::cerr << "imported " << options.assembly_path << ": " << count("nodes", "node") << ", " << count("elements", "element")
+            << ", " << plural(gaps, "gap element") << ", " << count("constraints", "constrained node") << '\n';
   return 0;
 }
 

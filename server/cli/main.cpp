@@ -1,5 +1,6 @@
 /// saasgaps: thermal stress analysis of plane and axisymmetric bodies in contact across gaps.
-/// Subcommands: solve, validate, import, serve, worker, plot, export-vtu. Exit codes (cli/usage.hpp,
+/// Subcommands: solve, validate, import, serve, worker, plot, export-vtu, and the client of a
+/// service: submit, jobs, status, watch, cancel, resume, fetch (cli/client_commands.hpp). Exit codes (cli/usage.hpp,
 /// docs/cli.md): 0 converged or valid, 3 not converged, 2 bad model, 1 any other failure, 64 a usage
 /// error. Usage errors and exceptions become exit codes in cli/usage.cpp only.
 
@@ -7,14 +8,17 @@
 
 #include <optional>
 
+#include "cli/client_commands.hpp"
 #include "cli/export_vtu_command.hpp"
 #include "cli/import_command.hpp"
 #include "cli/plot_command.hpp"
+#include "cli/read_card_options.hpp"
 #include "cli/serve_command.hpp"
 #include "cli/solve_command.hpp"
 #include "cli/usage.hpp"
 #include "cli/validate_command.hpp"
 #include "cli/worker_command.hpp"
+#include "io/run_limits.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"SAASGAPS: thermal stress analysis of plane and axisymmetric bodies in contact across gaps", "saasgaps"};
@@ -24,21 +28,16 @@ int main(int argc, char** argv) {
   saasgaps::cli::SolveOptions solve;
   CLI::App* solve_cmd = app.add_subcommand("solve", "Solve a model; one progress line per iteration on stderr");
   solve_cmd->add_option("model", solve.model_path, "Model document (JSON)")->required();
-  solve_cmd->add_option("-o,--output", solve.result_path, "Result document (default: stdout)");
-  solve_cmd->add_option("--state-out", solve.state_out, "Write the restart state here after every iteration");
+  solve_cmd->add_option("-o,--output", solve.result_path,
+                        "Result document; - is stdout (default: stdout, or MODEL.result.json when stdout is a terminal)");
+  solve_cmd->add_option("--state-out", solve.state_out, "Write the restart state after every iteration");
   solve_cmd->add_option("--resume", solve.resume_from, "Continue from a restart state written by --state-out");
-  solve_cmd->add_option("--max-iterations", solve.max_iterations, "Iteration limit (overrides the model's)")
-      ->check(saasgaps::cli::integer_range(1, 100000));
-  solve_cmd->add_option("--schedule", solve.tensile_schedule,
-                        "New tensile modulus schedule, absolute moduli, comma separated (with --resume: "
-                        "started afresh at the next iteration)")
-      ->delimiter(',')
-      ->check(saasgaps::cli::positive_number());
-  solve_cmd->add_option("--extrapolation", solve.extrapolation_factor, "Extrapolation factor XFACT, 0 <= f < 1")
-      ->check(CLI::Range(0.0, 0.999999999));
+  saasgaps::cli::add_read_card_options(*solve_cmd, solve.changes,
+                                       " (with --resume: started afresh at the next iteration)");
   solve_cmd->add_option("--stop-after", solve.stop_after, "Stop after this many iterations, keeping the state")
-      ->check(saasgaps::cli::integer_range(1, 100000));
+      ->check(saasgaps::cli::integer_range(1, saasgaps::io::max_iterations_limit));
   solve_cmd->add_flag("-q,--quiet", solve.quiet, "No progress table");
+  solve_cmd->add_flag("--wide", solve.wide, "Every column of the progress table: the watched elements and gaps too");
   solve_cmd->add_flag("--pretty", solve.pretty, "Indent the result document (default: compact)");
   solve_cmd->add_option("--vtu", solve.vtu_path, "Also write the result as a VTK unstructured grid (.vtu)");
   solve_cmd->add_option("--cache", solve.cache_dir,
@@ -160,9 +159,12 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"binary", "ascii"}))
       ->capture_default_str();
 
+  const saasgaps::cli::ClientCommands client(app);
+
   if (const std::optional<int> done = saasgaps::cli::parse_command_line(app, argc, argv)) return *done;
 
   return saasgaps::cli::run_command([&] {
+    if (const std::optional<int> code = client.run()) return *code;
     if (solve_cmd->parsed()) return saasgaps::cli::run_solve(solve);
     if (validate_cmd->parsed()) return saasgaps::cli::run_validate(validate_path);
     if (import_cmd->parsed()) return saasgaps::cli::run_import(import);

@@ -1,5 +1,6 @@
 #include "cli/progress_table.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -19,52 +20,89 @@ std::string number(const char* format, double value) {
   return text;
 }
 
-constexpr int narrow = 9;
-constexpr int wide = 14;
+// Column widths. The compact line is at most 5+11+8+9+12+12+8+13+7+12+5+9 = 111 characters with
+// every column a run can show (exact mode drops the tensile modulus and non-converged gaps), which
+// leaves room for numbers wider than their header.
+constexpr int iteration_width = 5;
+constexpr int modulus_width = 11;
+constexpr int count_width = 8;
+constexpr int nonconverged_width = 9;
+constexpr int closure_width = 12;
+constexpr int plastic_width = 13;
+constexpr int pairs_width = 7;
+constexpr int residual_width = 12;
+constexpr int sets_width = 5;
+constexpr int seconds_width = 9;
+constexpr int watched_width = 14;
+
+/// A closure in percent: one decimal, fewer digits when huge (a body that flew off) so the column holds.
+std::string closure(double percent) { return number(std::fabs(percent) < 1e7 ? "%.1f" : "%.3g", percent); }
 
 }  // namespace
 
-void ProgressTable::print_header(const IterationRecord& row) {
-  out_ << column("iter", 5) << column("E tension", 12) << column("closed", narrow) << column("non-conv", narrow)
-       << column("avg clos %", wide) << column("max clos %", wide) << column("yielded", narrow)
-       << column("N-L non-conv", wide);
-  for (const WatchedElement& e : row.watch_elements) {
-    const std::string id = "el " + std::to_string(e.id);
-    out_ << column(id + " s_r", wide) << column(id + " s_th", wide) << column(id + " eff", wide);
+bool ProgressTable::exact_row(const IterationRecord& row) const {
+  return exact_.value_or(row.active_set_iterations > 0);
+}
+
+bool ProgressTable::classic_columns(const IterationRecord& row) const { return wide_ || !exact_row(row); }
+
+std::string ProgressTable::header_text(const IterationRecord& row) const {
+  std::string line = column("iter", iteration_width);
+  if (classic_columns(row)) line += column("E tension", modulus_width);
+  line += column("closed", count_width);
+  if (classic_columns(row)) line += column("non-conv", nonconverged_width);
+  line += column("avg clos %", closure_width) + column("max clos %", closure_width) + column("yielded", count_width) +
+          column("N-L non-conv", plastic_width);
+  if (wide_) {
+    for (const WatchedElement& e : row.watch_elements) {
+      const std::string id = "el " + std::to_string(e.id);
+      line += column(id + " s_r", watched_width) + column(id + " s_th", watched_width) + column(id + " eff", watched_width);
+    }
+    for (const WatchedGap& g : row.watch_gaps) {
+      const std::string id = "gap " + std::to_string(g.id);
+      line += column(id + " E_M", watched_width) + column(id + " clos %", watched_width) +
+              column(id + " s_M", watched_width);
+    }
   }
-  for (const WatchedGap& g : row.watch_gaps) {
-    const std::string id = "gap " + std::to_string(g.id);
-    out_ << column(id + " E_M", wide) << column(id + " clos %", wide) << column(id + " s_M", wide);
+  if (exact_row(row)) line += column("pairs", pairs_width) + column("complement.", residual_width) + column("sets", sets_width);
+  return line + column("seconds", seconds_width);
+}
+
+std::string ProgressTable::row_text(const IterationRecord& row) const {
+  // The report prints "-" for the non-converged count of iteration 1: there is nothing to compare with.
+  const std::string nonconverged = row.iteration == 1 ? "-" : std::to_string(row.nonconverged_gaps);
+  std::string line = column(std::to_string(row.iteration) + (row.extrapolated ? "x" : ""), iteration_width);
+  if (classic_columns(row)) line += column(number("%.5g", row.tensile_modulus), modulus_width);
+  line += column(std::to_string(row.closed_gaps), count_width);
+  if (classic_columns(row)) line += column(nonconverged, nonconverged_width);
+  line += column(closure(row.average_closure), closure_width) + column(closure(row.max_closure), closure_width) +
+          column(std::to_string(row.yielded_elements), count_width) +
+          column(std::to_string(row.nonconverged_plastic), plastic_width);
+  if (wide_) {
+    for (const WatchedElement& e : row.watch_elements) {
+      line += column(number("%.1f", e.sigma_r), watched_width) + column(number("%.1f", e.sigma_theta), watched_width) +
+              column(number("%.1f", e.effective), watched_width);
+    }
+    for (const WatchedGap& g : row.watch_gaps) {
+      line += column(number("%.5g", g.modulus), watched_width) + column(number("%.2f", g.closure), watched_width) +
+              column(number("%.1f", g.sigma_m), watched_width);
+    }
   }
-  // Exact contact mode: pairs in contact, the complementarity residual and the active sets tried.
-  exact_ = row.active_set_iterations > 0;
-  if (exact_) out_ << column("pairs", narrow) << column("complement.", wide) << column("sets", 6);
-  out_ << column("seconds", narrow) << '\n';
-  header_done_ = true;
+  if (exact_row(row)) {
+    line += column(std::to_string(row.contact_pairs), pairs_width) +
+            column(number("%.1e", row.complementarity), residual_width) +
+            column(std::to_string(row.active_set_iterations), sets_width);
+  }
+  return line + column(number("%.3f", row.seconds), seconds_width);
 }
 
 void ProgressTable::print(const IterationRecord& row) {
-  if (!header_done_) print_header(row);
-  // The report prints "-" for the non-converged count of iteration 1: there is nothing to compare with.
-  const std::string nonconverged = row.iteration == 1 ? "-" : std::to_string(row.nonconverged_gaps);
-  out_ << column(std::to_string(row.iteration) + (row.extrapolated ? "x" : ""), 5)
-       << column(number("%.5g", row.tensile_modulus), 12) << column(std::to_string(row.closed_gaps), narrow)
-       << column(nonconverged, narrow) << column(number("%.1f", row.average_closure), wide)
-       << column(number("%.1f", row.max_closure), wide) << column(std::to_string(row.yielded_elements), narrow)
-       << column(std::to_string(row.nonconverged_plastic), wide);
-  for (const WatchedElement& e : row.watch_elements) {
-    out_ << column(number("%.1f", e.sigma_r), wide) << column(number("%.1f", e.sigma_theta), wide)
-         << column(number("%.1f", e.effective), wide);
+  if (!exact_) {
+    out_ << header_text(row) << '\n';
+    // Exact-mode rows carry their active sets; the header fixes the columns for every later row.
+    exact_ = row.active_set_iterations > 0;
   }
-  for (const WatchedGap& g : row.watch_gaps) {
-    out_ << column(number("%.5g", g.modulus), wide) << column(number("%.2f", g.closure), wide)
-         << column(number("%.1f", g.sigma_m), wide);
-  }
-  if (exact_) {
-    out_ << column(std::to_string(row.contact_pairs), narrow) << column(number("%.1e", row.complementarity), wide)
-         << column(std::to_string(row.active_set_iterations), 6);
-  }
-  out_ << column(number("%.3f", row.seconds), narrow) << '\n';
+  out_ << row_text(row) << '\n';
   out_.flush();
 }
 

@@ -1,5 +1,7 @@
 #include "cli/solve_command.hpp"
 
+#include <unistd.h>
+
 #include <iostream>
 
 #include "analysis.hpp"
@@ -20,7 +22,7 @@ namespace {
 class CommandLineObserver final : public IterationObserver {
  public:
   CommandLineObserver(const SolveOptions& options, std::string digest)
-      : options_(options), digest_(std::move(digest)), table_(std::cerr) {}
+      : options_(options), digest_(std::move(digest)), table_(std::cerr, options.wide) {}
 
   void on_iteration(const IterationRecord& row, const RestartState& state) override {
     if (!options_.quiet) table_.print(row);
@@ -39,28 +41,42 @@ class CommandLineObserver final : public IterationObserver {
   int last_iteration_ = 0;
 };
 
-/// Streams a result document (write_result or write_failed_result) to the file or stdout.
+/// Where the result document goes: a file, or "-" for stdout (see the header).
+std::string result_destination(const SolveOptions& options) {
+  if (!options.result_path.empty()) return options.result_path;
+  return ::isatty(STDOUT_FILENO) ? result_path_next_to(options.model_path) : "-";
+}
+
+/// Streams a result document (write_result or write_failed_result) to the file or stdout ("-").
 template <class Write>
-void write_result(const SolveOptions& options, const Write& write) {
+void write_result(const SolveOptions& options, const std::string& destination, const Write& write) {
   const auto to_stream = [&](std::ostream& out) {
     io::JsonWriter writer(io::stream_sink(out), options.pretty);
     write(writer);
     writer.flush();
     out << '\n';
   };
-  if (options.result_path.empty()) {
+  if (destination == "-") {
     to_stream(std::cout);
     std::cout.flush();
   } else {
-    write_file_atomically(options.result_path, to_stream);
+    write_file_atomically(destination, to_stream);
   }
 }
 
 }  // namespace
 
+std::string result_path_next_to(const std::string& model_path) {
+  const std::string suffix = ".json";
+  const bool json_name = model_path.size() > suffix.size() &&
+                         model_path.compare(model_path.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return (json_name ? model_path.substr(0, model_path.size() - suffix.size()) : model_path) + ".result.json";
+}
+
 int run_solve(const SolveOptions& options) {
+  const std::string destination = result_destination(options);
   // Every output is checked before the solve: a typo in a directory should not cost the run.
-  require_writable(options.result_path, "-o");
+  if (destination != "-") require_writable(destination, options.result_path.empty() ? "the result" : "-o");
   require_writable(options.state_out, "--state-out");
   require_writable(options.vtu_path, "--vtu");
   // The model is read straight from the text (no tree of the document); the digest that restart
@@ -83,9 +99,9 @@ int run_solve(const SolveOptions& options) {
     resume = io::state_from_json(saved, digest);
   }
   ResumeOptions changes;
-  changes.max_iterations = options.max_iterations;
-  changes.tensile_schedule = options.tensile_schedule;
-  changes.extrapolation_factor = options.extrapolation_factor;
+  changes.max_iterations = options.changes.max_iterations;
+  changes.tensile_schedule = options.changes.tensile_schedule;
+  changes.extrapolation_factor = options.changes.extrapolation_factor;
 
   CommandLineObserver observer(options, digest);
   std::optional<OrderingCache> cache;
@@ -95,13 +111,17 @@ int run_solve(const SolveOptions& options) {
     solution = solve(model, &observer, resume ? &*resume : nullptr, changes, cache ? &*cache : nullptr);
   } catch (const std::exception& e) {
     // The failure is reported by main(); the result document records it too.
-    if (!options.result_path.empty()) {
-      write_result(options, [&](io::JsonWriter& out) { io::write_failed_result(out, e.what()); });
+    if (destination != "-") {
+      write_result(options, destination, [&](io::JsonWriter& out) { io::write_failed_result(out, e.what()); });
     }
     throw;
   }
   std::cerr << solution->message << '\n';
-  write_result(options, [&](io::JsonWriter& out) { io::write_result(out, model, *solution); });
+  write_result(options, destination, [&](io::JsonWriter& out) { io::write_result(out, model, *solution); });
+  // Said only when the user did not name the file: they should not have to guess where it went.
+  if (options.result_path.empty() && destination != "-") {
+    std::cerr << "result written to " << destination << " (-o FILE names another file, -o - is standard output)\n";
+  }
   // A VTU that cannot be written must not turn a good result into a failed one. The VTU writer
   // works from a result tree: only this opt-in export builds one.
   if (!options.vtu_path.empty()) {

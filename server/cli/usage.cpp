@@ -4,6 +4,7 @@
 #include <charconv>
 #include <iostream>
 
+#include "cli/http_client.hpp"
 #include "errors.hpp"
 
 namespace saasgaps::cli {
@@ -131,8 +132,10 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const
   } catch (const CLI::ParseError& error) {
     CLI::App* command = command_in_use(app);
     const std::vector<std::string> arguments(argv + 1, argv + argc);
-    std::cerr << full_name(command) << ": " << describe_mistake(*command, arguments, error) << "\n\n"
-              << command->help(command->get_parent() != nullptr ? full_name(command->get_parent()) : "");
+    // One line and where to look: the whole help would bury the mistake under fifty lines.
+    std::cerr << full_name(command) << ": " << describe_mistake(*command, arguments, error) << "\n"
+              << "run '" << full_name(command) << " --help' for "
+              << (command->get_parent() != nullptr ? "its options" : "the commands") << '\n';
     return exit_code::usage;
   }
 }
@@ -140,8 +143,15 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const
 int run_command(const std::function<int()>& command, const std::string& document) {
   try {
     return command();
+  } catch (const ProblemError& e) {
+    std::cerr << "error: " << e.title() << " (HTTP " << e.status() << ")" << (e.detail().empty() ? "" : ": " + e.detail())
+              << '\n';
+    for (const ProblemIssue& issue : e.errors()) {
+      std::cerr << (issue.pointer.empty() ? "(document)" : issue.pointer) << ": " << issue.detail << '\n';
+    }
+    return e.status() == 422 ? exit_code::bad_model : exit_code::failure;
   } catch (const ModelError& e) {
-    std::cerr << "invalid " << document << ": " << e.issues().size() << (e.issues().size() == 1 ? " error\n" : " errors\n");
+    std::cerr << "invalid " << document << ": " << plural(static_cast<long long>(e.issues().size()), "error") << '\n';
     for (const InputIssue& issue : e.issues()) {
       std::cerr << (issue.pointer.empty() ? "(document)" : issue.pointer) << ": " << issue.detail << '\n';
     }
@@ -154,6 +164,10 @@ int run_command(const std::function<int()>& command, const std::string& document
     std::cerr << "error: " << e.what() << '\n';
     return exit_code::failure;
   }
+}
+
+std::string plural(long long count, const std::string& noun) {
+  return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
 }
 
 CLI::Validator positive_number() {
@@ -181,6 +195,19 @@ CLI::Validator integer_range(long long low, long long high) {
         return {};
       },
       "INT in [" + std::to_string(low) + " - " + std::to_string(high) + "]");
+}
+
+CLI::Validator fraction_below_one() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double value = 0.0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error != std::errc() || end != text.data() + text.size() || !(value >= 0.0 && value < 1.0)) {
+          return "must be a number at least 0 and below 1, got \"" + text + "\"";
+        }
+        return {};
+      },
+      "0 <= NUMBER < 1");
 }
 
 }  // namespace saasgaps::cli

@@ -24,8 +24,9 @@ inline constexpr int usage = 64;         ///< the command line itself is wrong
 }  // namespace exit_code
 
 /// Parses the command line into `app`. Returns an exit code when the program should end here:
-/// 0 after --help or --version (printed to stdout), exit_code::usage after a usage error (printed
-/// to stderr with the help of the command concerned). Returns nothing when a command should run.
+/// 0 after --help or --version (printed to stdout), exit_code::usage after a usage error (one line
+/// on stderr naming the mistake, then where the help is: "run 'saasgaps solve --help' for its
+/// options"). Returns nothing when a command should run.
 std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const* argv);
 
 /// The known word nearest to `word` (edit distance, at most a third of its length, or a prefix),
@@ -34,13 +35,22 @@ std::optional<std::string> nearest(const std::string& word, const std::vector<st
 
 /// Runs a command and turns what it throws into an exit code, with the message on stderr:
 /// ModelError and SingularModelError 2 (every issue with its JSON Pointer, under "invalid
-/// `document`: N errors"), anything else 1.
+/// `document`: N errors"); a service's refusal (ProblemError, cli/http_client.hpp) its title,
+/// detail and every error's pointer, 2 for a 422 (an invalid model or resume body), else 1;
+/// anything else 1.
 int run_command(const std::function<int()>& command, const std::string& document = "model");
+
+/// "1 iteration", "3 iterations": a count with its noun, plural unless the count is 1 (nouns that
+/// take an s only).
+std::string plural(long long count, const std::string& noun);
 
 /// A validator for numbers > 0 whose message names the value ("must be a number > 0, got abc").
 CLI::Validator positive_number();
 
 /// A validator for integers in [low, high] whose message names the value.
 CLI::Validator integer_range(long long low, long long high);
+
+/// A validator for numbers f with 0 <= f < 1 ("must be a number at least 0 and below 1, got ...").
+CLI::Validator fraction_below_one();
 
 }  // namespace saasgaps::cli

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/file_io.hpp"
+#include "cli/usage.hpp"
 #include "io/model_reader.hpp"
 #include "io/restraint_issues.hpp"
 
@@ -11,8 +12,9 @@ namespace saasgaps::cli {
 int run_validate(const std::string& path) {
   const Model model = io::parse_model(read_file(path));
   io::require_restrained(model);
-  std::cout << "valid: " << path << ": " << model.nodes.size() << " nodes, " << model.elements.size()
-            << " elements, " << model.gap_count() << " gap elements, " << model.materials.size() << " materials\n";
+  const auto count = [](std::size_t n, const char* noun) { return plural(static_cast<long long>(n), noun); };
+  std::cout << "valid: " << path << ": " << count(model.nodes.size(), "node") << ", " << count(model.elements.size(), "element")
+            << ", " << count(model.gap_count(), "gap element") << ", " << count(model.materials.size(), "material") << '\n';
   return 0;
 }
 

@@ -139,8 +139,7 @@ std::optional<double> SectionReader::number(const json& value, const Where& poin
 }
 
 std::optional<int> SectionReader::integer(const json& value, const Where& pointer, std::string_view name,
-                                   int minimum) {
-  constexpr auto maximum = std::numeric_limits<int>::max();
+                                   int minimum, int maximum) {
   if (!value.is_number_integer()) {
     std::string detail = std::string(name) + " must be an integer, got " + describe(value);
     // JSON Schema calls 1.0 an integer; this reader does not, so say what to write instead.
@@ -170,10 +169,10 @@ std::optional<double> SectionReader::number_field(const Obj& o, std::string_view
   return number(*v, Where(o.pointer, key), key, range);
 }
 
-std::optional<int> SectionReader::integer_field(const Obj& o, std::string_view key, int minimum) {
+std::optional<int> SectionReader::integer_field(const Obj& o, std::string_view key, int minimum, int maximum) {
   const json* v = o.find(key);
   if (v == nullptr) return std::nullopt;
-  return integer(*v, Where(o.pointer, key), key, minimum);
+  return integer(*v, Where(o.pointer, key), key, minimum, maximum);
 }
 
 std::optional<std::string> SectionReader::string_field(const Obj& o, std::string_view key) {

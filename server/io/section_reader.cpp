@@ -1,6 +1,7 @@
 #include "io/section_reader.hpp"
 
 #include "io/contact_check.hpp"
+#include "io/run_limits.hpp"
 #include "io/value_quote.hpp"
 
 namespace saasgaps::io {
@@ -495,7 +496,7 @@ void SectionReader::read_solver(const Obj& root) {
   const json* v = root.find("solver");
   if (v == nullptr || !object(*v, root.at("solver"), {}, {"max_iterations", "plastic_tolerance"})) return;
   const Obj o{v, root.at("solver")};
-  model_.solver.max_iterations = integer_field(o, "max_iterations", 1).value_or(model_.solver.max_iterations);
+  model_.solver.max_iterations = integer_field(o, "max_iterations", 1, io::max_iterations_limit).value_or(model_.solver.max_iterations);
   model_.solver.plastic_tolerance =
       number_field(o, "plastic_tolerance", positive).value_or(model_.solver.plastic_tolerance);
 }

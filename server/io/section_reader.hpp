@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <initializer_list>
+#include <limits>
 #include <map>
 #include <optional>
 #include <span>
@@ -197,12 +198,14 @@ class SectionReader {
   std::optional<double> number(const json& value, const Where& pointer, std::string_view name,
                                const Range& range);
   /// A JSON integer (1.0 is not one) from minimum to INT_MAX.
-  std::optional<int> integer(const json& value, const Where& pointer, std::string_view name, int minimum);
+  std::optional<int> integer(const json& value, const Where& pointer, std::string_view name, int minimum,
+                             int maximum = std::numeric_limits<int>::max());
 
   // Optional fields of a checked object: absent gives nullopt silently (object() has already
   // reported a missing required key).
   std::optional<double> number_field(const Obj& o, std::string_view key, const Range& range = any_number);
-  std::optional<int> integer_field(const Obj& o, std::string_view key, int minimum);
+  std::optional<int> integer_field(const Obj& o, std::string_view key, int minimum,
+                                   int maximum = std::numeric_limits<int>::max());
   std::optional<std::string> string_field(const Obj& o, std::string_view key);
   std::optional<std::size_t> choice_field(const Obj& o, std::string_view key,
                                           std::span<const std::string_view> choices);

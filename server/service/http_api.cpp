@@ -16,6 +16,7 @@
 #include "io/json_text.hpp"
 #include "io/model_reader.hpp"
 #include "io/restraint_issues.hpp"
+#include "io/run_limits.hpp"
 #include "io/vtu_writer.hpp"
 #include "plot/plot_request.hpp"
 #include "service/assembly_upload.hpp"
@@ -154,15 +155,16 @@ RunSettings resume_changes(const json& body, bool model_has_gaps) {
       }
       changes.tensile_schedule = schedule;
     } else if (key == "max_iterations") {
-      if (!value.is_number_integer() || value.get<std::int64_t>() < 1 || value.get<std::int64_t>() > 100000) {
-        issues.push_back({pointer, "must be an integer from 1 to 100000, got " + io::json_text(value)});
+      if (!value.is_number_integer() || value.get<std::int64_t>() < 1 || value.get<std::int64_t>() > io::max_iterations_limit) {
+        issues.push_back({pointer, "must be an integer from 1 to " + std::to_string(io::max_iterations_limit) + ", got " +
+                                       io::json_text(value)});
       } else {
         changes.max_iterations = value.get<int>();
       }
     } else if (key == "extrapolation_factor") {
       if (!model_has_gaps) issues.push_back({pointer, "the model has no gaps, so nothing to extrapolate"});
       if (!value.is_number() || !(value.get<double>() >= 0.0 && value.get<double>() < 1.0)) {
-        issues.push_back({pointer, "must be a number with 0 <= f < 1, got " + io::json_text(value)});
+        issues.push_back({pointer, "must be a number at least 0 and below 1, got " + io::json_text(value)});
       } else {
         changes.extrapolation_factor = value.get<double>();
       }

@@ -22,8 +22,14 @@ TEST_F(SolveCommand, ConvergedRunPrintsTheTableAndExitsZero) {
   const Outcome r = saasgaps("solve " + example("report-problem2.json") + " -o " + path("result.json"));
   EXPECT_EQ(r.exit_code, 0) << r.err;
   for (const char* column : {"iter", "E tension", "closed", "non-conv", "avg clos %", "max clos %", "yielded",
-                             "N-L non-conv", "gap 20 E_M", "gap 20 clos %", "el 9 s_r"}) {
+                             "N-L non-conv", "seconds"}) {
     EXPECT_NE(r.err.find(column), std::string::npos) << "missing column " << column << "\n" << r.err;
+  }
+  // The watched element and gap of the model's output: with --wide.
+  const Outcome wide = saasgaps("solve " + example("report-problem2.json") + " --wide -o " + path("result.json"));
+  EXPECT_EQ(wide.exit_code, 0) << wide.err;
+  for (const char* column : {"gap 20 E_M", "gap 20 clos %", "el 9 s_r"}) {
+    EXPECT_NE(wide.err.find(column), std::string::npos) << "missing column " << column << "\n" << wide.err;
   }
   EXPECT_NE(r.err.find("converged in 5 iterations"), std::string::npos) << r.err;
   const nlohmann::json result = json_of(path("result.json"));

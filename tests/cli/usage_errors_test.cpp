@@ -1,5 +1,5 @@
 // Mistakes a user makes on the command line, one test each: the exit code docs/cli.md documents and
-// a message that names the mistake (and, for a usage error, the help of the command concerned).
+// a message that names the mistake (and, for a usage error, one line and where the help is).
 #include "command_fixture.hpp"
 
 namespace {
@@ -23,9 +23,8 @@ class UsageErrors : public saasgaps::testing::CommandTest {
 TEST_F(UsageErrors, MistypedCommandIsNamedWithTheNearestOne) {
   const Outcome r = saasgaps("solv " + example("report-problem1.json"));
   EXPECT_EQ(r.exit_code, usage);
-  EXPECT_CONTAINS(r.err, "unknown command 'solv'; did you mean 'solve'?");
-  EXPECT_CONTAINS(r.err, "Usage: saasgaps [OPTIONS] SUBCOMMAND");  // the program's help lists the commands
-  EXPECT_CONTAINS(r.err, "export-vtu");
+  EXPECT_EQ(r.err, "saasgaps: unknown command 'solv'; did you mean 'solve'?\n"
+                   "run 'saasgaps --help' for the commands\n");
 }
 
 TEST_F(UsageErrors, NoCommandListsTheCommands) {
@@ -35,25 +34,34 @@ TEST_F(UsageErrors, NoCommandListsTheCommands) {
   EXPECT_CONTAINS(r.err, "serve, worker, plot, export-vtu");
 }
 
-TEST_F(UsageErrors, MistypedOptionIsNamedWithTheNearestOneAndTheCommandsHelp) {
+TEST_F(UsageErrors, MistypedOptionIsOneLineWithTheNearestOneAndAHint) {
   const Outcome r = saasgaps("solve --max-iteration 5 " + example("report-problem1.json"));
   EXPECT_EQ(r.exit_code, usage);
-  EXPECT_CONTAINS(r.err, "saasgaps solve: unknown option '--max-iteration'; did you mean '--max-iterations'?");
-  EXPECT_CONTAINS(r.err, "Usage: saasgaps solve [OPTIONS] model");
-  EXPECT_CONTAINS(r.err, "--state-out");
+  // One line and the hint, not the fifty lines of the help that would bury it.
+  EXPECT_EQ(r.err, "saasgaps solve: unknown option '--max-iteration'; did you mean '--max-iterations'?\n"
+                   "run 'saasgaps solve --help' for its options\n");
 }
 
 TEST_F(UsageErrors, MissingArgumentIsAUsageError) {
   const Outcome r = saasgaps("plot " + example("report-problem1.json"));
   EXPECT_EQ(r.exit_code, usage);
   EXPECT_CONTAINS(r.err, "saasgaps plot: --output is required");
-  EXPECT_CONTAINS(r.err, "Usage: saasgaps plot [OPTIONS] result");
+  EXPECT_CONTAINS(r.err, "run 'saasgaps plot --help' for its options");
+  EXPECT_EQ(r.err.find("Usage:"), std::string::npos) << r.err;
 }
 
 TEST_F(UsageErrors, BadOptionValueNamesTheValue) {
   const Outcome r = saasgaps("solve " + example("report-problem1.json") + " --max-iterations many");
   EXPECT_EQ(r.exit_code, usage);
   EXPECT_CONTAINS(r.err, "--max-iterations: must be an integer from 1 to 100000, got \"many\"");
+  const Outcome beyond = saasgaps("solve " + example("report-problem1.json") + " --max-iterations 100001");
+  EXPECT_EQ(beyond.exit_code, usage);
+  EXPECT_CONTAINS(beyond.err, "--max-iterations: must be an integer from 1 to 100000, got \"100001\"");
+  // XFACT may be 0 but not 1: the rule in words, not "not in range 0.000000 to 1.000000".
+  const Outcome one = saasgaps("solve " + example("report-problem1.json") + " --extrapolation 1");
+  EXPECT_EQ(one.exit_code, usage);
+  EXPECT_CONTAINS(one.err, "--extrapolation: must be a number at least 0 and below 1, got \"1\"");
+  EXPECT_EQ(one.err.find("0.000000"), std::string::npos) << one.err;
   const Outcome schedule = saasgaps("solve " + example("report-problem1.json") + " --schedule 2,-1");
   EXPECT_EQ(schedule.exit_code, usage);
   EXPECT_CONTAINS(schedule.err, "--schedule: must be a number > 0, got \"-1\"");

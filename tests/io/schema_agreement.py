@@ -184,6 +184,7 @@ def schema_expressible_cases(base):
          "/loads/temperatures/nodal/0"),
         ("max_iterations 0", edits(m, ("/solver/max_iterations", 0)), "/solver/max_iterations"),
         ("max_iterations 2.5", edits(m, ("/solver/max_iterations", 2.5)), "/solver/max_iterations"),
+        ("max_iterations 100001", edits(m, ("/solver/max_iterations", 100001)), "/solver/max_iterations"),
         ("plastic tolerance 0", edits(m, ("/solver/plastic_tolerance", 0)), "/solver/plastic_tolerance"),
         ("watched id as a string", edits(m, ("/output/watch_elements/0", "1")), "/output/watch_elements/0"),
         ("watched twice", edits(m, ("/output/watch_elements/1", 1)), "/output/watch_elements/1"),
