@@ -25,6 +25,7 @@ struct ApiOptions {
   std::string listen_host = "127.0.0.1";   ///< a Host name always accepted
   std::vector<std::string> allowed_hosts;  ///< more Host names accepted without a token
   ModelHandoff* handoff = nullptr;  ///< where submitted models wait for the worker pool (local executor)
+  bool remote_workers = false;      ///< the worker routes answer (executor slurm); 404 otherwise
 };
 
 class HttpApi {
