@@ -175,6 +175,17 @@ TEST_F(Faults, SlowAndIdleClientsDoNotStarveTheServer) {
   for (auto& c : idle) EXPECT_TRUE(c->closed_by_server(milliseconds(500)));
 }
 
+/// Polls /healthz until `writable` is `expected`, up to `timeout`; returns the last answer.
+json wait_for_writable(httplib::Client& client, bool expected, seconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  json health = get_json(client, "/healthz");
+  while (health["writable"] != expected && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(milliseconds(50));
+    health = get_json(client, "/healthz");
+  }
+  return health;
+}
+
 /// A small tmpfs for the disk-full test; unmounted when destroyed. Needs CAP_SYS_ADMIN (root).
 class SmallDisk {
  public:
@@ -230,6 +241,12 @@ TEST_F(Faults, FullDiskRefusesWritesAndStillServesReads) {
     EXPECT_NE(ready->body.find("cannot be written"), std::string::npos) << ready->body;
     problem(client.Post("/v1/jobs", example_text("report-problem1.json"), "application/json"), 503);
     EXPECT_NE(server.log().find("database_read_only"), std::string::npos) << server.log();
+    // Space returns: the read-only store reopens writable without a restart (issue 17).
+    disk.empty();
+    EXPECT_EQ(wait_for_writable(client, true, seconds(10))["writable"], true) << server.log();
+    const std::int64_t later = submit(client, example_text("report-problem1.json"));
+    EXPECT_EQ(wait_for_state(client, later, {"converged", "failed"})["state"], "converged");
+    EXPECT_EQ(client.Get("/v1/jobs/" + std::to_string(job) + "/result")->body, stored_result);
     EXPECT_EQ(server.stop(), 0);
   }
   disk.empty();
@@ -252,17 +269,6 @@ TEST_F(Faults, FullDiskRefusesWritesAndStillServesReads) {
     EXPECT_EQ(client.Get("/v1/jobs/" + std::to_string(job) + "/result")->body, stored_result);
     server.kill_hard();
   }
-}
-
-/// Polls /healthz until `writable` is `expected`, up to `timeout`; returns the last answer.
-json wait_for_writable(httplib::Client& client, bool expected, seconds timeout) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  json health = get_json(client, "/healthz");
-  while (health["writable"] != expected && std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(milliseconds(50));
-    health = get_json(client, "/healthz");
-  }
-  return health;
 }
 
 // Issue 17, defect 5: the disk fills under a running job. Its failing commit hands it on
