@@ -112,7 +112,9 @@ int main(int argc, char** argv) {
   CLI::App* worker_cmd = app.add_subcommand("worker", "Run one job of a service here, reporting each iteration over HTTP");
   worker_cmd->add_option("--server", worker.server, "The service's URL, http://HOST:PORT")->required();
   worker_cmd->add_option("--job", worker.job, "Job id")->required()->check(CLI::PositiveNumber);
-  worker_cmd->add_option("--lease", worker.lease, "ATTEMPT:SECRET (default: $SAASGAPS_LEASE, else take the job)");
+  worker_cmd->add_option("--ticket", worker.ticket,
+                         "ATTEMPT:TICKET, the run's single-use ticket (default: $SAASGAPS_TICKET, set by the Slurm executor)");
+  worker_cmd->add_option("--lease", worker.lease, "ATTEMPT:SECRET, a lease already redeemed (default: $SAASGAPS_LEASE)");
   worker_cmd->add_option("--token-file", worker.token_file, "File holding the service's bearer token");
   worker_cmd->add_option("--retry-for", worker.retry_for, "Seconds a request is retried before the worker gives up")
       ->check(CLI::Range(0.0, 86400.0))

@@ -183,7 +183,7 @@ int run_serve(const ServeOptions& options) {
   // Models submitted to the local pool go to their worker already read (up to one per worker).
   service::ModelHandoff handoff(static_cast<std::size_t>(options.workers));
   service::HttpApi api(store, hub, {token, options.max_streams, options.workers, options.host, allowed_hosts,
-                                    slurm ? nullptr : &handoff, options.max_body});
+                                    slurm ? nullptr : &handoff, options.max_body, slurm});
   api.install(server);
 
   const int port = options.port == 0 ? server.bind_to_any_port(options.host)
@@ -219,7 +219,7 @@ int run_serve(const ServeOptions& options) {
   service::log_info("server_started", {{"version", SAASGAPS_VERSION}, {"host", options.host}, {"port", port},
                                        {"database", options.database}, {"executor", options.executor}, {"workers", options.workers},
                                        {"recovered_jobs", recovered}, {"authentication", token.has_value()}});
-  if (!store.writable()) service::log_error("database_read_only", {{"reason", store.read_only_reason()}});
+  if (!store.writable()) service::log_error("database_read_only", {{"reason", store.why_not_writable()}});
 
   const bool clean = server.listen_after_bind();
   // Wake the signal thread if listening ended for another reason.

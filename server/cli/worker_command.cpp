@@ -20,9 +20,19 @@ int run_worker_command(const WorkerCommandOptions& options) {
   if (lease.empty()) {
     if (const char* from_env = std::getenv("SAASGAPS_LEASE")) lease = from_env;
   }
+  std::string ticket = options.ticket;
+  if (ticket.empty()) {
+    if (const char* from_env = std::getenv("SAASGAPS_TICKET")) ticket = from_env;
+  }
   if (!lease.empty()) {
     worker.lease = service::worker_protocol::parse_lease(lease);
     if (!worker.lease) throw std::runtime_error("the lease must look like ATTEMPT:SECRET (attempt >= 1)");
+  } else if (!ticket.empty()) {
+    worker.ticket = service::worker_protocol::parse_lease(ticket);
+    if (!worker.ticket) throw std::runtime_error("the ticket must look like ATTEMPT:TICKET (attempt >= 1)");
+  } else {
+    throw std::runtime_error("no ticket (--ticket or $SAASGAPS_TICKET) and no lease (--lease or $SAASGAPS_LEASE): "
+                             "a worker runs only a job the service handed to Slurm, with the ticket it passed");
   }
   if (!options.token_file.empty()) worker.token = read_token_file(options.token_file);
   worker.retry_for = std::chrono::milliseconds(static_cast<long long>(options.retry_for * 1000.0));

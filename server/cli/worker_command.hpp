@@ -1,8 +1,9 @@
 #pragma once
-/// `saasgaps worker --server URL --job ID [--token-file F] [--lease ATTEMPT:SECRET]`: runs one job for
-/// a service, reporting every iteration over HTTP (service/worker_client.hpp). The lease comes from
-/// --lease, else from $SAASGAPS_LEASE (how the Slurm executor passes it), else the worker asks the
-/// service for the job (it must be queued or interrupted).
+/// `saasgaps worker --server URL --job ID [--token-file F] [--ticket ATTEMPT:TICKET | --lease
+/// ATTEMPT:SECRET]`: runs one job for a service, reporting every iteration over HTTP
+/// (service/worker_client.hpp). The lease comes from --lease or $SAASGAPS_LEASE, else the worker
+/// redeems the run's ticket (--ticket, else $SAASGAPS_TICKET, how the Slurm executor passes it).
+/// Without either it cannot run: only a job the service handed to Slurm can be worked on.
 
 #include <cstdint>
 #include <string>
@@ -13,6 +14,7 @@ struct WorkerCommandOptions {
   std::string server;
   std::int64_t job = 0;
   std::string lease;
+  std::string ticket;
   std::string token_file;
   double retry_for = 120.0;  ///< seconds of failed requests before giving up
 };

@@ -326,7 +326,7 @@ void HttpApi::install_guards(httplib::Server& server) {
 
 bool HttpApi::ready(std::string& why) {
   if (!store_.writable()) {
-    why = store_.read_only_reason();
+    why = store_.why_not_writable();
     return false;
   }
   const std::string failing = Metrics::global().store_failing();
@@ -473,7 +473,7 @@ void HttpApi::install(httplib::Server& server) {
       res.set_content(std::string(asset.body), std::string(asset.content_type));
     });
   }
-  install_worker_api(server, store_, hub_);
+  install_worker_api(server, store_, hub_, options_.remote_workers);
 }
 
 void HttpApi::submit(const httplib::Request& req, httplib::Response& res) {

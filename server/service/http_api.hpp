@@ -27,6 +27,7 @@ struct ApiOptions {
   std::vector<std::string> allowed_hosts;  ///< more Host names accepted without a token
   ModelHandoff* handoff = nullptr;  ///< where submitted models wait for the worker pool (local executor)
   std::size_t max_body = std::numeric_limits<std::size_t>::max();  ///< --max-body: the guard's 413
+  bool remote_workers = false;      ///< the worker routes answer (executor slurm); 404 otherwise
 };
 
 class HttpApi {

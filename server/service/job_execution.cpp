@@ -133,6 +133,12 @@ void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& 
   } catch (const RunAbandoned&) {
     throw;
   } catch (const std::exception& e) {
+    const auto* store_error = dynamic_cast<const StoreError*>(&e);
+    if (store_error != nullptr && store_error->no_space()) {
+      // The store handed the job on (interrupted) when the commit failed: it resumes once space
+      // returns. Recording it failed would lose that.
+      return;
+    }
     try {
       // The commit in flight ends first (its own failure, if any, was rethrown already or is this one).
       pipeline.wait();
@@ -140,8 +146,8 @@ void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& 
     } catch (const RunAbandoned&) {
       throw;
     } catch (const std::exception& again) {
-      // Even the failure cannot be recorded (a full disk, the database gone): the job stays running
-      // in the file and the next server start marks it interrupted and resumes it.
+      // Even the failure cannot be recorded (the database gone): the job stays running in the file
+      // and the next server start marks it interrupted and resumes it.
       Metrics::global().count_store_error();
       log_error("job_not_recorded", {{"job", input.job}, {"error", e.what()}, {"store_error", again.what()},
                                      {"note", "the job stays in the database as running; the next start resumes it"}});

@@ -102,6 +102,9 @@ void JobRunner::work(const std::string& name) {
       Metrics::global().set_store_failing(failing);
     }
     if (!claimed) {
+      // After a write failed for want of space, no job starts until the store finds space again;
+      // then the jobs handed on (interrupted) are claimed and resume on their own.
+      if (!store_.writable() && store_.recover_writes()) continue;
       const std::uint64_t before = seen;
       seen = hub_.wait(seen, std::chrono::milliseconds(1000));
       // Idle for a second: give back what HTTP threads freed too (results sent, models parsed),

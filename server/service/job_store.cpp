@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -15,6 +16,7 @@
 
 #include "io/json_text.hpp"
 #include "io/model_reader.hpp"
+#include "service/log.hpp"
 
 namespace saasgaps::service {
 
@@ -83,6 +85,11 @@ const std::vector<const char*> migrations = {
     ALTER TABLE jobs ADD COLUMN lease_secret TEXT;
     ALTER TABLE jobs ADD COLUMN slurm_job_id TEXT;
     ALTER TABLE jobs ADD COLUMN slurm_state TEXT;
+    )sql",
+    // 3: the single-use ticket of a run handed to Slurm, and what a finish keeps of its spent lease.
+    R"sql(
+    ALTER TABLE jobs ADD COLUMN lease_ticket TEXT;
+    ALTER TABLE jobs ADD COLUMN finish_digest TEXT;
     )sql",
 };
 
@@ -271,6 +278,22 @@ std::int64_t schema_version(Connection& db) {
 
 }  // namespace
 
+namespace {
+
+/// Whether `bytes` can be reserved on the database's file system: a probe file beside it, allocated
+/// (not sparse) and removed at once.
+bool space_for(const std::string& database, std::int64_t bytes) {
+  const std::string probe = database + ".space-probe";
+  const int fd = ::open(probe.c_str(), O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+  if (fd < 0) return false;
+  const bool reserved = ::posix_fallocate(fd, 0, bytes) == 0;
+  ::close(fd);
+  ::unlink(probe.c_str());
+  return reserved;
+}
+
+}  // namespace
+
 JobStore::JobStore(std::string path, int max_interruptions)
     : path_(std::move(path)), max_interruptions_(max_interruptions) {
   try {
@@ -278,6 +301,13 @@ JobStore::JobStore(std::string path, int max_interruptions)
   } catch (const StoreError& e) {
     if (!e.no_space()) throw;
     open_read_only(e);
+  }
+  // Opened, but on a full disk: the first job would fail at its first commit. Not writable until
+  // recover_writes finds space.
+  if (writable() && !space_for(path_, probe_bytes)) {
+    std::lock_guard lock(state_mutex_);
+    write_problem_ = "the file system holding the database is full (less than " + std::to_string(probe_bytes) +
+                     " bytes could be reserved); no job starts until space returns";
   }
 }
 
@@ -318,11 +348,114 @@ void JobStore::open_read_only(const StoreError& why) {
     throw StoreError("the database " + path_ + " needs a schema migration but cannot be written: " + why.what(),
                      why.code());
   }
-  read_only_reason_ = std::string("the database cannot be written (") + why.what() + "); serving reads only";
+  std::lock_guard lock(state_mutex_);
+  read_only_ = true;
+  write_problem_ = std::string("the database cannot be written (") + why.what() + "); serving reads only";
+}
+
+bool JobStore::writable() const {
+  std::lock_guard lock(state_mutex_);
+  return write_problem_.empty();
+}
+
+std::string JobStore::why_not_writable() const {
+  std::lock_guard lock(state_mutex_);
+  return write_problem_;
 }
 
 void JobStore::require_writable() const {
-  if (!writable()) throw StoreUnavailable(read_only_reason_ + "; free space and restart the server");
+  std::lock_guard lock(state_mutex_);
+  if (read_only_) throw StoreUnavailable(write_problem_ + "; it becomes writable when space returns");
+}
+
+void JobStore::note_failure(const StoreError& e) {
+  if (!e.no_space()) return;
+  std::lock_guard lock(state_mutex_);
+  if (write_problem_.empty()) {
+    write_problem_ = std::string("a database write failed (") + e.what() + "); no job starts until space returns";
+    log_error("store_not_writable", {{"reason", write_problem_}});
+  }
+}
+
+void JobStore::hand_on(std::int64_t id, int attempt, const StoreError& why) {
+  const std::string what = std::string("the database could not be written (") + why.what() +
+                           "); the job resumes when space returns";
+  try {
+    auto db = pool_->lease();
+    WriteTransaction tx(*db);
+    const JobRecord job = require_job(*db, id);
+    if (job.state != JobState::running || job.attempts != attempt) return;
+    interrupt(*db, id, what, max_interruptions_, false);
+    tx.commit();
+    log_error("job_interrupted", {{"job", id}, {"attempt", attempt}, {"reason", what}});
+  } catch (const StoreError& e) {
+    // Not even the interruption can be written: shown from memory until it can.
+    std::lock_guard lock(state_mutex_);
+    handed_on_[id] = {attempt, what, false};
+    log_error("job_interrupted", {{"job", id}, {"attempt", attempt}, {"reason", what}, {"recorded", false},
+                                  {"store_error", e.what()}});
+  }
+}
+
+void JobStore::record_handed_on() {
+  std::map<std::int64_t, HandedOn> pending;
+  {
+    std::lock_guard lock(state_mutex_);
+    pending = handed_on_;
+  }
+  if (pending.empty()) return;
+  auto db = pool_->lease();
+  WriteTransaction tx(*db);
+  for (const auto& [id, run] : pending) {
+    const std::optional<JobRecord> job = find_job(*db, id);
+    if (job && job->state == JobState::running && job->attempts == run.attempt) {
+      interrupt(*db, id, run.what, max_interruptions_, run.counted);
+    }
+  }
+  tx.commit();
+  std::lock_guard lock(state_mutex_);
+  for (const auto& entry : pending) handed_on_.erase(entry.first);
+}
+
+JobRecord& JobStore::shown(JobRecord& job) const {
+  std::lock_guard lock(state_mutex_);
+  const auto found = handed_on_.find(job.id);
+  if (found != handed_on_.end() && job.state == JobState::running && job.attempts == found->second.attempt) {
+    job.state = JobState::interrupted;
+    job.message = found->second.what;
+  }
+  return job;
+}
+
+
+bool JobStore::recover_writes() {
+  if (writable()) return true;
+  std::lock_guard probe(probe_mutex_);
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_probe_ < std::chrono::seconds(1)) return false;
+  last_probe_ = now;
+  if (!space_for(path_, probe_bytes)) return false;
+  bool read_only = false;
+  {
+    std::lock_guard lock(state_mutex_);
+    read_only = read_only_;
+  }
+  try {
+    if (read_only) {
+      // Shared connections need the WAL's shared-memory index, which a full disk could not hold.
+      pool_->reopen(OpenMode::shared);
+      pool_->lease();  // opens a shared connection, or throws
+    }
+    record_handed_on();
+  } catch (const StoreError&) {
+    if (read_only) pool_->reopen(OpenMode::exclusive);
+    return false;
+  }
+  std::lock_guard lock(state_mutex_);
+  read_only_ = false;
+  write_problem_.clear();
+  log_info("store_writable", {{"database", path_}});
+  return true;
 }
 
 void JobStore::reclaim_space() {
@@ -341,6 +474,17 @@ JobStore::Submitted JobStore::submit(const std::string& model, const std::string
                                      const std::optional<std::string>& idempotency_key,
                                      const std::string& request_digest) {
   require_writable();
+  try {
+    return insert_job(model, title, max_iterations, idempotency_key, request_digest);
+  } catch (const StoreError& e) {
+    note_failure(e);
+    throw;
+  }
+}
+
+JobStore::Submitted JobStore::insert_job(const std::string& model, const std::string& title, int max_iterations,
+                                         const std::optional<std::string>& idempotency_key,
+                                         const std::string& request_digest) {
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   if (idempotency_key) {
@@ -375,7 +519,8 @@ JobStore::Submitted JobStore::submit(const std::string& model, const std::string
 
 JobRecord JobStore::get(std::int64_t id) {
   auto db = pool_->lease();
-  return require_job(*db, id);
+  JobRecord job = require_job(*db, id);
+  return shown(job);
 }
 
 JobStore::Page JobStore::list(std::optional<JobState> state, int page_size, std::optional<std::int64_t> before) {
@@ -387,7 +532,10 @@ JobStore::Page JobStore::list(std::optional<JobState> state, int page_size, std:
   q.bind(2, before);
   q.bind(3, page_size + 1);
   Page page;
-  while (q.step()) page.jobs.push_back(read_job(q));
+  while (q.step()) {
+    page.jobs.push_back(read_job(q));
+    shown(page.jobs.back());
+  }
   if (static_cast<int>(page.jobs.size()) > page_size) {
     page.jobs.pop_back();
     page.next_before = page.jobs.back().id;
@@ -496,39 +644,59 @@ int JobStore::running_count() {
   return static_cast<int>(q.integer(0));
 }
 
-std::optional<ClaimedJob> JobStore::claim(const std::string& worker) {
+std::optional<ClaimedJob> JobStore::claim(const std::string& worker, bool with_ticket) {
+  // A job started now would fail at its first commit: wait for recover_writes.
   if (!writable()) return std::nullopt;
-  auto db = pool_->lease();
-  WriteTransaction tx(*db);
-  Statement next = db->prepare("SELECT id FROM jobs WHERE state IN ('queued', 'interrupted') ORDER BY id LIMIT 1");
-  if (!next.step()) return std::nullopt;
-  ClaimedJob claimed = start_run(*db, next.integer(0), worker);
-  tx.commit();
-  return claimed;
+  try {
+    auto db = pool_->lease();
+    WriteTransaction tx(*db);
+    Statement next = db->prepare("SELECT id FROM jobs WHERE state IN ('queued', 'interrupted') ORDER BY id LIMIT 1");
+    if (!next.step()) return std::nullopt;
+    ClaimedJob claimed = start_run(*db, next.integer(0), worker, with_ticket);
+    tx.commit();
+    return claimed;
+  } catch (const StoreError& e) {
+    note_failure(e);
+    throw;
+  }
 }
 
 void JobStore::record_iteration(std::int64_t id, int iteration, const std::string& row,
                                 const std::vector<std::uint8_t>& state, const std::optional<CommitTime>& previous,
                                 const Lease* lease) {
   require_writable();
-  auto db = pool_->lease();
-  WriteTransaction tx(*db);
-  if (lease && !check_lease(*db, id, *lease, iteration, row)) return;  // committed before: a retry
+  int attempt = 0;
+  try {
+    auto db = pool_->lease();
+    WriteTransaction tx(*db);
+    attempt = require_job(*db, id).attempts;
+    if (lease && !check_lease(*db, id, *lease, iteration, row)) return;  // committed before: a retry
+    write_iteration(*db, id, iteration, row, state, previous);
+    tx.commit();
+  } catch (const StoreError& e) {
+    note_failure(e);
+    if (e.no_space() && attempt > 0) hand_on(id, attempt, e);
+    throw;
+  }
+}
+
+void JobStore::write_iteration(Connection& db, std::int64_t id, int iteration, const std::string& row,
+                               const std::vector<std::uint8_t>& state, const std::optional<CommitTime>& previous) {
   const std::string now = utc_now();
-  add_commit_seconds(*db, id, previous);
+  add_commit_seconds(db, id, previous);
   // A plain INSERT: an iteration recorded twice would be a bug, and must fail loudly.
-  db->prepare("INSERT INTO iterations (job_id, iteration, row) VALUES (?, ?, ?)").bind(1, id).bind(2, iteration).bind(3, row).run();
-  db->prepare("INSERT INTO states (job_id, iteration, state, created_at) VALUES (?, ?, ?, ?)")
+  db.prepare("INSERT INTO iterations (job_id, iteration, row) VALUES (?, ?, ?)").bind(1, id).bind(2, iteration).bind(3, row).run();
+  db.prepare("INSERT INTO states (job_id, iteration, state, created_at) VALUES (?, ?, ?, ?)")
       .bind(1, id)
       .bind(2, iteration)
       .bind_blob(3, state)
       .bind(4, now)
       .run();
   // Keep the latest two states: the newest, and one to fall back on.
-  db->prepare("DELETE FROM states WHERE job_id = ? AND iteration < ?").bind(1, id).bind(2, iteration - 1).run();
+  db.prepare("DELETE FROM states WHERE job_id = ? AND iteration < ?").bind(1, id).bind(2, iteration - 1).run();
   // The first committed iteration after a resume has used the new schedule: from here on a restart
   // continues it rather than starting it again.
-  db->prepare(
+  db.prepare(
         "UPDATE jobs SET iteration = ?, heartbeat_at = ?, updated_at = ?,"
         " settings = json_set(settings, '$.restart_schedule', json('false')) WHERE id = ?")
       .bind(1, iteration)
@@ -536,8 +704,7 @@ void JobStore::record_iteration(std::int64_t id, int iteration, const std::strin
       .bind(3, now)
       .bind(4, id)
       .run();
-  add_event(*db, id, "iteration", row);
-  tx.commit();
+  add_event(db, id, "iteration", row);
 }
 
 bool JobStore::cancel_requested(std::int64_t id) {
@@ -549,18 +716,36 @@ bool JobStore::cancel_requested(std::int64_t id) {
 
 void JobStore::finish(std::int64_t id, JobState state, const std::optional<std::string>& result,
                       const std::optional<std::string>& message, const std::optional<std::string>& error,
-                      const std::optional<CommitTime>& last_commit, const Lease* lease) {
+                      const std::optional<CommitTime>& last_commit, const Lease* lease,
+                      const std::string& finish_digest) {
   require_writable();
-  auto db = pool_->lease();
-  WriteTransaction tx(*db);
-  if (lease && !check_lease(*db, id, *lease, std::nullopt, {})) return;  // finished before: a retry
-  add_commit_seconds(*db, id, last_commit);
-  if (result) {
-    db->prepare("INSERT OR REPLACE INTO results (job_id, document) VALUES (?, ?)").bind(1, id).bind(2, *result).run();
+  int attempt = 0;
+  try {
+    auto db = pool_->lease();
+    WriteTransaction tx(*db);
+    attempt = require_job(*db, id).attempts;
+    if (lease && !check_lease(*db, id, *lease, std::nullopt, finish_digest)) return;  // finished before: a retry
+    add_commit_seconds(*db, id, last_commit);
+    if (result) {
+      db->prepare("INSERT OR REPLACE INTO results (job_id, document) VALUES (?, ?)").bind(1, id).bind(2, *result).run();
+    }
+    // The finish spends the lease: nothing more is written under it.
+    db->prepare("UPDATE jobs SET lease_owner = NULL, cancel_requested = 0, lease_secret = NULL, finish_digest = ? WHERE id = ?")
+        .bind(1, lease ? std::optional<std::string>(spent_lease(lease->secret, finish_digest)) : std::nullopt)
+        .bind(2, id)
+        .run();
+    change_state(*db, id, state, message, error);
+    tx.commit();
+  } catch (const StoreError& e) {
+    note_failure(e);
+    if (e.no_space() && attempt > 0) hand_on(id, attempt, e);
+    throw;
   }
-  db->prepare("UPDATE jobs SET lease_owner = NULL, cancel_requested = 0 WHERE id = ?").bind(1, id).run();
-  change_state(*db, id, state, message, error);
-  tx.commit();
+}
+
+bool JobStore::finish_allowed(std::int64_t id, const Lease& lease, const std::string& finish_digest) {
+  auto db = pool_->lease();
+  return check_lease(*db, id, lease, std::nullopt, finish_digest);
 }
 
 JobRecord JobStore::cancel(std::int64_t id) {
@@ -670,15 +855,29 @@ std::int64_t JobStore::database_bytes() const {
 }
 
 int JobStore::recover_interrupted(bool keep_slurm_jobs) {
-  if (!writable()) return 0;
-  auto db = pool_->lease();
-  WriteTransaction tx(*db);
-  std::vector<std::int64_t> orphans;
-  Statement q = db->prepare("SELECT id FROM jobs WHERE state = 'running' AND NOT (? AND slurm_job_id IS NOT NULL)");
-  q.bind(1, keep_slurm_jobs ? 1 : 0);
-  while (q.step()) orphans.push_back(q.integer(0));
-  for (std::int64_t id : orphans) interrupt(*db, id, "the server stopped while solving", max_interruptions_);
-  tx.commit();
+  const std::string what = "the server stopped while solving";
+  std::vector<std::pair<std::int64_t, int>> orphans;  // job, attempt
+  {
+    auto db = pool_->lease();
+    Statement q = db->prepare(
+        "SELECT id, attempts FROM jobs WHERE state = 'running' AND NOT (? AND slurm_job_id IS NOT NULL)");
+    q.bind(1, keep_slurm_jobs ? 1 : 0);
+    while (q.step()) orphans.emplace_back(q.integer(0), static_cast<int>(q.integer(1)));
+  }
+  if (orphans.empty()) return 0;
+  {
+    // Shown interrupted at once; written now if the store can, else once recover_writes can.
+    std::lock_guard lock(state_mutex_);
+    for (const auto& [id, attempt] : orphans) handed_on_[id] = {attempt, what, true};
+  }
+  if (writable()) {
+    try {
+      record_handed_on();
+    } catch (const StoreError& e) {
+      if (!e.no_space()) throw;
+      note_failure(e);
+    }
+  }
   return static_cast<int>(orphans.size());
 }
 

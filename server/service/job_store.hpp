@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -39,7 +40,7 @@ class JobConflict : public std::runtime_error {
 };
 
 /// The store is open read-only (it could not write at start-up, e.g. a full disk): reads work,
-/// writes are refused until a restart finds space again.
+/// writes are refused until space returns (JobStore::recover_writes reopens it writable).
 class StoreUnavailable : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -93,7 +94,11 @@ struct ClaimedJob {
   JobRecord job;
   std::string model;                             ///< the submitted document
   std::optional<std::vector<std::uint8_t>> state;  ///< the latest restart state, when resuming
-  Lease lease;                                     ///< this run's lease
+  /// This run's lease. A run handed to Slurm has none yet (empty secret): its worker redeems `ticket`.
+  Lease lease;
+  /// A run handed to Slurm: the single-use ticket (attempt and 128 random bits) its worker trades
+  /// for the lease (JobStore::redeem_ticket). Empty for a run in the service's own pool.
+  Lease ticket;
 };
 
 /// A running Slurm-executed job as the monitor sees it.
@@ -167,14 +172,26 @@ class JobStore {
   [[nodiscard]] std::vector<std::pair<JobState, int>> count_by_state();
   /// Bytes of the database file and its WAL.
   [[nodiscard]] std::int64_t database_bytes() const;
-  /// False when the store was opened read-only; why() says what failed.
-  [[nodiscard]] bool writable() const { return read_only_reason_.empty(); }
-  [[nodiscard]] const std::string& read_only_reason() const { return read_only_reason_; }
+  /// False while the store cannot write: opened read-only, or a write failed for want of space
+  /// (disk full, quota) and recover_writes has not yet found space again. why_not_writable() says
+  /// what failed. No job is claimed meanwhile.
+  [[nodiscard]] bool writable() const;
+  [[nodiscard]] std::string why_not_writable() const;
+  /// While not writable, at most once a second: when probe_bytes can be reserved beside the
+  /// database again (a probe file, removed at once), reopens a read-only store writable, records
+  /// the interruptions still held in memory, and becomes writable. True when writable.
+  bool recover_writes();
+  /// Free space the probe of recover_writes must find (bytes).
+  static constexpr std::int64_t probe_bytes = 1 << 20;
 
-  /// The oldest queued or interrupted job, now running (attempts + 1, a new lease), or nothing.
-  std::optional<ClaimedJob> claim(const std::string& worker);
+  /// The oldest queued or interrupted job, now running (attempts + 1), or nothing (also while not
+  /// writable). In-process runs get their lease; with_ticket (a run handed to Slurm) gets a ticket
+  /// instead, which only its worker can trade for the lease.
+  std::optional<ClaimedJob> claim(const std::string& worker, bool with_ticket = false);
   /// One finished iteration: its history row, its restart state (only the latest two are kept) and
-  /// its event, in one transaction. previous: the commit time of the iteration before, added to
+  /// its event, in one transaction. A commit that fails for want of space hands the job on:
+  /// interrupted (not counted as an interruption), recorded at once if the store can, else held in
+  /// memory (shown by get and list) until recover_writes records it; then the StoreError is rethrown. previous: the commit time of the iteration before, added to
   /// its stored row as commit_seconds in the same transaction. With a lease (a remote worker),
   /// LeaseConflict unless the lease still holds the running job; an iteration this lease already
   /// committed with the same row is accepted again unchanged (a retried request whose answer was lost).
@@ -184,10 +201,16 @@ class JobStore {
   [[nodiscard]] bool cancel_requested(std::int64_t id);
   /// A run ended: its final state, result document and message (and the commit time of its last
   /// iteration, added to that row as commit_seconds). With a lease, LeaseConflict unless it holds
-  /// the running job; a repeat by the same lease of a finish already recorded is ignored.
+  /// the running job; the finish spends the lease (no write under it is accepted again). A repeat by
+  /// the same lease with the same finish_digest (a retried request) is ignored; any other is a
+  /// LeaseConflict. A failure for want of space hands the job on, as record_iteration does.
   void finish(std::int64_t id, JobState state, const std::optional<std::string>& result,
               const std::optional<std::string>& message, const std::optional<std::string>& error,
-              const std::optional<CommitTime>& last_commit = {}, const Lease* lease = nullptr);
+              const std::optional<CommitTime>& last_commit = {}, const Lease* lease = nullptr,
+              const std::string& finish_digest = {});
+  /// Whether a finish under `lease` with `finish_digest` would be written (true) or is a retry of
+  /// the finish already recorded (false); LeaseConflict otherwise. A read: finish checks again.
+  [[nodiscard]] bool finish_allowed(std::int64_t id, const Lease& lease, const std::string& finish_digest);
 
   /// Cancels a queued or interrupted job at once, or asks a running one to stop at its next
   /// iteration boundary. JobConflict for a finished job.
@@ -206,13 +229,16 @@ class JobStore {
   /// workers), or failed once interrupted more than max_interruptions times; a job whose cancel was
   /// acknowledged (cancel_requested committed) becomes cancelled, keeping its restart state.
   /// Returns how many. keep_slurm_jobs: jobs handed to a Slurm job stay running (the Slurm monitor
-  /// decides), unless their cancel was acknowledged.
+  /// decides), unless their cancel was acknowledged. When the store cannot write (a full disk), the
+  /// jobs are shown interrupted from memory and recorded by recover_writes once space returns.
   int recover_interrupted(bool keep_slurm_jobs = false);
 
-  // Remote workers and the Slurm executor (job_store.cpp, last section).
+  // Remote workers and the Slurm executor (run_leases.cpp).
 
-  /// A queued or interrupted job claimed by a worker started by hand; JobConflict otherwise.
-  ClaimedJob claim_job(std::int64_t id, const std::string& worker);
+  /// A Slurm worker trades its run's ticket for the lease: the job must be running under the
+  /// ticket's attempt, handed to Slurm with exactly this ticket, not yet redeemed. The ticket is
+  /// spent; the lease (a new secret) is returned. LeaseConflict otherwise.
+  Lease redeem_ticket(std::int64_t id, const Lease& ticket, const std::string& worker);
   /// What the lease holder needs to run: the model, the latest state, the settings. LeaseConflict
   /// unless the lease holds the running job.
   ClaimedJob work(std::int64_t id, const Lease& lease);
@@ -233,16 +259,41 @@ class JobStore {
 
  private:
   class Pool;
+  /// A running job handed on in memory only (its interruption could not be written yet).
+  struct HandedOn {
+    int attempt = 0;
+    std::string what;
+    bool counted = false;  ///< an interruption counted against max_interruptions (a dead server)
+  };
   void open_writable();
   void open_read_only(const StoreError& why);
   void require_writable() const;
+  /// A write failed: for want of space, the store is not writable until recover_writes.
+  void note_failure(const StoreError& e);
+  /// A run's commit failed for want of space: the job becomes interrupted, now or (held in memory)
+  /// when recover_writes can record it.
+  void hand_on(std::int64_t id, int attempt, const StoreError& why);
+  /// Records the interruptions held in memory; StoreError when it cannot.
+  void record_handed_on();
+  Submitted insert_job(const std::string& model, const std::string& title, int max_iterations,
+                       const std::optional<std::string>& idempotency_key, const std::string& request_digest);
+  /// The writes of record_iteration, inside its transaction.
+  static void write_iteration(Connection& db, std::int64_t id, int iteration, const std::string& row,
+                              const std::vector<std::uint8_t>& state, const std::optional<CommitTime>& previous);
+  /// A record as the API shows it: a job handed on in memory reads interrupted.
+  JobRecord& shown(JobRecord& job) const;
   /// Gives pages freed by deletes back to the file system (auto_vacuum=INCREMENTAL).
   void reclaim_space();
 
   std::string path_;
   std::unique_ptr<Pool> pool_;
   int max_interruptions_;
-  std::string read_only_reason_;
+  mutable std::mutex state_mutex_;  ///< guards the members below
+  bool read_only_ = false;          ///< opened read-only (exclusive mode)
+  std::string write_problem_;       ///< why the store cannot write; empty when it can
+  std::map<std::int64_t, HandedOn> handed_on_;
+  std::mutex probe_mutex_;
+  std::chrono::steady_clock::time_point last_probe_{};
 };
 
 /// An exclusive advisory lock (flock) on the database file itself: one server per database, whatever

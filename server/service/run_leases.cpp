@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <random>
 
+#include "io/state_codec.hpp"
 #include "service/job_store.hpp"
 #include "service/job_store_detail.hpp"
 
@@ -12,7 +13,7 @@ using namespace detail;
 
 namespace {
 
-/// 128 random bits in hex: the secret half of a run's lease.
+/// 128 random bits in hex: the secret half of a run's lease or ticket.
 std::string new_lease_secret() {
   std::random_device device;
   std::string secret;
@@ -39,7 +40,9 @@ void load_run_input(Connection& db, ClaimedJob& claimed) {
 /// A running job cancelled without its run's say (its Slurm job ended or was scancelled): the lease
 /// is revoked, so the run can write nothing more.
 void cancel_revoked(Connection& db, const JobRecord& job, const std::string& why) {
-  db.prepare("UPDATE jobs SET lease_owner = NULL, lease_secret = NULL, cancel_requested = 0 WHERE id = ?").bind(1, job.id).run();
+  db.prepare("UPDATE jobs SET lease_owner = NULL, lease_secret = NULL, lease_ticket = NULL, cancel_requested = 0 WHERE id = ?")
+      .bind(1, job.id)
+      .run();
   change_state(db, job.id, JobState::cancelled, "cancelled after iteration " + std::to_string(job.iteration) + "; " + why);
 }
 
@@ -47,45 +50,71 @@ void cancel_revoked(Connection& db, const JobRecord& job, const std::string& why
 
 namespace detail {
 
-ClaimedJob start_run(Connection& db, std::int64_t id, const std::string& worker) {
+ClaimedJob start_run(Connection& db, std::int64_t id, const std::string& worker, bool with_ticket) {
   const std::string now = utc_now();
   const std::string secret = new_lease_secret();
+  // A run handed to Slurm holds a ticket, not yet a lease: only the worker sbatch started can
+  // redeem it (once), so nobody else can take the run, however the job's id is learnt.
   db.prepare(
         "UPDATE jobs SET attempts = attempts + 1, started_at = COALESCE(started_at, ?), lease_owner = ?,"
         " heartbeat_at = ?, cancel_requested = 0, finished_at = NULL, error = NULL, lease_secret = ?,"
-        " slurm_job_id = NULL, slurm_state = NULL WHERE id = ?")
+        " lease_ticket = ?, finish_digest = NULL, slurm_job_id = NULL, slurm_state = NULL WHERE id = ?")
       .bind(1, now)
       .bind(2, worker)
       .bind(3, now)
-      .bind(4, secret)
-      .bind(5, id)
+      .bind(4, with_ticket ? std::optional<std::string>() : secret)
+      .bind(5, with_ticket ? std::optional<std::string>(secret) : std::nullopt)
+      .bind(6, id)
       .run();
   change_state(db, id, JobState::running);
   ClaimedJob claimed;
   claimed.job = require_job(db, id);
-  claimed.lease = {claimed.job.attempts, secret};
+  (with_ticket ? claimed.ticket : claimed.lease) = {claimed.job.attempts, secret};
   load_run_input(db, claimed);
   return claimed;
 }
 
+std::string spent_lease(const std::string& secret, const std::string& finish_digest) {
+  io::Fingerprint f;
+  f.add(secret);
+  f.add(std::string_view("\0", 1));
+  f.add(finish_digest);
+  return f.hex();
+}
+
+bool same_secret(const std::string& a, const std::string& b) {
+  // The length is no secret (32 hex digits); the content is compared whole, wherever it differs.
+  if (a.size() != b.size() || b.empty()) return false;
+  unsigned char differ = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) differ |= static_cast<unsigned char>(a[k] ^ b[k]);
+  return differ == 0;
+}
+
 bool check_lease(Connection& db, std::int64_t id, const Lease& lease, std::optional<int> iteration,
                  const std::string& row) {
-  Statement q = db.prepare("SELECT state, attempts, lease_secret, iteration FROM jobs WHERE id = ?");
+  Statement q = db.prepare("SELECT state, attempts, lease_secret, iteration, finish_digest FROM jobs WHERE id = ?");
   q.bind(1, id);
   if (!q.step()) throw JobNotFound(id);
   const JobState state = parse_job_state(q.text(0)).value_or(JobState::failed);
   const auto attempts = static_cast<int>(q.integer(1));
   const std::optional<std::string> secret = q.optional_text(2);
   const auto committed = static_cast<int>(q.integer(3));
+  const std::optional<std::string> spent = q.optional_text(4);
   const std::string job = "job " + std::to_string(id);
-  if (lease.attempt != attempts || !secret || *secret != lease.secret) {
+  // The finish spent the lease; only the same finish again (a retry whose answer was lost) is
+  // recognized, and changes nothing.
+  if (!iteration && is_finished(state) && lease.attempt == attempts && spent &&
+      same_secret(spent_lease(lease.secret, row), *spent)) {
+    return false;
+  }
+  if (lease.attempt != attempts || !secret || !same_secret(lease.secret, *secret)) {
     throw LeaseConflict(job + ": the lease of attempt " + std::to_string(lease.attempt) +
                         " is no longer valid (the job is " + to_string(state) + ", attempt " +
-                        std::to_string(attempts) + "); this run must stop");
+                        std::to_string(attempts) + (is_finished(state) ? "; a finish spent its lease" : "") +
+                        "); this run must stop");
   }
   if (!iteration) {
     if (state == JobState::running) return true;
-    if (is_finished(state)) return false;
     throw LeaseConflict(job + " is " + to_string(state) + "; attempt " + std::to_string(attempts) + " cannot finish it");
   }
   if (state != JobState::running) {
@@ -102,16 +131,19 @@ bool check_lease(Connection& db, std::int64_t id, const Lease& lease, std::optio
                       std::to_string(committed) + ")");
 }
 
-void interrupt(Connection& db, std::int64_t id, const std::string& what, int max_interruptions) {
-  db.prepare("UPDATE jobs SET interruptions = interruptions + 1, lease_owner = NULL, lease_secret = NULL WHERE id = ?")
-      .bind(1, id)
+void interrupt(Connection& db, std::int64_t id, const std::string& what, int max_interruptions, bool counted) {
+  db.prepare(
+        "UPDATE jobs SET interruptions = interruptions + ?, lease_owner = NULL, lease_secret = NULL,"
+        " lease_ticket = NULL WHERE id = ?")
+      .bind(1, counted ? 1 : 0)
+      .bind(2, id)
       .run();
   const JobRecord job = require_job(db, id);
   if (job.cancel_requested) {
     // The cancel was acknowledged (202) and committed: honour it rather than resume the job. Its
     // restart state stays, so it can still be resumed by hand.
     cancel_revoked(db, job, what);
-  } else if (job.interruptions > max_interruptions) {
+  } else if (counted && job.interruptions > max_interruptions) {
     change_state(db, id, JobState::failed, std::nullopt,
                  what + "; interrupted " + std::to_string(job.interruptions) +
                      " times, it is not resumed again automatically (resume it by hand to try once more)");
@@ -127,18 +159,31 @@ void interrupt(Connection& db, std::int64_t id, const std::string& what, int max
 std::string settings_to_text(const RunSettings& settings) { return settings_json(settings).dump(); }
 RunSettings settings_from_text(const std::string& text) { return parse_settings(text); }
 
-ClaimedJob JobStore::claim_job(std::int64_t id, const std::string& worker) {
+Lease JobStore::redeem_ticket(std::int64_t id, const Lease& ticket, const std::string& worker) {
   require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
-  const JobRecord job = require_job(*db, id);
-  if (job.state != JobState::queued && job.state != JobState::interrupted) {
-    throw JobConflict("job " + std::to_string(id) + " is " + to_string(job.state) +
-                      "; a worker can take only a queued or interrupted job");
+  Statement q = db->prepare("SELECT state, attempts, lease_ticket FROM jobs WHERE id = ?");
+  q.bind(1, id);
+  if (!q.step()) throw JobNotFound(id);
+  const JobState state = parse_job_state(q.text(0)).value_or(JobState::failed);
+  const auto attempts = static_cast<int>(q.integer(1));
+  const std::optional<std::string> issued = q.optional_text(2);
+  if (state != JobState::running || attempts != ticket.attempt || !issued || !same_secret(ticket.secret, *issued)) {
+    throw LeaseConflict("job " + std::to_string(id) + ": no run of it holds this ticket (attempt " +
+                        std::to_string(ticket.attempt) + "; the job is " + to_string(state) + ", attempt " +
+                        std::to_string(attempts) + "). A lease is granted once, to the worker the service "
+                        "submitted to Slurm for the run; this run must stop");
   }
-  ClaimedJob claimed = start_run(*db, id, worker);
+  const Lease lease{attempts, new_lease_secret()};
+  db->prepare("UPDATE jobs SET lease_secret = ?, lease_ticket = NULL, heartbeat_at = ? WHERE id = ?")
+      .bind(1, lease.secret)
+      .bind(2, utc_now())
+      .bind(3, id)
+      .run();
+  db->prepare("UPDATE jobs SET lease_owner = COALESCE(lease_owner, ?) WHERE id = ?").bind(1, worker).bind(2, id).run();
   tx.commit();
-  return claimed;
+  return lease;
 }
 
 ClaimedJob JobStore::work(std::int64_t id, const Lease& lease) {

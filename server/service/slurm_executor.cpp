@@ -66,7 +66,7 @@ std::string batch_script(const SlurmOptions& options, std::int64_t job) {
   std::string command = "exec " + shell_quote(options.worker_binary) + " worker --server " +
                         shell_quote(options.worker_url) + " --job " + std::to_string(job);
   if (!options.token_file.empty()) command += " --token-file " + shell_quote(options.token_file);
-  // The lease travels in the environment (SAASGAPS_LEASE, exported by sbatch), not in the script.
+  // The run's ticket travels in the environment (SAASGAPS_TICKET, exported by sbatch), not in the script.
   return "#!/bin/sh\n# saasgaps job " + std::to_string(job) + "\n" + command + "\n";
 }
 
@@ -78,6 +78,7 @@ void SlurmExecutor::loop() {
   while (!stopping_) {
     const auto now = std::chrono::steady_clock::now();
     try {
+      store_.recover_writes();  // after a full disk: dispatching resumes once space returns
       if (now >= dispatch_paused_until) {
         if (dispatch()) {
           sbatch_failures = 0;
@@ -101,7 +102,7 @@ void SlurmExecutor::loop() {
 
 bool SlurmExecutor::dispatch() {
   while (!stopping_) {
-    std::optional<ClaimedJob> claimed = store_.claim("slurm (submitting)");
+    std::optional<ClaimedJob> claimed = store_.claim("slurm (submitting)", true);
     if (!claimed) return true;
     const std::int64_t id = claimed->job.id;
     std::vector<std::string> argv = {"sbatch", "--parsable", "--job-name=" + options_.job_name, "--no-requeue"};
@@ -110,21 +111,23 @@ bool SlurmExecutor::dispatch() {
     if (!options_.time_limit.empty()) argv.push_back("--time=" + options_.time_limit);
     if (!options_.log_dir.empty()) argv.push_back("--output=" + options_.log_dir + "/saasgaps-job-" + std::to_string(id) + "-%j.out");
     argv.insert(argv.end(), options_.extra.begin(), options_.extra.end());
+    // The worker trades the ticket for the run's lease (once): only a job the service handed to
+    // Slurm can be leased, and a ticket read later from the Slurm job's environment is spent.
     const ProcessResult r = run_process(argv, batch_script(options_, id),
-                                        {"SAASGAPS_LEASE=" + worker_protocol::format_lease(claimed->lease)}, command_limit);
+                                        {"SAASGAPS_TICKET=" + worker_protocol::format_lease(claimed->ticket)}, command_limit);
     const std::string slurm_id = trimmed(r.out.substr(0, r.out.find(';')));
     if (r.exit_code != 0 || slurm_id.empty() || slurm_id.find_first_not_of("0123456789_") != std::string::npos) {
       const std::string why = "sbatch failed (exit " + std::to_string(r.exit_code) + "): " + trimmed(r.err + " " + r.out);
       log("job " + std::to_string(id) + ": " + why);
-      store_.interrupt_run(id, claimed->lease.attempt, why);
+      store_.interrupt_run(id, claimed->ticket.attempt, why);
       hub_.notify();
       return false;
     }
-    if (!store_.set_slurm_job(id, claimed->lease.attempt, slurm_id, "PENDING")) {
+    if (!store_.set_slurm_job(id, claimed->ticket.attempt, slurm_id, "PENDING")) {
       // Cancelled between the claim and now: nothing is to run.
       scancel(slurm_id);
     }
-    log("job " + std::to_string(id) + " attempt " + std::to_string(claimed->lease.attempt) + " is Slurm job " + slurm_id);
+    log("job " + std::to_string(id) + " attempt " + std::to_string(claimed->ticket.attempt) + " is Slurm job " + slurm_id);
     note_run_started(*claimed, "slurm job " + slurm_id);
     hub_.notify();
   }

@@ -68,7 +68,7 @@ class SlurmExecutor {
 };
 
 /// The batch script that runs one job's worker: `exec BINARY worker --server URL --job ID
-/// [--token-file F]`, every word quoted. The lease is not in it (it travels in the environment).
+/// [--token-file F]`, every word quoted. The run's ticket is not in it (it travels in the environment).
 std::string batch_script(const SlurmOptions& options, std::int64_t job);
 
 /// Quotes a word for a POSIX shell: '...' with every ' written as '\''.

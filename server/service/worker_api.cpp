@@ -37,16 +37,34 @@ auto decoded(const httplib::Request& req, Decode decode) {
 
 }  // namespace
 
-void install_worker_api(httplib::Server& server, JobStore& store, EventHub& hub) {
-  server.Post(R"(/v1/jobs/(\d+)/lease)", [&store, &hub](const httplib::Request& req, httplib::Response& res) {
+void install_worker_api(httplib::Server& server, JobStore& store, EventHub& hub, bool remote_workers) {
+  if (!remote_workers) {
+    // No worker of this service can exist: the in-process pool runs every job. Answered as the
+    // unknown resources they are here, saying why, so no lease can keep a job from the pool and no
+    // result can be posted for one.
+    const auto absent = [](const httplib::Request& req, httplib::Response&) {
+      throw HttpError(404, "Not Found",
+                      req.method + " " + req.path + ": no such resource; the remote-worker routes exist only on a "
+                      "service started with --executor slurm, for the workers it submits to Slurm");
+    };
+    for (const char* route : {R"(/v1/jobs/(\d+)/lease)", R"(/v1/jobs/(\d+)/work/iterations)", R"(/v1/jobs/(\d+)/work/finish)"}) {
+      server.Post(route, absent);
+    }
+    server.Get(R"(/v1/jobs/(\d+)/work)", absent);
+    return;
+  }
+  server.Post(R"(/v1/jobs/(\d+)/lease)", [&store](const httplib::Request& req, httplib::Response& res) {
+    const std::optional<Lease> ticket = protocol::parse_lease(req.get_header_value(protocol::ticket_header));
+    if (!ticket) {
+      throw HttpError(400, "Bad Request",
+                      std::string("a lease is granted only for the run's ticket, which the service passed to the "
+                                  "worker it submitted to Slurm: ") + protocol::ticket_header + ": ATTEMPT:TICKET");
+    }
     const std::string who = req.get_header_value("User-Agent");
     const std::string worker = "worker " + req.remote_addr + (who.empty() ? "" : " " + who);
-    const ClaimedJob claimed = store.claim_job(job_in_path(req), worker);
-    note_run_started(claimed, worker);
+    const Lease lease = store.redeem_ticket(job_in_path(req), *ticket, worker);
     res.status = 201;
-    res.set_content(nlohmann::json{{"attempt", claimed.lease.attempt}, {"secret", claimed.lease.secret}}.dump(),
-                    "application/json");
-    hub.notify();
+    res.set_content(nlohmann::json{{"attempt", lease.attempt}, {"secret", lease.secret}}.dump(), "application/json");
   });
   server.Get(R"(/v1/jobs/(\d+)/work)", [&store](const httplib::Request& req, httplib::Response& res) {
     res.set_content(protocol::encode_work(store.work(job_in_path(req), request_lease(req))), protocol::cbor_type);
@@ -65,10 +83,19 @@ void install_worker_api(httplib::Server& server, JobStore& store, EventHub& hub)
     const std::int64_t id = job_in_path(req);
     const Lease lease = request_lease(req);
     const protocol::Finish f = decoded(req, protocol::decode_finish);
-    store.finish(id, f.state, f.result, f.message, f.error, {}, &lease);
+    const std::string digest = protocol::body_digest(req.body);
+    res.status = 204;
+    // The lease first (cheap), then the model: reading it is for the lease holder only.
+    if (!store.finish_allowed(id, lease, digest)) return;  // a retry of the recorded finish
+    const std::string expected = parse_run_model(store.model(id))->digest;
+    if (f.model_digest != expected) {
+      throw HttpError(422, "Unprocessable Content",
+                      "job " + std::to_string(id) + ": the finish is for a model with digest \"" + f.model_digest +
+                          "\", not the job's (\"" + expected + "\"); nothing was stored");
+    }
+    store.finish(id, f.state, f.result, f.message, f.error, {}, &lease, digest);
     hub.notify();
     note_finished(store, id, f.state, f.message, f.error);
-    res.status = 204;
   });
 }
 

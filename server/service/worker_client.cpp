@@ -41,7 +41,8 @@ class ServiceConnection {
     if (options.token) client_.set_bearer_token_auth(*options.token);
   }
 
-  void set_lease(const Lease& lease) { headers_ = {{protocol::lease_header, protocol::format_lease(lease)}}; }
+  /// The one credential header every request carries from now on (the ticket, then the lease).
+  void set_header(const char* name, const std::string& value) { headers_ = {{name, value}}; }
 
   /// The successful answer's body. LeaseLost on 409, ServiceUnreachable when retries run out,
   /// std::runtime_error for any other refusal (a bug or a misconfiguration: do not retry).
@@ -99,7 +100,8 @@ class ServiceConnection {
 /// The remote sink: each call is one request, committed by the service before it answers.
 class HttpSink final : public RunSink {
  public:
-  HttpSink(ServiceConnection& service, std::string job_path) : service_(service), path_(std::move(job_path)) {}
+  HttpSink(ServiceConnection& service, std::string job_path, std::string model_digest)
+      : service_(service), path_(std::move(job_path)), model_digest_(std::move(model_digest)) {}
 
   void iteration(int iteration, const std::string& row, const std::vector<std::uint8_t>& state) override {
     const json answer = answer_json(service_.send("POST", path_ + "/work/iterations",
@@ -112,7 +114,7 @@ class HttpSink final : public RunSink {
 
   void finish(JobState state, const std::optional<std::string>& result, const std::optional<std::string>& message,
               const std::optional<std::string>& error) override {
-    service_.send("POST", path_ + "/work/finish", protocol::encode_finish({state, result, message, error}));
+    service_.send("POST", path_ + "/work/finish", protocol::encode_finish({state, result, message, error, model_digest_}));
     service_.log(std::string("finished: ") + to_string(state) + (message ? " (" + *message + ")" : "") +
                  (error ? " error: " + *error : ""));
   }
@@ -120,6 +122,7 @@ class HttpSink final : public RunSink {
  private:
   ServiceConnection& service_;
   std::string path_;
+  std::string model_digest_;
   std::atomic<bool> stop_{false};  // set on the commit thread, read on the solver's
 };
 
@@ -132,15 +135,27 @@ int run_worker(const WorkerOptions& options) {
     Lease lease;
     if (options.lease) {
       lease = *options.lease;
-    } else {
+    } else if (options.ticket) {
+      // Single use: a retry after a lost answer finds the ticket spent (409, exit 5), and the service
+      // resubmits the run when its Slurm job ends.
+      service.set_header(protocol::ticket_header, protocol::format_lease(*options.ticket));
       const json granted = answer_json(service.send("POST", path + "/lease", "", "application/json"));
       lease = {granted.at("attempt").get<int>(), granted.at("secret").get<std::string>()};
+    } else {
+      throw std::invalid_argument("run_worker needs the run's lease or its ticket");
     }
-    service.set_lease(lease);
-    const protocol::Work work = protocol::decode_work(service.send("GET", path + "/work"));
+    service.set_header(protocol::lease_header, protocol::format_lease(lease));
+    protocol::Work work = protocol::decode_work(service.send("GET", path + "/work"));
     service.log("job " + std::to_string(work.job) + ", attempt " + std::to_string(work.attempt) +
                 (work.input.state ? ": resuming" : ": starting"));
-    HttpSink sink(service, path);
+    // Read here (execute_run takes it as read) for its digest, which the finish carries: the
+    // service refuses a result for another model. A model that does not read fails in execute_run.
+    try {
+      work.input.parsed = parse_run_model(work.input.model);
+    } catch (const std::exception&) {
+      work.input.parsed = nullptr;
+    }
+    HttpSink sink(service, path, work.input.parsed ? work.input.parsed->digest : std::string());
     const std::atomic<bool> never{false};
     execute_run(work.input, sink, never);
     return 0;

@@ -19,7 +19,8 @@
 
 namespace saasgaps::service {
 
-/// The service refused this run's lease (409): another run holds the job, or it was cancelled.
+/// The service refused this run's lease or ticket (409): another run holds the job, it was
+/// cancelled, or the ticket was spent.
 class LeaseLost : public RunAbandoned {
  public:
   using RunAbandoned::RunAbandoned;
@@ -34,7 +35,8 @@ class ServiceUnreachable : public RunAbandoned {
 struct WorkerOptions {
   std::string server;  ///< http://host:port
   std::int64_t job = 0;
-  std::optional<Lease> lease;         ///< none: take the job (it must be queued or interrupted)
+  std::optional<Lease> lease;         ///< the run's lease, when already redeemed
+  std::optional<Lease> ticket;        ///< otherwise: the run's ticket, redeemed for the lease
   std::optional<std::string> token;   ///< bearer token
   std::chrono::milliseconds retry_for{std::chrono::minutes(2)};  ///< per request, before giving up
   std::chrono::milliseconds first_backoff{250};

@@ -7,6 +7,8 @@
 
 #include "io/json_limits.hpp"
 
+#include "io/state_codec.hpp"
+
 namespace saasgaps::service::worker_protocol {
 
 using nlohmann::json;
@@ -62,6 +64,12 @@ std::vector<std::uint8_t> bytes(const json& j, const char* name) {
 
 }  // namespace
 
+std::string body_digest(const std::string& body) {
+  io::Fingerprint f;
+  f.add(body);
+  return f.hex();
+}
+
 std::string format_lease(const Lease& lease) { return std::to_string(lease.attempt) + ":" + lease.secret; }
 
 std::optional<Lease> parse_lease(std::string_view text) {
@@ -115,6 +123,7 @@ std::string encode_finish(const Finish& finish) {
   if (finish.result) j["result"] = *finish.result;
   if (finish.message) j["message"] = *finish.message;
   if (finish.error) j["error"] = *finish.error;
+  j["model_digest"] = finish.model_digest;
   const std::vector<std::uint8_t> cbor = json::to_cbor(j);
   return {cbor.begin(), cbor.end()};
 }
@@ -132,6 +141,7 @@ Finish decode_finish(const std::string& body) {
   finish.result = optional_text(j, "result");
   finish.message = optional_text(j, "message");
   finish.error = optional_text(j, "error");
+  finish.model_digest = field<std::string>(j, "model_digest");
   if (finish.result) require_json(*finish.result, "result");
   return finish;
 }

@@ -3,9 +3,12 @@
 /// CBOR maps, so restart states travel as the bytes the store keeps, not as base64 or JSON numbers:
 ///   GET  /v1/jobs/{id}/work              -> {job, attempt, model, state: bytes|null, settings}
 ///   POST /v1/jobs/{id}/work/iterations   <- {iteration, row, state: bytes}   -> JSON {stop}
-///   POST /v1/jobs/{id}/work/finish       <- {state, result?, message?, error?}
-///   POST /v1/jobs/{id}/lease             -> JSON {attempt, secret} (a worker started by hand)
-/// Every request but the last carries the run's lease in the Saasgaps-Lease header, "ATTEMPT:SECRET".
+///   POST /v1/jobs/{id}/work/finish       <- {state, result?, message?, error?, model_digest}
+///   POST /v1/jobs/{id}/lease             -> JSON {attempt, secret}
+/// The lease request carries the run's single-use ticket in the Saasgaps-Ticket header,
+/// "ATTEMPT:TICKET" (passed by the Slurm executor in $SAASGAPS_TICKET); every other request carries
+/// the lease it was granted in the Saasgaps-Lease header, "ATTEMPT:SECRET". The routes exist only on
+/// a service with the Slurm executor.
 
 #include <cstdint>
 #include <optional>
@@ -19,10 +22,11 @@
 namespace saasgaps::service::worker_protocol {
 
 inline constexpr const char* lease_header = "Saasgaps-Lease";
+inline constexpr const char* ticket_header = "Saasgaps-Ticket";
 inline constexpr const char* cbor_type = "application/cbor";
 
 std::string format_lease(const Lease& lease);
-/// "ATTEMPT:SECRET" with ATTEMPT >= 1 and a non-empty secret; nothing otherwise.
+/// "ATTEMPT:SECRET" with ATTEMPT >= 1 and a non-empty secret; nothing otherwise. Tickets read alike.
 std::optional<Lease> parse_lease(std::string_view text);
 
 struct Work {
@@ -44,11 +48,16 @@ Iteration decode_iteration(const std::string& body);
 struct Finish {
   JobState state = JobState::failed;
   std::optional<std::string> result, message, error;
+  /// model_digest of the model the run solved (io/state_codec.hpp): must be the job's model's.
+  std::string model_digest;
 };
 std::string encode_finish(const Finish& finish);
 Finish decode_finish(const std::string& body);
 
 /// A body that does not decode: std::invalid_argument naming the field. A body (or the JSON text of
 /// a row or result in it) nesting deeper than io::max_json_depth: io::NestingTooDeep.
+
+/// Fingerprint of a request body (io::Fingerprint): tells a retried finish from another one.
+std::string body_digest(const std::string& body);
 
 }  // namespace saasgaps::service::worker_protocol

@@ -85,7 +85,7 @@ void measure(const std::string& name, const json& document, int repeat, service:
   for (int k = 0; k < repeat; ++k) {
     // Local: the pool's commit.
     const auto a = store.submit(text, model.title, model.solver.max_iterations, std::nullopt, "bench").job.id;
-    store.claim_job(a, "bench local");
+    if (store.claim("bench local")->job.id != a) throw std::logic_error("the bench's job was not the one queued");
     for (std::size_t i = 0; i < its.size(); ++i) {
       const auto start = std::chrono::steady_clock::now();
       store.record_iteration(a, static_cast<int>(i + 1), its[i].row, its[i].state);
@@ -93,7 +93,9 @@ void measure(const std::string& name, const json& document, int repeat, service:
     }
     // Remote: the worker's request, through the service's route to the same commit.
     const auto b = store.submit(text, model.title, model.solver.max_iterations, std::nullopt, "bench").job.id;
-    const service::Lease lease = store.claim_job(b, "bench remote").lease;
+    const service::ClaimedJob handed = *store.claim("bench remote", true);
+    if (handed.job.id != b) throw std::logic_error("the bench's job was not the one queued");
+    const service::Lease lease = store.redeem_ticket(b, handed.ticket, "bench remote");
     const httplib::Headers headers = {{service::worker_protocol::lease_header, service::worker_protocol::format_lease(lease)}};
     for (std::size_t i = 0; i < its.size(); ++i) {
       const auto start = std::chrono::steady_clock::now();
@@ -131,7 +133,9 @@ int main(int argc, char** argv) {
     service::JobStore store((dir / "jobs.db").string(), 3);
     service::EventHub hub;
     httplib::Server server;
-    service::HttpApi api(store, hub, {});
+    service::ApiOptions options;
+    options.remote_workers = true;  // the worker routes, as with --executor slurm
+    service::HttpApi api(store, hub, options);
     api.install(server);
     server.set_payload_max_length(std::size_t{1} << 32);
     const int port = server.bind_to_any_port("127.0.0.1");

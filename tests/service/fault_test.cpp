@@ -175,6 +175,17 @@ TEST_F(Faults, SlowAndIdleClientsDoNotStarveTheServer) {
   for (auto& c : idle) EXPECT_TRUE(c->closed_by_server(milliseconds(500)));
 }
 
+/// Polls /healthz until `writable` is `expected`, up to `timeout`; returns the last answer.
+json wait_for_writable(httplib::Client& client, bool expected, seconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  json health = get_json(client, "/healthz");
+  while (health["writable"] != expected && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(milliseconds(50));
+    health = get_json(client, "/healthz");
+  }
+  return health;
+}
+
 /// A small tmpfs for the disk-full test; unmounted when destroyed. Needs CAP_SYS_ADMIN (root).
 class SmallDisk {
  public:
@@ -230,6 +241,12 @@ TEST_F(Faults, FullDiskRefusesWritesAndStillServesReads) {
     EXPECT_NE(ready->body.find("cannot be written"), std::string::npos) << ready->body;
     problem(client.Post("/v1/jobs", example_text("report-problem1.json"), "application/json"), 503);
     EXPECT_NE(server.log().find("database_read_only"), std::string::npos) << server.log();
+    // Space returns: the read-only store reopens writable without a restart (issue 17).
+    disk.empty();
+    EXPECT_EQ(wait_for_writable(client, true, seconds(10))["writable"], true) << server.log();
+    const std::int64_t later = submit(client, example_text("report-problem1.json"));
+    EXPECT_EQ(wait_for_state(client, later, {"converged", "failed"})["state"], "converged");
+    EXPECT_EQ(client.Get("/v1/jobs/" + std::to_string(job) + "/result")->body, stored_result);
     EXPECT_EQ(server.stop(), 0);
   }
   disk.empty();
@@ -252,6 +269,92 @@ TEST_F(Faults, FullDiskRefusesWritesAndStillServesReads) {
     EXPECT_EQ(client.Get("/v1/jobs/" + std::to_string(job) + "/result")->body, stored_result);
     server.kill_hard();
   }
+}
+
+// Issue 17, defect 5: the disk fills under a running job. Its failing commit hands it on
+// (interrupted, not running) at once, and the probes say the store cannot write; a restart on the
+// full disk serves every stored result; when space returns the job resumes on its own and ends as
+// an uninterrupted run does.
+TEST_F(Faults, DiskFullUnderARunningJobInterruptsItAndItResumesWhenSpaceReturns) {
+  SmallDisk disk(dir_ / "disk", "64m");
+  if (!disk.mounted()) GTEST_SKIP() << "cannot mount a small tmpfs to fill (" << disk.error() << "); needs root";
+  const fs::path db = dir_ / "disk" / "jobs.db";
+  const fs::path log = dir_ / "server.log";  // off the small disk
+  const std::int64_t done = one_finished_job(db, example_text("report-problem1.json"));
+  const std::string body = tilted_block_document(120).dump();
+  std::string stored_result;
+  std::int64_t job = 0;
+  {
+    ServerProcess server(db, {}, log);
+    httplib::Client client = server.client();
+    stored_result = client.Get("/v1/jobs/" + std::to_string(done) + "/result")->body;
+    job = submit(client, body);
+    for (int k = 0; k < 12000 && get_json(client, "/v1/jobs/" + std::to_string(job))["iteration"] < 2; ++k) {
+      std::this_thread::sleep_for(milliseconds(5));
+    }
+    EXPECT_EQ(get_json(client, "/healthz")["writable"], true);
+    disk.fill();
+    // The next commit fails: the job is handed on at once, not left running.
+    const json interrupted = wait_for_state(client, job, {"interrupted", "converged", "failed"}, seconds(60));
+    EXPECT_EQ(interrupted["state"], "interrupted") << interrupted.dump();
+    EXPECT_EQ(interrupted["interruptions"], 0) << "a full disk is no fault of the run";
+    EXPECT_EQ(wait_for_writable(client, false, seconds(5))["writable"], false);
+    const httplib::Result ready = client.Get("/readyz");
+    EXPECT_EQ(ready->status, 503);
+    EXPECT_NE(ready->body.find("write failed"), std::string::npos) << ready->body;
+    std::this_thread::sleep_for(milliseconds(1500));  // no job starts again while the disk is full
+    EXPECT_EQ(get_json(client, "/v1/jobs/" + std::to_string(job))["state"], "interrupted");
+    EXPECT_NE(server.log().find("\"event\":\"job_interrupted\""), std::string::npos) << server.log();
+    server.kill_hard();
+  }
+  {
+    // Restarted with the disk still full: it starts, serves what is stored, and says it cannot write.
+    ServerProcess server(db, {}, log);
+    httplib::Client client = server.client();
+    EXPECT_EQ(client.Get("/v1/jobs/" + std::to_string(done) + "/result")->body, stored_result);
+    EXPECT_EQ(get_json(client, "/healthz")["writable"], false);
+    EXPECT_EQ(client.Get("/readyz")->status, 503);
+    const json waiting = get_json(client, "/v1/jobs/" + std::to_string(job));
+    EXPECT_EQ(waiting["state"], "interrupted") << waiting.dump();
+    EXPECT_GE(waiting["iteration"].get<int>(), 1);
+    // Space returns: the store becomes writable and the job resumes on its own, to the result an
+    // uninterrupted run gives.
+    disk.empty();
+    EXPECT_EQ(wait_for_writable(client, true, seconds(30))["writable"], true) << server.log();
+    const json finished = wait_for_state(client, job, {"converged", "not_converged", "failed", "cancelled"});
+    EXPECT_EQ(finished["state"], "converged") << finished.dump();
+    EXPECT_EQ(result_numbers(get_json(client, "/v1/jobs/" + std::to_string(job) + "/result")),
+              result_numbers(solve_locally(body)));
+    EXPECT_EQ(client.Get("/readyz")->status, 200);
+    EXPECT_EQ(server.stop(), 0);
+  }
+}
+
+// Issue 17, defect 4: with the local executor no remote worker exists, so the worker routes do not
+// either: a lease cannot take a job from the pool (which then ran for ever), and no result can be
+// posted for a job. The jobs run, and cancel, as if nobody had asked.
+TEST_F(Faults, WorkerRoutesDoNotExistOnTheLocalExecutor) {
+  ServerProcess server(database());
+  httplib::Client client = server.client();
+  const std::int64_t busy = submit(client, tilted_block_document(120).dump());
+  wait_for_state(client, busy, {"running"});
+  const std::int64_t job = submit(client, example_text("report-problem1.json"));
+  const std::string path = "/v1/jobs/" + std::to_string(job);
+  const httplib::Result lease = client.Post(path + "/lease", "", "application/json");
+  EXPECT_EQ(lease->status, 404) << lease->body;
+  EXPECT_NE(lease->body.find("--executor slurm"), std::string::npos) << lease->body;
+  const std::vector<std::uint8_t> forged = json::to_cbor(json{{"state", "converged"}, {"result", R"({"status":"converged"})"}});
+  const httplib::Headers guessed = {{"Saasgaps-Lease", "1:00000000000000000000000000000000"}};
+  EXPECT_EQ(client.Post(path + "/work/finish", guessed, std::string(forged.begin(), forged.end()), "application/cbor")->status, 404);
+  EXPECT_EQ(client.Get(path + "/work", guessed)->status, 404);
+  EXPECT_EQ(get_json(client, path)["state"], "queued");
+  // The running job still cancels; the queued one runs to its own result.
+  ASSERT_EQ(client.Post("/v1/jobs/" + std::to_string(busy) + "/cancel", "", "application/json")->status, 202);
+  EXPECT_EQ(wait_for_state(client, busy, {"cancelled", "converged", "failed"})["state"], "cancelled");
+  EXPECT_EQ(wait_for_state(client, job, {"converged", "failed", "cancelled"})["state"], "converged");
+  EXPECT_EQ(result_numbers(get_json(client, path + "/result")),
+            result_numbers(solve_locally(example_text("report-problem1.json"))));
+  EXPECT_EQ(client.Delete(path)->status, 204);
 }
 
 // Defect 7: a hard link is the same file: the second server must not open it.

@@ -36,14 +36,22 @@ TEST(WorkerProtocol, IterationsAndFinishesRoundTripTheirBytes) {
   EXPECT_EQ(it.row, R"({"iteration":12})");
   EXPECT_EQ(it.state, state);
 
-  const protocol::Finish f = protocol::decode_finish(protocol::encode_finish({JobState::cancelled, "{}", "stopped", std::nullopt}));
+  const protocol::Finish f =
+      protocol::decode_finish(protocol::encode_finish({JobState::cancelled, "{}", "stopped", std::nullopt, "0123abcd"}));
   EXPECT_EQ(f.state, JobState::cancelled);
   EXPECT_EQ(f.result, "{}");
   EXPECT_EQ(f.message, "stopped");
   EXPECT_FALSE(f.error);
+  EXPECT_EQ(f.model_digest, "0123abcd");
+  // A finish names the model it solved: without model_digest it is refused.
+  const std::vector<std::uint8_t> anonymous = nlohmann::json::to_cbor(nlohmann::json{{"state", "converged"}, {"result", "{}"}});
+  EXPECT_THROW(protocol::decode_finish(std::string(anonymous.begin(), anonymous.end())), std::invalid_argument);
+  // Two finishes differing anywhere have different digests (a retry is recognized by it).
+  EXPECT_NE(protocol::body_digest(protocol::encode_finish({JobState::converged, "{}", {}, {}, "a"})),
+            protocol::body_digest(protocol::encode_finish({JobState::converged, "{ }", {}, {}, "a"})));
   // A run cannot declare itself interrupted (that is the service's call, and counted), nor running.
-  EXPECT_THROW(protocol::decode_finish(protocol::encode_finish({JobState::interrupted, {}, {}, {}})), std::invalid_argument);
-  EXPECT_THROW(protocol::decode_finish(protocol::encode_finish({JobState::running, {}, {}, {}})), std::invalid_argument);
+  EXPECT_THROW(protocol::decode_finish(protocol::encode_finish({JobState::interrupted, {}, {}, {}, "d"})), std::invalid_argument);
+  EXPECT_THROW(protocol::decode_finish(protocol::encode_finish({JobState::running, {}, {}, {}, "d"})), std::invalid_argument);
   EXPECT_THROW(protocol::decode_iteration(protocol::encode_iteration(0, "{}", state)), std::invalid_argument);
   EXPECT_THROW(protocol::decode_iteration(protocol::encode_iteration(1, "{not json", state)), std::invalid_argument);
   EXPECT_THROW(protocol::decode_iteration("\xa0"), std::invalid_argument);  // an empty CBOR map

@@ -163,7 +163,8 @@ TEST_F(Slurm, ScancelMidRunResumesAndTheStaleWorkerIsRefused) {
                                 "application/cbor");
   ASSERT_TRUE(late);
   EXPECT_EQ(late->status, 409) << late->body;
-  const std::vector<std::uint8_t> late_finish = json::to_cbor(json{{"state", "failed"}, {"error", "late"}});
+  const std::vector<std::uint8_t> late_finish =
+      json::to_cbor(json{{"state", "failed"}, {"error", "late"}, {"model_digest", "0000000000000000"}});
   EXPECT_EQ(client.Post(path + "/work/finish", stale, std::string(late_finish.begin(), late_finish.end()),
                         "application/cbor")->status, 409);
   EXPECT_EQ(client.Get(path + "/work", stale)->status, 409);
