@@ -1,5 +1,7 @@
 #include "cli/import_command.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <filesystem>
 #include <iostream>
 
@@ -10,7 +12,17 @@
 
 namespace saasgaps::cli {
 
+void add_mesh_limit_options(CLI::App& command, io::MeshLimits& limits) {
+  command.add_option("--max-mesh-nodes", limits.max_nodes, "Most nodes a Gmsh mesh may have (413 / exit 2 beyond)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
+      ->capture_default_str();
+  command.add_option("--mesh-time-limit", limits.seconds, "Seconds Gmsh may take to read or mesh one file")
+      ->check(CLI::Range(1, 86400))
+      ->capture_default_str();
+}
+
 int run_import(const ImportOptions& options) {
+  io::set_mesh_limits(options.mesh);
   require_writable(options.model_path, "-o");  // before Gmsh meshes anything
   const nlohmann::json assembly = io::parse_document(read_file(options.assembly_path));
   const std::filesystem::path base = std::filesystem::absolute(options.assembly_path).parent_path();

@@ -5,12 +5,22 @@
 
 #include <string>
 
+#include "io/gmsh_mesh.hpp"
+
+namespace CLI {
+class App;
+}
+
 namespace saasgaps::cli {
 
 struct ImportOptions {
   std::string assembly_path;
   std::string model_path;  ///< empty: stdout
+  io::MeshLimits mesh;
 };
+
+/// --max-mesh-nodes and --mesh-time-limit, for `import` and `serve` (docs/import.md).
+void add_mesh_limit_options(CLI::App& command, io::MeshLimits& limits);
 
 /// Exit code 0 when the model was written; throws ModelError (exit 2) with every issue, each at the
 /// JSON Pointer of the assembly value it concerns.

@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
       "import", "Build a model from an assembly: a Gmsh mesh and its physical groups (docs/import.md)");
   import_cmd->add_option("assembly", import.assembly_path, "Assembly document (JSON)")->required();
   import_cmd->add_option("-o,--output", import.model_path, "Model document to write (default: stdout)");
+  saasgaps::cli::add_mesh_limit_options(*import_cmd, import.mesh);
 
   saasgaps::cli::ServeOptions serve;
   CLI::App* serve_cmd = app.add_subcommand("serve", "Run the HTTP job service on an SQLite database file");
@@ -66,6 +67,7 @@ int main(int argc, char** argv) {
   serve_cmd->add_option("--max-body", serve.max_body, "Largest request body in bytes (413 beyond)")
       ->check(CLI::Range(std::size_t{1024}, std::size_t{1} << 40))
       ->capture_default_str();
+  saasgaps::cli::add_mesh_limit_options(*serve_cmd, serve.mesh);
   serve_cmd->add_option("--token-file", serve.token_file, "File holding a bearer token every request must carry");
   serve_cmd->add_option("--max-streams", serve.max_streams, "Concurrent event streams (503 beyond)")
       ->check(CLI::Range(1, 256))

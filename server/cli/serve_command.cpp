@@ -177,6 +177,7 @@ int run_serve(const ServeOptions& options) {
   service::GuardedServer server(limits);
   server.set_socket_options(exclusive_port);
   server.set_payload_max_length(options.max_body);
+  io::set_mesh_limits(options.mesh);
   // Workers send the Host of --slurm-worker-url: the Host check (without a token) must accept it.
   std::vector<std::string> allowed_hosts = options.allowed_hosts;
   if (slurm && !options.slurm_worker_url.empty()) allowed_hosts.push_back(url_authority(options.slurm_worker_url));

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "io/gmsh_mesh.hpp"
+
 namespace saasgaps::cli {
 
 struct ServeOptions {
@@ -14,6 +16,7 @@ struct ServeOptions {
   std::string database = "saasgaps.db";
   int workers = 1;
   std::size_t max_body = 256UL * 1024 * 1024;
+  io::MeshLimits mesh;  ///< what reading one uploaded mesh may cost (POST /v1/imports)
   std::string token_file;       ///< bearer-token authentication when set
   int max_streams = 4;
   int max_interruptions = 3;

@@ -6,6 +6,7 @@
 
 #include "cli/http_client.hpp"
 #include "errors.hpp"
+#include "io/gmsh_mesh.hpp"
 
 namespace saasgaps::cli {
 
@@ -155,6 +156,10 @@ int run_command(const std::function<int()>& command, const std::string& document
     for (const InputIssue& issue : e.issues()) {
       std::cerr << (issue.pointer.empty() ? "(document)" : issue.pointer) << ": " << issue.detail << '\n';
     }
+    return exit_code::bad_model;
+  } catch (const io::MeshTooLarge& e) {
+    // A mesh over the limits is refused like a bad assembly: the input is at fault.
+    std::cerr << "invalid " << document << ": 1 error\n/mesh: " << e.what() << '\n';
     return exit_code::bad_model;
   } catch (const SingularModelError& e) {
     // A mechanism is a defect of the model (the model must be restrained).

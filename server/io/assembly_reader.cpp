@@ -183,6 +183,8 @@ void Importer::load_mesh() {
   if (!path) return;
   try {
     mesh_ = read_gmsh_mesh(*path);
+  } catch (const MeshTooLarge&) {
+    throw;  // a limit, not a defect of the assembly: the service answers 413
   } catch (const MeshError& e) {
     report("/mesh", e.what());
     return;

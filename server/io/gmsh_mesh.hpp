@@ -1,18 +1,19 @@
 #pragma once
 /// A 2D mesh read through Gmsh's own C++ API (libgmsh): a `.msh` file opened, or a `.geo` file
-/// opened and meshed in-process. Only what an assembly needs: the nodes of the surface elements,
-/// first-order triangles and quadrilaterals (counter-clockwise), the line elements of every curve,
-/// the node of every meshed point, and the physical groups by name.
+/// opened and meshed. Only what an assembly needs: the nodes of the surface elements, first-order
+/// triangles and quadrilaterals (counter-clockwise), the line elements of every curve, the node of
+/// every meshed point, and the physical groups by name.
 ///
 /// Coordinates: Gmsh x -> r, y -> z; the mesh must lie in the plane z = 0 (Gmsh's z).
 ///
-/// Gmsh keeps its model in global state, so one mesh is read at a time (a process-wide mutex), and
-/// every call initializes Gmsh, reads, and finalizes it again. General.Terminal is 0: Gmsh prints
-/// nothing; its errors come back as MeshError.
+/// A geometry is a program (Gmsh's .geo language runs shell commands, reads and writes files, ends
+/// the process), so Gmsh never runs in this process: every read starts saasgaps-mesher
+/// (io/mesher_main.cpp), a short-lived process confined to the file's own directory by chroot, a
+/// seccomp system-call filter and resource limits (io/mesher_sandbox.hpp), and decodes the mesh it
+/// writes as hostile input (io/mesher_protocol.hpp). docs/import.md says why this is safe.
 ///
-/// The calls into Gmsh live in a module, libsaasgaps_gmsh.so (io/gmsh_reader.cpp), opened on the
-/// first read: beside the program, in ../lib/saasgaps beside it, where the build put it, or at
-/// $SAASGAPS_GMSH_MODULE.
+/// The mesher is looked for at $SAASGAPS_MESHER, beside the running program, in ../lib/saasgaps
+/// beside it (an installation), and where the build put it.
 
 #include <array>
 #include <cstddef>
@@ -31,6 +32,28 @@ class MeshError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+/// The mesh is larger than MeshLimits allow (nodes, or the memory meshing needed): the service
+/// answers 413. The message names the limit.
+class MeshTooLarge : public MeshError {
+ public:
+  using MeshError::MeshError;
+};
+
+/// What one mesh read may cost. The defaults are those docs/import.md gives.
+struct MeshLimits {
+  std::size_t max_nodes = 200000;          ///< nodes of the mesh (saasgaps serve/import --max-mesh-nodes)
+  int seconds = 60;                        ///< wall and CPU time of the mesher (--mesh-time-limit)
+  std::size_t memory_bytes = std::size_t{2} << 30;  ///< the mesher's address space
+  std::size_t file_bytes = std::size_t{64} << 20;   ///< largest file the geometry may write (Printf)
+};
+
+/// Sets the limits of every later read (once, at start-up: `saasgaps serve` and `saasgaps import`).
+void set_mesh_limits(const MeshLimits& limits);
+MeshLimits mesh_limits();
+
+/// At most this many meshers run at once in a process; further reads wait for one to end.
+int concurrent_meshers();
 
 /// A first-order surface element: 3 or 4 node indices (into GmshMesh::node_tags, r, z),
 /// counter-clockwise.
@@ -65,8 +88,9 @@ struct GmshMesh {
   std::vector<PhysicalGroup> groups;
 };
 
-/// Opens `path` with Gmsh (a `.geo` is meshed in 2D with the options it sets itself) and returns
-/// the mesh. Throws MeshError; never lets a Gmsh exception through.
+/// Opens `path` with Gmsh in the sandboxed mesher (a `.geo` is meshed in 2D with the options it
+/// sets itself) and returns the mesh. Throws MeshTooLarge beyond the limits, MeshError for
+/// everything else that goes wrong (the message names the file and, for a limit, the limit).
 GmshMesh read_gmsh_mesh(const std::filesystem::path& path);
 
 /// "dimension 1 (curve)": the name of a dimension for messages.

@@ -1,8 +1,8 @@
-// The part of the mesh reader that calls Gmsh, built as a loadable module (libsaasgaps_gmsh.so)
-// that io/gmsh_mesh.cpp opens on the first import: libgmsh brings about a hundred shared
-// libraries (OpenCASCADE, FLTK, ...) whose loading would otherwise cost every start of saasgaps
-// a quarter of a CPU second, import or not.
-#include "io/gmsh_mesh.hpp"
+// The part of the mesh reader that calls Gmsh. It runs only in saasgaps-mesher, inside its sandbox
+// (io/mesher_main.cpp): libgmsh is never loaded into saasgaps itself, which also spares every
+// start of saasgaps the quarter CPU second its hundred shared libraries (OpenCASCADE, FLTK, ...)
+// take to load.
+#include "io/gmsh_reader.hpp"
 
 #include <gmsh.h>
 
@@ -10,7 +10,7 @@
 #include <clocale>
 #include <cmath>
 #include <limits>
-#include <mutex>
+#include <map>
 #include <sstream>
 #include <system_error>
 
@@ -25,12 +25,6 @@ constexpr int gmsh_point = 15;
 constexpr int gmsh_line = 1;
 constexpr int gmsh_triangle = 2;
 constexpr int gmsh_quadrangle = 3;
-
-/// Gmsh's model is one global object: one reader at a time in this process.
-std::mutex& gmsh_mutex() {
-  static std::mutex m;
-  return m;
-}
 
 /// Initializes Gmsh quietly and finalizes it on every way out.
 class GmshSession {
@@ -107,6 +101,49 @@ double twice_signed_area(const GmshMesh& m, const MeshFace& f) {
   return twice;
 }
 
+/// The nodes the surfaces of the open model will have once meshed, from the mesh of their boundary
+/// curves: a surface of area A (the polygon of its boundary's line elements) meshed with
+/// equilateral triangles of side h (the median length of those elements) has 2 A / (sqrt(3) h^2)
+/// nodes. The median, not the mean: a boundary graded towards a corner then does not count as fine
+/// everywhere. Sizes set only inside a surface (a field) are not seen: the time limit bounds those.
+std::size_t estimated_surface_nodes() {
+  std::vector<std::size_t> tags;
+  std::vector<double> xyz, parametric;
+  gmsh::model::mesh::getNodes(tags, xyz, parametric, 1, -1, true, false);
+  std::map<std::size_t, std::size_t> at;  // node tag -> position in xyz / 3
+  for (std::size_t i = 0; i < tags.size(); ++i) at[tags[i]] = i;
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  double nodes = 0.0;
+  for (const auto& surface : surfaces) {
+    gmsh::vectorpair curves;
+    gmsh::model::getBoundary({surface}, curves, false, true, false);
+    double twice_area = 0.0;
+    std::vector<double> lengths;
+    for (const auto& [dim, signed_curve] : curves) {
+      std::vector<int> types;
+      std::vector<std::vector<std::size_t>> elements, nodes_of;
+      gmsh::model::mesh::getElements(types, elements, nodes_of, 1, std::abs(signed_curve));
+      for (std::size_t t = 0; t < types.size(); ++t) {
+        if (types[t] != gmsh_line) continue;
+        for (std::size_t e = 0; e + 1 < nodes_of[t].size(); e += 2) {
+          const auto a = at.find(nodes_of[t][e]), b = at.find(nodes_of[t][e + 1]);
+          if (a == at.end() || b == at.end()) continue;
+          const double xa = xyz[3 * a->second], ya = xyz[3 * a->second + 1];
+          const double xb = xyz[3 * b->second], yb = xyz[3 * b->second + 1];
+          twice_area += (signed_curve > 0 ? 1.0 : -1.0) * (xa * yb - xb * ya);
+          lengths.push_back(std::hypot(xb - xa, yb - ya));
+        }
+      }
+    }
+    if (lengths.empty()) continue;
+    std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
+    const double h = lengths[lengths.size() / 2];
+    if (h > 0.0) nodes += std::fabs(twice_area) / (std::sqrt(3.0) * h * h);
+  }
+  return nodes >= 1e18 ? std::size_t{1000000000000000000} : static_cast<std::size_t>(nodes);
+}
+
 /// Throws the first error Gmsh logged (file syntax, meshing), if any.
 void throw_logged_error(const fs::path& path) {
   std::vector<std::string> log;
@@ -116,7 +153,7 @@ void throw_logged_error(const fs::path& path) {
   }
 }
 
-GmshMesh read_open_model(const fs::path& path) {
+GmshMesh read_open_model(const fs::path& path, std::size_t max_nodes) {
   throw_logged_error(path);
   GmshMesh mesh;
   std::vector<int> types;
@@ -127,6 +164,15 @@ GmshMesh read_open_model(const fs::path& path) {
   }
   gmsh::model::mesh::getElementTypes(types, 2);
   if (types.empty() && path.extension() == ".geo") {
+    // The curves first: their mesh tells, before the costly surfaces are meshed, whether a small
+    // file asks for millions of nodes. (generate(2) would mesh them the same way itself.)
+    gmsh::model::mesh::generate(1);
+    throw_logged_error(path);
+    if (const std::size_t estimate = estimated_surface_nodes(); estimate > 2 * max_nodes) {
+      throw MeshTooLarge(path.string() + " would mesh to about " + std::to_string(estimate) +
+                         " nodes (estimated from the mesh of its curves), more than the limit of " +
+                         std::to_string(max_nodes) + " nodes");
+    }
     gmsh::model::mesh::generate(2);
     throw_logged_error(path);
     gmsh::model::mesh::getElementTypes(types, 2);
@@ -180,6 +226,10 @@ GmshMesh read_open_model(const fs::path& path) {
       }
     }
   });
+  if (const auto nodes = static_cast<std::size_t>(std::count(used.begin(), used.end(), 1)); nodes > max_nodes) {
+    throw MeshTooLarge(path.string() + " meshes to " + std::to_string(nodes) + " nodes, more than the limit of " +
+                       std::to_string(max_nodes) + " nodes");
+  }
   NodeIndex index(max_tag);
   for (std::size_t tag = 0; tag <= max_tag; ++tag) {
     if (!used[tag]) continue;
@@ -268,21 +318,18 @@ std::string gmsh_failure(const std::string& thrown) {
 
 }  // namespace
 
-GmshMesh read_with_gmsh(const fs::path& path) {
+GmshMesh read_with_gmsh(const fs::path& file, const fs::path& path, std::size_t max_nodes) {
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) {
+  if (!fs::is_regular_file(file, ec)) {
     throw MeshError("mesh file " + path.string() + " does not exist or is not a regular file");
   }
-  const std::string extension = path.extension().string();
-  if (extension != ".msh" && extension != ".geo") {
-    throw MeshError("mesh file " + path.string() + " must be a Gmsh mesh (.msh) or geometry (.geo) file");
-  }
-  const std::lock_guard lock(gmsh_mutex());
   try {
     const GmshSession session;
-    gmsh::open(path.string());
-    return read_open_model(path);
+    gmsh::open(file.string());
+    return read_open_model(path, max_nodes);
   } catch (const MeshError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::string& thrown) {
     throw MeshError("Gmsh cannot read " + path.string() + ": " + gmsh_failure(thrown));
@@ -294,10 +341,3 @@ GmshMesh read_with_gmsh(const fs::path& path) {
 }
 
 }  // namespace saasgaps::io
-
-/// The module's one entry point, found by name with dlsym: reads `path` into `mesh` or throws
-/// MeshError.
-extern "C" __attribute__((visibility("default"))) void saasgaps_read_gmsh_mesh(const std::filesystem::path* path,
-                                                                                 saasgaps::io::GmshMesh* mesh) {
-  *mesh = saasgaps::io::read_with_gmsh(*path);
-}

@@ -2,6 +2,7 @@
 
 #include "errors.hpp"
 #include "io/json_limits.hpp"
+#include "io/gmsh_mesh.hpp"
 #include "io/json_text.hpp"
 #include "io/model_reader.hpp"
 #include "service/job_store.hpp"
@@ -60,6 +61,8 @@ void respond_to_exception(const httplib::Request& req, httplib::Response& res, s
                   std::to_string(e.issues().size()) + (e.issues().size() == 1 ? " error" : " errors") +
                       " in the model document",
                   errors);
+  } catch (const io::MeshTooLarge& e) {
+    write_problem(res, 413, "Content Too Large", e.what(), json::array({{{"pointer", "/mesh"}, {"detail", e.what()}}}));
   } catch (const JobNotFound& e) {
     write_problem(res, 404, "Not Found", e.what());
   } catch (const JobConflict& e) {

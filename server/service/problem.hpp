@@ -31,7 +31,7 @@ void write_problem(httplib::Response& res, int status, const std::string& title,
                    const nlohmann::json& errors = nullptr);
 
 /// Maps any exception from a handler to its response: HttpError as raised, ModelError 422 with
-/// every {pointer, detail}, JobNotFound 404, JobConflict 409, anything else 500.
+/// every {pointer, detail}, io::MeshTooLarge 413 (at /mesh), JobNotFound 404, JobConflict 409, anything else 500.
 void respond_to_exception(const httplib::Request& req, httplib::Response& res, std::exception_ptr error);
 
 /// Fills an error status that has no body yet (404 of an unknown route, 413 from the size limit).

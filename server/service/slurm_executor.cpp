@@ -6,12 +6,15 @@
 #include <sstream>
 
 #include "service/log.hpp"
-#include "service/subprocess.hpp"
+#include "io/subprocess.hpp"
 #include "service/worker_protocol.hpp"
 
 namespace saasgaps::service {
 
 namespace {
+
+using io::ProcessResult;
+using io::run_process;
 
 constexpr std::chrono::seconds command_limit{60};
 

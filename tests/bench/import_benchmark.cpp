@@ -82,6 +82,12 @@ int main(int argc, char** argv) {
   gmsh::model::mesh::generate(2);
   gmsh::write(msh.string());
   gmsh::finalize();
+  // Beyond the default node limit (200,000) at 10^6 unknowns: this geometry is our own.
+  io::MeshLimits limits = io::mesh_limits();
+  limits.max_nodes = std::max(limits.max_nodes, static_cast<std::size_t>(2 * n * n));
+  limits.seconds = 600;
+  limits.memory_bytes = std::size_t{16} << 30;
+  io::set_mesh_limits(limits);
 
   nlohmann::json from_geo, from_msh;
   const double geo_seconds = timed([&] { from_geo = io::import_assembly(assembly("bench.geo"), dir); });

@@ -9,13 +9,15 @@
 #include "io/json_limits.hpp"
 #include "service/server_process.hpp"
 #include "service/slurm_executor.hpp"
-#include "service/subprocess.hpp"
+#include "io/subprocess.hpp"
 #include "service/worker_protocol.hpp"
 
 namespace saasgaps::service {
 namespace {
 
 namespace protocol = worker_protocol;
+using io::ProcessResult;
+using io::run_process;
 
 TEST(WorkerProtocol, LeasesParseOnlyWhenWellFormed) {
   const std::optional<Lease> lease = protocol::parse_lease("3:abc:def");

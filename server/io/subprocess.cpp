@@ -1,4 +1,4 @@
-#include "service/subprocess.hpp"
+#include "io/subprocess.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -7,13 +7,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
 
 extern char** environ;
 
-namespace saasgaps::service {
+namespace saasgaps::io {
 
 namespace {
 
@@ -34,9 +35,9 @@ struct Pipe {
   }
 };
 
-std::vector<std::string> merged_environment(const std::vector<std::string>& extra) {
+std::vector<std::string> merged_environment(const std::vector<std::string>& extra, bool inherit) {
   std::vector<std::string> env;
-  for (char** e = environ; *e; ++e) {
+  for (char** e = inherit ? environ : nullptr; e != nullptr && *e; ++e) {
     const std::string entry = *e;
     const std::string name = entry.substr(0, entry.find('='));
     bool overridden = false;
@@ -49,18 +50,20 @@ std::vector<std::string> merged_environment(const std::vector<std::string>& extr
 
 }  // namespace
 
-ProcessResult run_process(const std::vector<std::string>& argv, const std::string& input,
-                          const std::vector<std::string>& environment, std::chrono::milliseconds limit) {
+ProcessResult run_process(const ProcessSpec& spec) {
   Pipe in, out, err;
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, in.fd[0], STDIN_FILENO);
   posix_spawn_file_actions_adddup2(&actions, out.fd[1], STDOUT_FILENO);
   posix_spawn_file_actions_adddup2(&actions, err.fd[1], STDERR_FILENO);
+  // The server's sockets and files are not the program's business (cpp-httplib does not open
+  // them close-on-exec).
+  posix_spawn_file_actions_addclosefrom_np(&actions, 3);
   std::vector<char*> args;
-  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  for (const std::string& a : spec.argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
-  std::vector<std::string> env_text = merged_environment(environment);
+  std::vector<std::string> env_text = merged_environment(spec.environment, spec.inherit_environment);
   std::vector<char*> env;
   for (std::string& e : env_text) env.push_back(e.data());
   env.push_back(nullptr);
@@ -70,18 +73,19 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
   in.close_end(0);
   out.close_end(1);
   err.close_end(1);
-  if (rc != 0) throw std::runtime_error("cannot run " + argv[0] + ": " + std::strerror(rc));
+  if (rc != 0) throw std::runtime_error("cannot run " + spec.argv[0] + ": " + std::strerror(rc));
 
   // Feed the input and drain both outputs together, so a full pipe never blocks either side: the
   // input end is non-blocking, so a write takes only what the pipe has room for.
   ProcessResult result;
   std::size_t written = 0;
+  const std::string& input = spec.input;
   if (input.empty()) {
     in.close_end(1);
   } else {
     ::fcntl(in.fd[1], F_SETFL, ::fcntl(in.fd[1], F_GETFL) | O_NONBLOCK);
   }
-  const auto deadline = std::chrono::steady_clock::now() + limit;
+  const auto deadline = std::chrono::steady_clock::now() + spec.limit;
   bool killed = false;
   while (out.fd[0] >= 0 || err.fd[0] >= 0) {
     pollfd fds[3];
@@ -90,9 +94,10 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
     if (out.fd[0] >= 0) fds[n++] = {out.fd[0], POLLIN, 0};
     if (err.fd[0] >= 0) fds[n++] = {err.fd[0], POLLIN, 0};
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) {
+    if (left.count() <= 0 || result.output_exceeded) {
       ::kill(pid, SIGKILL);
       killed = true;
+      result.timed_out = !result.output_exceeded;
       break;
     }
     if (::poll(fds, static_cast<nfds_t>(n), static_cast<int>(left.count())) < 0 && errno != EINTR) break;
@@ -107,20 +112,39 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
       }
       char buffer[4096];
       const ssize_t r = ::read(fds[k].fd, buffer, sizeof buffer);
-      Pipe& p = fds[k].fd == out.fd[0] ? out : err;
+      const bool is_out = fds[k].fd == out.fd[0];
+      Pipe& p = is_out ? out : err;
       if (r <= 0) {
         p.close_end(0);
-      } else {
-        (&p == &out ? result.out : result.err).append(buffer, static_cast<std::size_t>(r));
+        continue;
       }
+      std::string& text = is_out ? result.out : result.err;
+      const std::size_t room = (is_out ? spec.max_output : spec.max_error) - text.size();
+      text.append(buffer, std::min(room, static_cast<std::size_t>(r)));
+      if (is_out && static_cast<std::size_t>(r) > room) result.output_exceeded = true;
     }
+  }
+  if (result.output_exceeded && !killed) {
+    ::kill(pid, SIGKILL);
+    killed = true;
   }
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   result.exit_code = !killed && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  if (killed) result.err += "\n(killed after " + std::to_string(limit.count()) + " ms)";
+  result.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  if (result.timed_out) result.err += "\n(killed after " + std::to_string(spec.limit.count()) + " ms)";
   return result;
 }
 
-}  // namespace saasgaps::service
+ProcessResult run_process(const std::vector<std::string>& argv, const std::string& input,
+                          const std::vector<std::string>& environment, std::chrono::milliseconds limit) {
+  ProcessSpec spec;
+  spec.argv = argv;
+  spec.input = input;
+  spec.environment = environment;
+  spec.limit = limit;
+  return run_process(spec);
+}
+
+}  // namespace saasgaps::io
