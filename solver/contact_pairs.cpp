@@ -248,6 +248,14 @@ std::vector<PairingIssue> contact_pairing_issues(const Model& model) {
   return issues;
 }
 
+double gap_function(const ContactPair& pair, std::span<const double> displacement) {
+  double g = pair.g0;
+  for (int k = 0; k < pair.count; ++k) {
+    for (int dir = 0; dir < 2; ++dir) g += pair.weight[k] * pair.normal[dir] * displacement[2 * pair.node[k] + dir];
+  }
+  return g;
+}
+
 ContactPairs contact_pairs(const Model& model) {
   std::vector<PairingIssue> issues;
   ContactPairs pairs = model.gaps ? build(model, issues) : ContactPairs{};

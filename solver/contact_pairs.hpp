@@ -13,6 +13,7 @@
 /// elements' M axes (on a curved interface: the direction across it at the shared nodes).
 
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ struct ContactPair {
   /// edge's area).
   double area = 0.0;
 };
+
+/// g_i(u) of a pair for the full displacement vector (u_r, u_z per node, prescribed ones included).
+double gap_function(const ContactPair& pair, std::span<const double> displacement);
 
 /// Pair `pair` carries `area` of gap element g's face.
 struct PairShare {

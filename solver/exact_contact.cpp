@@ -53,15 +53,6 @@ double ExactContact::residual(const Row& row, std::span<const double> u) const {
   return g;
 }
 
-double ExactContact::gap(std::size_t i, std::span<const double> displacement) const {
-  const ContactPair& p = pairs_.pairs[i];
-  double g = p.g0;
-  for (int k = 0; k < p.count; ++k) {
-    for (int dir = 0; dir < 2; ++dir) g += p.weight[k] * p.normal[dir] * displacement[2 * p.node[k] + dir];
-  }
-  return g;
-}
-
 void ExactContact::factor_active(SparseCholesky& cholesky, std::span<const double> values,
                                  const std::vector<std::uint8_t>& active) {
   values_.assign(values.begin(), values.end());

@@ -72,9 +72,6 @@ class ExactContact {
   ContactReport solve(SparseCholesky& cholesky, std::span<const double> values, std::span<const double> rhs,
                       ContactState& state, std::span<double> u);
 
-  /// g_i of pair i for the full displacement vector (u_r, u_z per node, prescribed included).
-  [[nodiscard]] double gap(std::size_t i, std::span<const double> displacement) const;
-
  private:
   struct Entry {
     Index equation = -1;
