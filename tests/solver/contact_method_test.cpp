@@ -227,7 +227,7 @@ class PenaltyPairs final : public ContactMethod {
     for (const ContactPair& p : pairs_.pairs) {
       Row row;
       row.g0 = p.g0;
-      for (int k = 0; k < p.count; ++k) {
+      for (std::size_t k = 0; k < p.node.size(); ++k) {
         for (int dir = 0; dir < 2; ++dir) {
           const double c = p.weight[k] * p.normal[dir];
           const Index eq = setup.dofs.equation(p.node[k], dir);
