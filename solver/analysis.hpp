@@ -1,15 +1,17 @@
 #pragma once
 /// The SAASGAPS analysis: one bounded loop over iterations, each one
-///   1. setting the gap moduli by section II (a)-(d) and the solid moduli by strain invariance,
-///   2. assembling (solids only when their moduli changed) and solving K u = f,
-///   3. testing convergence (e) of the gaps and of the plastic and bimodulus materials,
+///   1. setting the solid moduli by strain invariance and letting the contact method set what it adds
+///      (contact_method.hpp; classic: the gap moduli by section II (a)-(d)),
+///   2. assembling (solids only when their moduli changed) and solving K u = f through the method,
+///   3. judging convergence: the plastic and bimodulus materials' verdict AND the method's,
 ///   4. handing its history row and restart state to the observer,
-/// until everything has converged, max_iterations is reached, or a stop is requested.
+/// until both verdicts hold, max_iterations is reached, or a stop is requested.
 
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include "contact_method.hpp"
 #include "iteration_record.hpp"
 #include "ordering_cache.hpp"
 #include "model.hpp"
@@ -32,8 +34,9 @@ struct ResumeOptions {
 /// Runs a model from the start, or from `resume` when given. Throws SingularModelError for a
 /// mechanism, SolverError for a state that does not belong to the model. cache (optional): where
 /// fill-reducing orderings are kept between runs (see OrderingCache); the answer does not depend
-/// on it.
+/// on it. contact: builds the contact method (make_contact_method: the one gaps.method names).
 Solution solve(const Model& model, IterationObserver* observer = nullptr, const RestartState* resume = nullptr,
-               const ResumeOptions& options = {}, const OrderingCache* cache = nullptr);
+               const ResumeOptions& options = {}, const OrderingCache* cache = nullptr,
+               const ContactMethodFactory& contact = make_contact_method);
 
 }  // namespace saasgaps

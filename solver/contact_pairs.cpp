@@ -99,9 +99,8 @@ class Pairer {
       RawPair r;
       // Side a is the one M points away from: g0 = n . (x_b - x_a) > 0.
       const int a = s > 0 ? p : q, b = s > 0 ? q : p;
-      r.pair.node = {gap_.nodes[a], gap_.nodes[b], -1};
-      r.pair.weight = {-1.0, 1.0, 0.0};
-      r.pair.count = 2;
+      r.pair.node = {gap_.nodes[a], gap_.nodes[b]};
+      r.pair.weight = {-1.0, 1.0};
       r.pair.normal = n_;
       r.area = 0.5 * (area_one[k] + area_two[k]);
       out.push_back(r);
@@ -141,7 +140,6 @@ class Pairer {
     RawPair r;
     r.pair.node = {gap_.nodes[lone], gap_.nodes[e0], gap_.nodes[e1]};
     r.pair.weight = {side, -side * (1.0 - t), -side * t};
-    r.pair.count = 3;
     r.pair.normal = n_;
     // A triangle's one pair stands for half its edge: in a strip of triangles alternating sides (the
     // usual way to join faces that do not line up) each half-face then has one pair, so a uniform
@@ -165,20 +163,15 @@ class Pairer {
 };
 
 /// Pairs of the same nodes (and edge) are one constraint: the key is the sorted node list.
-std::array<int, 3> key_of(const ContactPair& p) {
-  std::array<int, 3> key = p.node;  // a node-to-node pair keeps -1 last
-  const auto order = [&key](int i, int j) {
-    if (key[j] >= 0 && key[i] > key[j]) std::swap(key[i], key[j]);
-  };
-  order(0, 1);
-  order(1, 2);
-  order(0, 1);
+std::vector<int> key_of(const ContactPair& p) {
+  std::vector<int> key = p.node;
+  std::sort(key.begin(), key.end());
   return key;
 }
 
 double separation(const Model& model, const ContactPair& p) {
   Vec2 d = Vec2::Zero();
-  for (int k = 0; k < p.count; ++k) d += p.weight[k] * Vec2(model.nodes[p.node[k]].r, model.nodes[p.node[k]].z);
+  for (std::size_t k = 0; k < p.node.size(); ++k) d += p.weight[k] * Vec2(model.nodes[p.node[k]].r, model.nodes[p.node[k]].z);
   return p.normal.dot(d);
 }
 
@@ -187,7 +180,7 @@ ContactPairs build(const Model& model, std::vector<PairingIssue>& issues) {
   const std::size_t gaps = model.gap_count();
   out.of_gap.resize(gaps);
   out.share_count.assign(gaps, 0);
-  std::map<std::array<int, 3>, int> index;
+  std::map<std::vector<int>, int> index;
   std::vector<Vec2> normal_sum;
   for (std::size_t g = 0; g < gaps; ++g) {
     std::string why;
@@ -205,7 +198,7 @@ ContactPairs build(const Model& model, std::vector<PairingIssue>& issues) {
       ContactPair& p = out.pairs[it->second];
       // The same pair seen from the other side has its weights negated: align its normal.
       double seen = 0.0;
-      for (int k = 0; k < r.pair.count; ++k) {
+      for (std::size_t k = 0; k < r.pair.node.size(); ++k) {
         if (r.pair.node[k] == p.node[0]) seen = r.pair.weight[k];
       }
       const double orientation = p.weight[0] * seen > 0.0 ? 1.0 : -1.0;
@@ -246,6 +239,14 @@ std::vector<PairingIssue> contact_pairing_issues(const Model& model) {
   std::vector<PairingIssue> issues;
   if (model.gaps) build(model, issues);
   return issues;
+}
+
+double gap_function(const ContactPair& pair, std::span<const double> displacement) {
+  double g = pair.g0;
+  for (std::size_t k = 0; k < pair.node.size(); ++k) {
+    for (int dir = 0; dir < 2; ++dir) g += pair.weight[k] * pair.normal[dir] * displacement[2 * pair.node[k] + dir];
+  }
+  return g;
 }
 
 ContactPairs contact_pairs(const Model& model) {

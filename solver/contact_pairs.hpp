@@ -13,6 +13,7 @@
 /// elements' M axes (on a curved interface: the direction across it at the shared nodes).
 
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -23,9 +24,8 @@
 namespace saasgaps {
 
 struct ContactPair {
-  std::array<int, 3> node{-1, -1, -1};  ///< node indices
-  std::array<double, 3> weight{};       ///< w_k: g = g0 + n . sum_k w_k u_k
-  int count = 2;                        ///< 2 (node to node) or 3 (node to edge)
+  std::vector<int> node;       ///< node indices, any number (gap elements give 2: node to node, or 3: node to edge)
+  std::vector<double> weight;  ///< w_k per node: g = g0 + n . sum_k w_k u_k
   Vec2 normal{1.0, 0.0};                ///< unit, from side a to side b
   double g0 = 0.0;                      ///< initial separation along the normal (> 0)
   /// The face area the pair stands for: the sum, over the gap elements sharing it, of the load a unit
@@ -34,6 +34,9 @@ struct ContactPair {
   /// edge's area).
   double area = 0.0;
 };
+
+/// g_i(u) of a pair for the full displacement vector (u_r, u_z per node, prescribed ones included).
+double gap_function(const ContactPair& pair, std::span<const double> displacement);
 
 /// Pair `pair` carries `area` of gap element g's face.
 struct PairShare {

@@ -8,6 +8,15 @@ std::array<Vec2, 4> corner_coordinates(const Model& model, const std::array<int,
   return x;
 }
 
+Vec8 element_displacements(std::span<const double> u, const std::array<int, 4>& nodes, int node_count) {
+  Vec8 ue = Vec8::Zero();
+  for (int a = 0; a < node_count; ++a) {
+    ue[2 * a] = u[2 * nodes[a]];
+    ue[2 * a + 1] = u[2 * nodes[a] + 1];
+  }
+  return ue;
+}
+
 double element_temperature(const Model& model, const std::array<int, 4>& nodes, int node_count) {
   double sum = 0.0;
   for (int a = 0; a < node_count; ++a) sum += model.loads.node_temperature[nodes[a]];

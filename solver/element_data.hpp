@@ -1,6 +1,8 @@
 #pragma once
 /// Gathers one element's kernel input from the model: coordinates, temperatures, body forces.
 
+#include <span>
+
 #include "element_kernel.hpp"
 #include "model.hpp"
 
@@ -14,6 +16,10 @@ ElementData solid_element_data(const Model& model, std::size_t e, const Constitu
 
 /// Kernel input of gap element g: no thermal strain and no body force (its properties are fictitious).
 ElementData gap_element_data(const Model& model, std::size_t g, const Constitutive& law);
+
+/// The element's nodal displacements (u_r, u_z per corner; zero past node_count) from the full vector
+/// of (u_r, u_z) per node.
+Vec8 element_displacements(std::span<const double> u, const std::array<int, 4>& nodes, int node_count);
 
 /// Corner coordinates of an element by node indices.
 std::array<Vec2, 4> corner_coordinates(const Model& model, const std::array<int, 4>& nodes, int node_count);

@@ -19,7 +19,8 @@ ExactContact::ExactContact(const Model& model, const DofMap& dofs, const CscPatt
     const ContactPair& p = pairs_.pairs[i];
     Row& row = rows_[i];
     row.g0 = p.g0;
-    for (int k = 0; k < p.count; ++k) {
+    row.first = entries_.size();
+    for (std::size_t k = 0; k < p.node.size(); ++k) {
       for (int dir = 0; dir < 2; ++dir) {
         // cos(90 degrees) is 6e-17, not 0: such a component is no coupling (and would give a pair
         // whose only free unknown is across the normal a vanishing penalty).
@@ -27,20 +28,24 @@ ExactContact::ExactContact(const Model& model, const DofMap& dofs, const CscPatt
         if (std::abs(coefficient) <= 1.0e-12 * std::abs(p.weight[k])) continue;
         const Index eq = dofs.equation(p.node[k], dir);
         if (eq >= 0) {
-          row.entries[row.count++] = {eq, coefficient};
+          entries_.push_back({eq, coefficient});
         } else {
           row.g0 += coefficient * dofs.prescribed(p.node[k], dir);
         }
       }
     }
-    for (int a = 0; a < row.count; ++a) {
-      for (int b = a; b < row.count; ++b) {
-        const Index position = pattern.find(row.entries[a].equation, row.entries[b].equation);
+    row.last = entries_.size();
+    row.first_product = positions_.size();
+    const std::span<const Entry> e = entries(row);
+    for (std::size_t a = 0; a < e.size(); ++a) {
+      for (std::size_t b = a; b < e.size(); ++b) {
+        const Index position = pattern.find(e[a].equation, e[b].equation);
         assert(position >= 0 && "a pair's nodes belong to one gap element, so the pattern couples them");
-        row.positions[row.position_count] = position;
-        row.products[row.position_count++] = row.entries[a].coefficient * row.entries[b].coefficient;
+        positions_.push_back(position);
+        products_.push_back(e[a].coefficient * e[b].coefficient);
       }
     }
+    row.last_product = positions_.size();
   }
   diagonal_.resize(static_cast<std::size_t>(pattern.n));
   for (Index j = 0; j < pattern.n; ++j) diagonal_[j] = pattern.find(j, j);
@@ -49,16 +54,7 @@ ExactContact::ExactContact(const Model& model, const DofMap& dofs, const CscPatt
 
 double ExactContact::residual(const Row& row, std::span<const double> u) const {
   double g = row.g0;
-  for (int k = 0; k < row.count; ++k) g += row.entries[k].coefficient * u[row.entries[k].equation];
-  return g;
-}
-
-double ExactContact::gap(std::size_t i, std::span<const double> displacement) const {
-  const ContactPair& p = pairs_.pairs[i];
-  double g = p.g0;
-  for (int k = 0; k < p.count; ++k) {
-    for (int dir = 0; dir < 2; ++dir) g += p.weight[k] * p.normal[dir] * displacement[2 * p.node[k] + dir];
-  }
+  for (const Entry& e : entries(row)) g += e.coefficient * u[e.equation];
   return g;
 }
 
@@ -68,7 +64,7 @@ void ExactContact::factor_active(SparseCholesky& cholesky, std::span<const doubl
   for (std::size_t i = 0; i < rows_.size(); ++i) {
     if (!active[i]) continue;
     const Row& row = rows_[i];
-    for (int k = 0; k < row.position_count; ++k) values_[row.positions[k]] += row.rho * row.products[k];
+    for (std::size_t k = row.first_product; k < row.last_product; ++k) values_[positions_[k]] += row.rho * products_[k];
   }
   cholesky.factorize(values_);
 }
@@ -80,12 +76,8 @@ void ExactContact::update_active(const std::vector<std::uint8_t>& held, const st
       if (held[i] == active[i] || static_cast<bool>(active[i]) != add) continue;
       // rho_i c_i c_i^T = w w^T with w = sqrt(rho_i) c_i.
       const Row& row = rows_[i];
-      UpdateColumn w;
-      for (int k = 0; k < row.count; ++k) {
-        w.row[w.count] = row.entries[k].equation;
-        w.value[w.count++] = std::sqrt(row.rho) * row.entries[k].coefficient;
-      }
-      columns_.push_back(w);
+      for (const Entry& e : entries(row)) columns_.add(e.equation, std::sqrt(row.rho) * e.coefficient);
+      columns_.end_column();
     }
     updatable_.update(columns_, add);
   }
@@ -104,7 +96,7 @@ double ExactContact::multipliers(const Solver& solve, std::span<const double> rh
       if (!active[i]) continue;
       const Row& row = rows_[i];
       const double load = force[i] - row.rho * row.g0;
-      for (int k = 0; k < row.count; ++k) b_[row.entries[k].equation] += row.entries[k].coefficient * load;
+      for (const Entry& e : entries(row)) b_[e.equation] += e.coefficient * load;
     }
     solve(b_, u);
     ++iterations;
@@ -136,8 +128,7 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
   // Penalties from this K's diagonal: c_i^T diag(K) c_i is the stiffness the pair's nodes have.
   for (Row& row : rows_) {
     row.stiffness = 0.0;
-    for (int k = 0; k < row.count; ++k) {
-      const Entry& e = row.entries[k];
+    for (const Entry& e : entries(row)) {
       row.stiffness += e.coefficient * e.coefficient * values[diagonal_[e.equation]];
     }
     row.rho = penalty_factor * row.stiffness;
@@ -148,7 +139,7 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
   // pair peels the contact open three pairs at a time, 13).
   double smallest = std::numeric_limits<double>::infinity();
   for (const Row& row : rows_) {
-    if (row.count > 0) smallest = std::min(smallest, row.g0);
+    if (!row.empty()) smallest = std::min(smallest, row.g0);
   }
   std::vector<std::uint8_t> active(n, 0);
   if (state.active.size() == n) {
@@ -158,7 +149,7 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
   }
   std::vector<double> force = state.force.size() == n ? state.force : std::vector<double>(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
-    if (rows_[i].count == 0) active[i] = 0;  // both nodes prescribed: nothing to enforce
+    if (rows_[i].empty()) active[i] = 0;  // both nodes prescribed: nothing to enforce
     if (!active[i]) force[i] = 0.0;
   }
   double length = 0.0;
@@ -223,7 +214,7 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
     std::size_t worst_pair = n;
     double worst_violation = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-      if (rows_[i].count == 0) continue;
+      if (rows_[i].empty()) continue;
       // Violations in length units: a pulling force over the pair's stiffness, or a penetration.
       const double violation = active[i] ? -force[i] / rows_[i].stiffness : -g[i];
       if (violation > tolerance) {
@@ -240,7 +231,7 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
       state.force = force;
       report.complementarity = 0.0;
       for (std::size_t i = 0; i < n; ++i) {
-        if (rows_[i].count == 0) continue;
+        if (rows_[i].empty()) continue;
         const double r = std::abs(std::min(force[i] / rows_[i].stiffness, g[i]));
         report.complementarity = std::max(report.complementarity, r / scale);
         report.pairs_in_contact += active[i];

@@ -72,25 +72,26 @@ class ExactContact {
   ContactReport solve(SparseCholesky& cholesky, std::span<const double> values, std::span<const double> rhs,
                       ContactState& state, std::span<double> u);
 
-  /// g_i of pair i for the full displacement vector (u_r, u_z per node, prescribed included).
-  [[nodiscard]] double gap(std::size_t i, std::span<const double> displacement) const;
-
  private:
   struct Entry {
     Index equation = -1;
     double coefficient = 0.0;  ///< w_k n_dir: g = g0_free + sum coefficient u[equation]
   };
+  /// Row i of C, of any width: its entries are entries_[first, last), the upper-triangle positions
+  /// of c c^T and the matching coefficient products are positions_/products_[first_product,
+  /// last_product).
   struct Row {
-    std::array<Entry, 6> entries{};
-    int count = 0;
+    std::size_t first = 0, last = 0;
+    std::size_t first_product = 0, last_product = 0;
     double g0 = 0.0;        ///< g0 plus the prescribed displacements' part
     double stiffness = 0.0; ///< k_i = c_i^T diag(K) c_i (recomputed per solve)
     double rho = 0.0;
-    std::array<Index, 21> positions{};  ///< upper-triangle positions of c c^T, -1 = none
-    std::array<double, 21> products{};  ///< the matching coefficient products
-    int position_count = 0;
+    [[nodiscard]] bool empty() const { return first == last; }
   };
 
+  [[nodiscard]] std::span<const Entry> entries(const Row& row) const {
+    return std::span<const Entry>(entries_).subspan(row.first, row.last - row.first);
+  }
   double residual(const Row& row, std::span<const double> u) const;
   using Solver = std::function<void(std::span<const double>, std::span<double>)>;
   void factor_active(SparseCholesky& cholesky, std::span<const double> values, const std::vector<std::uint8_t>& active);
@@ -104,11 +105,14 @@ class ExactContact {
   const DofMap& dofs_;
   ContactPairs pairs_;
   std::vector<Row> rows_;
+  std::vector<Entry> entries_;    // every row's entries, row after row
+  std::vector<Index> positions_;  // every row's upper-triangle positions of c c^T, -1 = none
+  std::vector<double> products_;  // the matching coefficient products
   std::vector<Index> diagonal_;  // position of K_jj
   std::vector<double> values_;   // K_A
   std::vector<double> b_;        // right-hand side of K_A u = b
   UpdatableFactor updatable_;    // for small active-set changes
-  std::vector<UpdateColumn> columns_;
+  UpdateColumns columns_;
 };
 
 }  // namespace saasgaps

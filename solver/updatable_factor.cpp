@@ -52,16 +52,18 @@ void UpdatableFactor::copy(const SparseCholesky& factored) {
   for (Index k = 0; k < n; ++k) m.inverse[perm[k]] = k;
 }
 
-void UpdatableFactor::update(std::span<const UpdateColumn> columns, bool add) {
+void UpdatableFactor::update(const UpdateColumns& columns, bool add) {
   if (columns.empty()) return;
   Impl& m = *impl_;
   // W with its rows permuted like L (updown wants P W), sorted within each column.
   m.colptr.assign(1, 0);
   m.rowind.clear();
   m.values.clear();
-  for (const UpdateColumn& w : columns) {
+  for (std::size_t c = 0; c < columns.size(); ++c) {
     m.column.clear();
-    for (int k = 0; k < w.count; ++k) m.column.emplace_back(m.inverse[w.row[k]], w.value[k]);
+    for (Index k = columns.start[c]; k < columns.start[c + 1]; ++k) {
+      m.column.emplace_back(m.inverse[columns.row[k]], columns.value[k]);
+    }
     std::sort(m.column.begin(), m.column.end());
     for (const auto& [row, value] : m.column) {
       m.rowind.push_back(row);

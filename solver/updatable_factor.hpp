@@ -4,7 +4,6 @@
 /// copy of a SparseCholesky factorization converted to simplicial LDL' (the form updown works on);
 /// SparseCholesky's own supernodal factor is left as it is.
 
-#include <array>
 #include <memory>
 #include <span>
 #include <vector>
@@ -14,11 +13,26 @@
 
 namespace saasgaps {
 
-/// One column w of W: entries (row, value), rows in the original (unpermuted) numbering.
-struct UpdateColumn {
-  std::array<Index, 6> row{};
-  std::array<double, 6> value{};
-  int count = 0;
+/// The columns w of W, each with any number of entries (row, value), rows in the original
+/// (unpermuted) numbering; stored like CSC: column c holds entries start[c] .. start[c + 1] - 1.
+struct UpdateColumns {
+  std::vector<Index> start{0};
+  std::vector<Index> row;
+  std::vector<double> value;
+
+  void clear() {
+    start.assign(1, 0);
+    row.clear();
+    value.clear();
+  }
+  /// Adds an entry to the column being built; end_column() closes it.
+  void add(Index r, double v) {
+    row.push_back(r);
+    value.push_back(v);
+  }
+  void end_column() { start.push_back(static_cast<Index>(row.size())); }
+  [[nodiscard]] std::size_t size() const { return start.size() - 1; }
+  [[nodiscard]] bool empty() const { return size() == 0; }
 };
 
 class UpdatableFactor {
@@ -33,7 +47,7 @@ class UpdatableFactor {
 
   /// L D L' + W W' (add) or L D L' - W W' (downdate). Throws NotPositiveDefinite when a downdate
   /// loses definiteness (then the factor must be copied afresh).
-  void update(std::span<const UpdateColumn> columns, bool add);
+  void update(const UpdateColumns& columns, bool add);
 
   /// x = (L D L')^-1 b.
   void solve(std::span<const double> b, std::span<double> x);

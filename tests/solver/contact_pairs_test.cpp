@@ -71,7 +71,7 @@ TEST(ContactPairs, ATriangleGapPairsItsLoneNodeWithThePointOfTheEdgeFacingIt) {
   const ContactPairs p = contact_pairs(m);
   ASSERT_EQ(p.pairs.size(), 1U);
   const ContactPair& pair = p.pairs[0];
-  ASSERT_EQ(pair.count, 3);
+  ASSERT_EQ(pair.node.size(), 3U);
   EXPECT_EQ(pair.node[0], 2);  // the lone node, side b (above)
   EXPECT_DOUBLE_EQ(pair.weight[0], 1.0);
   EXPECT_DOUBLE_EQ(pair.weight[1], -0.75);  // the edge point at s = 0.25

@@ -1,0 +1,43 @@
+#include "contact_method.hpp"
+
+#include <cassert>
+
+#include "gap_modulus_method.hpp"
+#include "node_pair_method.hpp"
+
+namespace saasgaps {
+
+void ContactMethod::solve(SparseCholesky& cholesky, std::span<const double> values, std::span<const double> rhs,
+                          RestartState&, std::span<double> u) {
+  cholesky.factorize(values);
+  cholesky.solve(rhs, u);
+}
+
+void ContactMethod::check_solved(const RestartState&, const ContactOutcome&) const {}
+
+void ContactMethod::add_columns(const RestartState&, IterationRecord&) const {}
+
+std::string ContactMethod::converged_note(const RestartState&, const ContactOutcome&) const { return {}; }
+
+namespace {
+
+/// A model without gaps: nothing to add, nothing to measure, never a veto.
+class NoContact final : public ContactMethod {
+ public:
+  void begin_iteration(RestartState&, StiffnessSystem&) override {}
+  void evaluate(RestartState&, ContactOutcome& outcome) const override { outcome = ContactOutcome{}; }
+};
+
+}  // namespace
+
+std::unique_ptr<ContactMethod> make_contact_method(const ContactSetup& setup) {
+  if (setup.gaps == nullptr) return std::make_unique<NoContact>();
+  switch (setup.gaps->method) {
+    case GapMethod::classic: return std::make_unique<GapModulusMethod>(setup.model, *setup.gaps);
+    case GapMethod::exact: return std::make_unique<NodePairMethod>(setup.model, *setup.gaps, setup.dofs, setup.pattern);
+  }
+  assert(false && "every GapMethod has its case");
+  return nullptr;
+}
+
+}  // namespace saasgaps

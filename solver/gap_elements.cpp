@@ -1,0 +1,77 @@
+#include "gap_elements.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "element_data.hpp"
+#include "errors.hpp"
+#include "stiffness_system.hpp"
+
+namespace saasgaps {
+
+GapElements::GapElements(const Model& model, const GapSettings& settings)
+    : model_(model), settings_(settings), closure_(settings_) {}
+
+GapModuli GapElements::floor_moduli() const {
+  GapModuli m;
+  m.tensile = closure_.floor_modulus();
+  m.normal.assign(settings_.elements.size(), m.tensile);
+  m.schedule_step = static_cast<int>(settings_.tensile_schedule.size()) - 1;
+  return m;
+}
+
+void GapElements::advance(GapHistory& history, GapModuli next, int finished_iterations) {
+  if (finished_iterations > 0) {
+    history.previous_normal = std::move(history.used.normal);
+    history.previous_strain = std::move(history.strain);
+    history.previous_tensile = history.used.tensile;
+  }
+  // The strains of K+1 are measured after its solve (keep_strains).
+  history.strain.clear();
+  history.used = std::move(next);
+}
+
+void GapElements::assemble(StiffnessSystem& system, const GapModuli& moduli) const {
+  system.assemble_gaps([&](std::size_t g) { return closure_.law(g, moduli, model_.analysis); });
+}
+
+void GapElements::measure(const GapHistory& history, std::span<const double> displacement,
+                          ContactOutcome& outcome) const {
+  const auto& elements = settings_.elements;
+  outcome.gaps.resize(elements.size());
+  for (std::size_t g = 0; g < elements.size(); ++g) {
+    const GapElement& gap = elements[g];
+    const ElementData data = gap_element_data(model_, g, closure_.law(g, history.used, model_.analysis));
+    const ElementState es = element_state(data, element_displacements(displacement, gap.nodes, gap.node_count));
+    GapResult& r = outcome.gaps[g];
+    r.id = gap.id;
+    r.eps_m = normal_component(es.strain, gap.angle_deg, 1.0);
+    r.closure = -100.0 * r.eps_m;
+    r.modulus = history.used.normal[g];
+    r.sigma_m = normal_component(es.stress, gap.angle_deg, 2.0);
+  }
+}
+
+void GapElements::keep_strains(const ContactOutcome& outcome, GapHistory& history) const {
+  const std::size_t n = outcome.gaps.size();
+  if (history.strain.empty()) {
+    history.strain.resize(n);  // O(gaps), not O(elements)
+    for (std::size_t g = 0; g < n; ++g) history.strain[g] = outcome.gaps[g].eps_m;
+    return;
+  }
+  for (std::size_t g = 0; g < n; ++g) {
+    const double here = outcome.gaps[g].eps_m, saved = history.strain[g];
+    if (std::abs(here - saved) > 1e-9 * (1.0 + std::abs(saved))) {
+      throw SolverError("the restart state does not belong to this model: gap " +
+                        std::to_string(settings_.elements[g].id) + " has strain " + std::to_string(here) +
+                        " here and " + std::to_string(saved) + " in the state");
+    }
+  }
+}
+
+void GapElements::add_columns(const GapHistory& history, IterationRecord& row) {
+  row.tensile_modulus = history.used.tensile;
+  row.extrapolated = history.used.extrapolated;
+}
+
+}  // namespace saasgaps

@@ -1,0 +1,53 @@
+#pragma once
+/// The gap elements as the contact methods that use them see them (contact_method.hpp): their
+/// fictitious material under this iteration's moduli, their assembly on top of the solids, and the
+/// closure and normal stress they measure. Both built-in methods keep them: the classic method as its
+/// whole model of contact, the exact method at the floor modulus, where they hold bodies supported
+/// only by gaps.
+
+#include <span>
+
+#include "contact_method.hpp"
+#include "gap_closure.hpp"
+#include "model.hpp"
+
+namespace saasgaps {
+
+class GapElements {
+ public:
+  GapElements(const Model& model, const GapSettings& settings);
+
+  [[nodiscard]] const GapSettings& settings() const { return settings_; }
+  /// Section II's modulus rules and test (e) for these settings.
+  [[nodiscard]] const GapClosure& closure() const { return closure_; }
+
+  /// The floor modulus (the schedule's last value) in every gap, M and N alike.
+  [[nodiscard]] GapModuli floor_moduli() const;
+
+  /// Iteration K+1 uses `next`: the moduli and strains of K become the previous ones (from K = 1 on).
+  static void advance(GapHistory& history, GapModuli next, int finished_iterations);
+
+  /// Adds the gap elements under `moduli` to the system, on top of its last solid assembly.
+  void assemble(StiffnessSystem& system, const GapModuli& moduli) const;
+
+  /// Per gap element, from the full displacement vector under the moduli history.used: id, eps_M
+  /// (normal strain across the gap), closure = -100 eps_M, E_M used and sigma_m (normal stress across
+  /// it). Leaves state, converged and failure to the method.
+  void measure(const GapHistory& history, std::span<const double> displacement, ContactOutcome& outcome) const;
+
+  /// Records the outcome's strains in history.strain after a solve. Resuming, the saved strains go on
+  /// (the same build recomputes them to the last bit; a binary built differently may differ by
+  /// round-off, and that is still this model's state); anything more throws SolverError: the state
+  /// belongs to another model.
+  void keep_strains(const ContactOutcome& outcome, GapHistory& history) const;
+
+  /// The gap columns every gap-element method fills: the tensile modulus and the extrapolation flag.
+  static void add_columns(const GapHistory& history, IterationRecord& row);
+
+ private:
+  const Model& model_;
+  GapSettings settings_;
+  GapClosure closure_;
+};
+
+}  // namespace saasgaps
