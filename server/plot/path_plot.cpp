@@ -147,6 +147,7 @@ DataTable draw_path_plot(const Canvas& canvas, const json& result, const std::st
 
   DataTable table({"s", "r", "z", "element", field_name, "px", "py"});
   table.note("SAASGAPS " + field_name + " along a path: " + mesh.title);
+  if (field.cylindrical != Cylindrical::none) table.note(label);  // says the centre
   table.note("s, r, z " + unit_phrase(Quantity::length, mesh.units) + "; " + field_name + " " +
              unit_phrase(field.quantity, mesh.units) + "; element empty and value empty outside the mesh");
   for (std::size_t k = 0; k < samples.size(); ++k) {
