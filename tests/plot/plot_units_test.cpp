@@ -455,9 +455,9 @@ double closest_levels(const BandLevels& b) {
 }
 
 TEST(BandLevels, NoBandsAreSpentOnRoundOff) {
-  // Like the shrink-fit rings' out-of-plane stress: half the area at -91530 .. -40000, half at
-  // 6552.8 .. 6555.8 (constant up to discretisation noise). Quantile bands used to give the 3 psi
-  // of noise eight bands (6552.78, .., 6555.80).
+  // Half the area spread over -91530 .. -40000, half at 6552.8 .. 6555.8 (constant up to
+  // discretisation noise): quantile bands used to give the 3 of noise most of the bands.
+  // (plot_render_test checks the shrink-fit rings themselves.)
   std::vector<double> values, weights;
   for (int i = 0; i < 200; ++i) {
     values.push_back(-91530.0 + 51530.0 * i / 199.0);
