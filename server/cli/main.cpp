@@ -19,6 +19,7 @@
 #include "cli/validate_command.hpp"
 #include "cli/worker_command.hpp"
 #include "io/run_limits.hpp"
+#include "plot/color_map.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"SAASGAPS: thermal stress analysis of plane and axisymmetric bodies in contact across gaps", "saasgaps"};
@@ -138,12 +139,17 @@ int main(int argc, char** argv) {
   plot_cmd->add_option("--height", plot.height, "Image height, px")->check(CLI::Range(16, 8000))->capture_default_str();
   plot_cmd->add_option("--bands", plot.bands, "At most this many colour bands")->check(CLI::Range(2, 40))
       ->capture_default_str();
-  plot_cmd->add_option("--levels", plot.levels, "Band levels: quantile (bands of equal area) or even (equal width)")
-      ->check(CLI::IsMember({"quantile", "even"}))
+  plot_cmd->add_option("--levels", plot.levels, "Band levels: even (round, equal width) or quantile (equal area)")
+      ->check(CLI::IsMember({"even", "quantile"}))
       ->capture_default_str();
-  plot_cmd->add_option("--colormap", plot.color_map, "viridis, cividis or rainbow")
-      ->check(CLI::IsMember({"viridis", "cividis", "rainbow"}))
+  plot_cmd->add_option("--colormap", plot.color_map,
+                       "auto (diverging when the field changes sign, else viridis), viridis, cividis, diverging "
+                       "or rainbow")
+      ->check(CLI::IsMember(saasgaps::plot::ColorMap::names()))
       ->capture_default_str();
+  plot_cmd->add_option("--centre", plot.centre,
+                       "Plane models: the centre x,y of sigma_radial, sigma_hoop, tau_radial_hoop and their strains "
+                       "(default 0,0)");
   plot_cmd->add_option("--gaps", plot.gaps, "The row of gaps for closure and contact_pressure, in order: ids and "
                                             "ranges, e.g. 81-98 or 5,7,9-12 (default: every gap)");
   plot_cmd->add_option("--along", plot.along, "Gap row x axis: index, position (arc length), r or z")

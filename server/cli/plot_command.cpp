@@ -31,6 +31,11 @@ int run_plot(const PlotOptions& options) {
   request.contour.levels = plot::level_rule(options.levels);
   request.contour.color_map = options.color_map;
   try {
+    plot::set_centre(options.centre, request.centre);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--centre: ") + e.what());
+  }
+  try {
     plot::set_gap_row(options.gaps, options.along, request.row);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string("--gaps/--along: ") + e.what());

@@ -18,8 +18,9 @@ struct PlotOptions {
   int width = 1200;
   int height = 800;
   int bands = 12;
-  std::string levels = "quantile";  ///< quantile | even
-  std::string color_map = "viridis";
+  std::string levels = "even";  ///< even | quantile
+  std::string color_map = "auto";  ///< auto (diverging when the range spans zero, else viridis) or a map
+  std::string centre;  ///< "r,z": the centre of sigma_radial, sigma_hoop, ..; empty: the origin
   std::string gaps;             ///< the gap row: "81-98" etc.; empty: every gap
   std::string along = "index";  ///< gap row x axis: index | position | r | z
   std::string path;             ///< "r0,z0;r1,z1;..": plot the field along it

@@ -70,6 +70,7 @@ DataTable draw_closure_plot(const Canvas& canvas, const json& result, const GapR
   }
 
   std::string subtitle = "Closure of each gap (% of its width; 100 % = faces in contact), one curve per iteration";
+  if (row.parts() > 1) subtitle += " and row of gaps (" + std::to_string(row.parts()) + " separate rows)";
   if (curves.size() < all.size()) {
     subtitle += " (" + std::to_string(curves.size()) + " of " + std::to_string(all.size()) + " shown)";
   }
@@ -84,8 +85,7 @@ DataTable draw_closure_plot(const Canvas& canvas, const json& result, const GapR
     Series s;
     const bool last = k + 1 == curves.size();
     s.name = curves[k].iteration > 0 ? "iteration " + std::to_string(curves[k].iteration) : "final";
-    s.x = x;
-    s.y = curves[k].closures;
+    row.set_points(s, curves[k].closures);  // broken between the row's parts
     const double t = curves.size() > 1 ? 0.8 * (1.0 - static_cast<double>(k) / static_cast<double>(curves.size() - 1)) : 0.0;
     s.color = last ? colors::black : palette.at(t);
     s.width = last ? 2.5 : 1.4;
@@ -102,14 +102,16 @@ DataTable draw_closure_plot(const Canvas& canvas, const json& result, const GapR
   chart.draw_legend();
 
   // The table holds every iteration, drawn or not, and where the last curve's markers are.
-  std::vector<std::string> columns{"gap", "x"};
+  std::vector<std::string> columns{"gap", "x", "row_part"};
   for (const Curve& c : all) columns.push_back(c.iteration > 0 ? "iteration_" + std::to_string(c.iteration) : "final");
   columns.insert(columns.end(), {"px", "py_last"});
   DataTable table(columns);
   table.note("SAASGAPS gap closure per iteration: " + mesh.title);
-  table.note("x: " + row.axis.title + "; closures in % of each gap's width, 100 = contact");
+  table.note("x: " + row.axis.title + "; row_part: 1, 2, .. the connected run of gaps (one line each); closures "
+             "in % of each gap's width, 100 = contact");
   for (std::size_t i = 0; i < row.gaps.size(); ++i) {
-    std::vector<std::string> cells{std::to_string(mesh.gaps[row.gaps[i]].id), DataTable::number(x[i])};
+    std::vector<std::string> cells{std::to_string(mesh.gaps[row.gaps[i]].id), DataTable::number(x[i]),
+                                   std::to_string(row.part[i] + 1)};
     for (const Curve& c : all) cells.push_back(DataTable::number(c.closures[i]));
     const Point p = chart.to_device(x[i], all.back().closures[i]);
     cells.insert(cells.end(), {DataTable::number(p.x), DataTable::number(p.y)});

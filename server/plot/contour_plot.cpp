@@ -87,7 +87,7 @@ void stroke_edges(cairo_t* cr, const std::vector<std::array<int, 2>>& edges, con
 /// its band, and since one path holds all triangles, antialiasing leaves no seams along the
 /// element edges.
 void fill_bands(const Canvas& canvas, const ResultMesh& mesh, const std::vector<Point>& at,
-                const std::vector<double>& values, const std::vector<double>& levels, const ColorMap& map) {
+                const std::vector<double>& values, const std::vector<double>& levels, const std::vector<Rgb>& colors) {
   cairo_t* cr = canvas.context();
   std::vector<ValuePolygon> triangles;
   for (const SolidElement& e : mesh.solids) {
@@ -105,21 +105,21 @@ void fill_bands(const Canvas& canvas, const ResultMesh& mesh, const std::vector<
       }
       if (!part.empty()) cairo_close_path(cr);
     }
-    canvas.set_color(map.band(k, bands));
+    canvas.set_color(colors[k]);
     cairo_fill(cr);
   }
 }
 
 /// The colour bar in `box` (its width is the bar's), highest level on top, level labels to the
 /// right; a uniform field gets one band labelled with its value. Returns the bar's bottom.
-double draw_color_bar(const Canvas& canvas, const Rect& box, const BandLevels& bands_of, const ColorMap& map,
+double draw_color_bar(const Canvas& canvas, const Rect& box, const BandLevels& bands_of, const std::vector<Rgb>& colors,
                       std::optional<double> uniform_value) {
   const Typography t = typography(canvas);
   const std::vector<double>& levels = bands_of.levels;
   const int bands = static_cast<int>(levels.size()) - 1;
   const double band_height = std::clamp(box.height / bands, 0.5 * t.small, 2.4 * t.small);
   for (int k = 0; k < bands; ++k) {
-    canvas.fill_rect({box.x, box.y + (bands - 1 - k) * band_height, box.width, band_height}, map.band(k, bands));
+    canvas.fill_rect({box.x, box.y + (bands - 1 - k) * band_height, box.width, band_height}, colors[k]);
   }
   canvas.stroke_rect({box.x, box.y, box.width, bands * band_height}, colors::axis, 1.0);
   const double label_x = box.right() + 0.5 * t.small;
@@ -275,10 +275,11 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
     throw std::invalid_argument("the deformation scale must be a positive number, not " +
                                 format_value(*options.deformation_scale));
   }
-  const ColorMap colors_of = ColorMap::named(options.color_map);
+  ColorMap::require_name(options.color_map);  // before the work
   const ResultMesh mesh = ResultMesh::from_result(result);
   if (mesh.solids.empty()) throw std::invalid_argument("the result has no solid elements to contour");
-  const std::vector<double> values = nodal_values(result, mesh, field);
+  require_field_fits(field, mesh);
+  const std::vector<double> values = nodal_values(result, mesh, field, options.centre);
 
   // Levels from the values at the nodes of solid elements (the contoured ones): a node no solid
   // element uses weighs nothing.
@@ -292,6 +293,8 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
   if (!std::isfinite(low) || !std::isfinite(high)) throw std::invalid_argument("the field has no finite values");
   const BandLevels bands_of = band_levels(values, nodal_areas(mesh), options.max_bands, options.levels);
   const std::vector<double>& levels = bands_of.levels;
+  const ColorMap colors_of = ColorMap::named(ColorMap::for_range(options.color_map, low, high));
+  const std::vector<Rgb> band_colors = colors_of.band_colors(levels);
   const bool uniform = bands_of.uniform;
 
   // Extremes for the panel: element values as computed (averaging at nodes lowers peaks), or
@@ -299,7 +302,7 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
   std::vector<double> raw;
   std::vector<int> ids;
   if (field.location == FieldLocation::element) {
-    raw = element_values(result, field);
+    raw = element_values(result, mesh, field, options.centre);
     for (const SolidElement& e : mesh.solids) ids.push_back(e.id);
   } else {
     // Over the nodes drawn: a wall node that only a gap element uses is not part of the picture.
@@ -316,10 +319,10 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
   const bool deformed = options.automatic_deformation || options.deformation_scale.has_value();
   const double deformation = options.automatic_deformation ? automatic_deformation_scale(mesh)
                                                            : options.deformation_scale.value_or(0.0);
-  std::string subtitle = std::string(field_label(field, mesh)) + " " + unit_phrase(field.quantity, mesh.units) +
+  std::string subtitle = field_label(field, mesh, options.centre) + " " + unit_phrase(field.quantity, mesh.units) +
                          (uniform ? "" : options.levels == LevelRule::quantile ? ", bands of equal area"
                                                                                  : ", bands of equal width") +
-                         "\n";
+                         (colors_of.centred_on_zero() && !uniform ? ", white at zero" : "") + "\n";
   if (deformed) {
     subtitle += "Deformed shape, displacements \u00d7" + format_value(deformation, 3) + " (dashed: undeformed)";
   } else {
@@ -330,7 +333,7 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
   const Typography t = typography(canvas);
 
   const TickFormat level_text(bands_of.label_step, std::max(std::abs(levels.front()), std::abs(levels.back())));
-  const std::string bar_title = with_unit(field.name, field.quantity, mesh.units);
+  const std::string bar_title = with_unit(field_title(field, mesh), field.quantity, mesh.units);
   const double bar_width = 1.6 * t.base;
   double panel_width = 0.0;
   for (const double l : levels) panel_width = std::max(panel_width, canvas.text_width(level_text(l), t.small));
@@ -369,7 +372,7 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
     canvas.set_line(1.0);
   }
 
-  fill_bands(canvas, mesh, at, values, levels, colors_of);
+  fill_bands(canvas, mesh, at, values, levels, band_colors);
 
   if (options.mesh) {
     canvas.set_color(grey(0.15), 0.55);
@@ -396,7 +399,7 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
   y += 2.3 * t.small;  // room for the top level's label
   const double legend_height = mesh.gaps.empty() ? 0.0 : gap_legend_height(canvas);
   const Rect bar{panel.x, y, bar_width, panel.bottom() - y - 4.5 * t.small - legend_height};
-  y = draw_color_bar(canvas, bar, bands_of, colors_of, uniform_value);
+  y = draw_color_bar(canvas, bar, bands_of, band_colors, uniform_value);
   y += 1.2 * t.small;
   canvas.text({panel.x, y}, max_text, t.small, HAlign::left, VAlign::top);
   y += 1.4 * t.small;

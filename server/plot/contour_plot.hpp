@@ -3,7 +3,8 @@
 /// between round level values on the undeformed or the deformed mesh, the gap elements marked by
 /// state (closed, overclosed, partial, open), r and z axes with round ticks (one step for both:
 /// the drawing is to scale), a colour bar with the levels and the unit, and the extreme element
-/// values with their element ids.
+/// values with their element ids. A field whose range spans zero is drawn by default in the
+/// diverging map centred on zero (color_map.hpp), any other in viridis.
 
 #include <optional>
 #include <string>
@@ -12,6 +13,7 @@
 
 #include "plot/band_levels.hpp"
 #include "plot/canvas.hpp"
+#include "plot/field.hpp"
 #include "plot/result_mesh.hpp"
 
 namespace saasgaps::plot {
@@ -25,8 +27,11 @@ struct ContourOptions {
   bool automatic_deformation = false;
   bool mesh = false;  ///< draw the element edges
   int max_bands = 12;
-  LevelRule levels = LevelRule::quantile;  ///< see band_levels.hpp
-  std::string color_map = "viridis";
+  LevelRule levels = LevelRule::even;  ///< see band_levels.hpp
+  /// A name of ColorMap::names(); "auto": diverging when the field's range spans zero, else viridis.
+  std::string color_map = "auto";
+  /// Plane models: the centre of the cylindrical components (sigma_hoop, ..), (x, y).
+  PlanePoint centre{0.0, 0.0};
 };
 
 /// Draws the contour plot over the whole canvas. Unknown field or colour map, a gap field, or a

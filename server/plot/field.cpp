@@ -4,6 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "plot/number_format.hpp"
+
 namespace saasgaps::plot {
 
 namespace {
@@ -26,28 +28,42 @@ std::string_view quantity_name(Quantity q) {
 }  // namespace
 
 const std::vector<FieldInfo>& fields() {
+  using enum Cylindrical;
   static const std::vector<FieldInfo> all = {
-      {"sigma_r", FieldLocation::element, "sigma_r", "Radial stress \u03c3r", "Stress \u03c3x (along r)", stress_units},
-      {"sigma_z", FieldLocation::element, "sigma_z", "Axial stress \u03c3z", "Stress \u03c3y (along z)", stress_units},
-      {"tau_rz", FieldLocation::element, "tau_rz", "Shear stress \u03c4rz", "Shear stress \u03c4xy", stress_units},
+      {"sigma_r", FieldLocation::element, "sigma_r", "Radial stress \u03c3r", "Stress \u03c3x (along r)", stress_units,
+       "\u03c3x"},
+      {"sigma_z", FieldLocation::element, "sigma_z", "Axial stress \u03c3z", "Stress \u03c3y (along z)", stress_units,
+       "\u03c3y"},
+      {"tau_rz", FieldLocation::element, "tau_rz", "Shear stress \u03c4rz", "Shear stress \u03c4xy", stress_units,
+       "\u03c4xy"},
       {"sigma_theta", FieldLocation::element, "sigma_theta", "Hoop stress \u03c3\u03b8",
-       "Out-of-plane stress \u03c3\u03b8", stress_units},
+       "Out-of-plane stress \u03c3z (not a hoop stress: that is sigma_hoop)", stress_units,
+       "\u03c3z, out of plane"},
       {"sigma_1", FieldLocation::element, "sigma_1", "Maximum principal stress in the plane \u03c31",
        "Maximum principal stress in the plane \u03c31", stress_units},
       {"sigma_2", FieldLocation::element, "sigma_2", "Minimum principal stress in the plane \u03c32",
        "Minimum principal stress in the plane \u03c32", stress_units},
       {"effective", FieldLocation::element, "effective", "Effective (von Mises) stress",
        "Effective (von Mises) stress", stress_units},
-      {"eps_r", FieldLocation::element, "eps_r", "Radial strain \u03b5r", "Strain \u03b5x", strain_units},
-      {"eps_z", FieldLocation::element, "eps_z", "Axial strain \u03b5z", "Strain \u03b5y", strain_units},
-      {"gamma_rz", FieldLocation::element, "gamma_rz", "Shear strain \u03b3rz", "Shear strain \u03b3xy", strain_units},
-      {"eps_theta", FieldLocation::element, "eps_theta", "Hoop strain \u03b5\u03b8", "Out-of-plane strain \u03b5\u03b8",
-       strain_units},
+      {"sigma_radial", FieldLocation::element, "", "", "Radial stress \u03c3rad", stress_units, "", radial},
+      {"sigma_hoop", FieldLocation::element, "", "", "Hoop stress \u03c3hoop", stress_units, "", hoop},
+      {"tau_radial_hoop", FieldLocation::element, "", "", "Radial-hoop shear stress \u03c4rad,hoop", stress_units, "",
+       radial_hoop},
+      {"eps_r", FieldLocation::element, "eps_r", "Radial strain \u03b5r", "Strain \u03b5x", strain_units, "\u03b5x"},
+      {"eps_z", FieldLocation::element, "eps_z", "Axial strain \u03b5z", "Strain \u03b5y", strain_units, "\u03b5y"},
+      {"gamma_rz", FieldLocation::element, "gamma_rz", "Shear strain \u03b3rz", "Shear strain \u03b3xy", strain_units,
+       "\u03b3xy"},
+      {"eps_theta", FieldLocation::element, "eps_theta", "Hoop strain \u03b5\u03b8",
+       "Out-of-plane strain \u03b5z (not a hoop strain: that is eps_hoop)", strain_units, "\u03b5z, out of plane"},
+      {"eps_radial", FieldLocation::element, "", "", "Radial strain \u03b5rad", strain_units, "", radial},
+      {"eps_hoop", FieldLocation::element, "", "", "Hoop strain \u03b5hoop", strain_units, "", hoop},
+      {"gamma_radial_hoop", FieldLocation::element, "", "", "Radial-hoop shear strain \u03b3rad,hoop (engineering)",
+       strain_units, "", radial_hoop},
       {"temperature", FieldLocation::node, "T", "Temperature", "Temperature", Quantity::temperature},
       {"displacement", FieldLocation::node, "", "Displacement magnitude |u|", "Displacement magnitude |u|",
        length_units},
-      {"u_r", FieldLocation::node, "u_r", "Radial displacement ur", "Displacement ux", length_units},
-      {"u_z", FieldLocation::node, "u_z", "Axial displacement uz", "Displacement uy", length_units},
+      {"u_r", FieldLocation::node, "u_r", "Radial displacement ur", "Displacement ux", length_units, "ux"},
+      {"u_z", FieldLocation::node, "u_z", "Axial displacement uz", "Displacement uy", length_units, "uy"},
       {"closure", FieldLocation::gap, "closure", "Gap closure", "Gap closure", Quantity::percent},
       {"contact_pressure", FieldLocation::gap, "contact_pressure", "Contact pressure across the gaps",
        "Contact pressure across the gaps", stress_units},
@@ -68,8 +84,44 @@ const FieldInfo& find_field(std::string_view name) {
   throw std::invalid_argument("unknown field '" + std::string(name) + "'; fields: " + field_names());
 }
 
-std::string_view field_label(const FieldInfo& field, const ResultMesh& mesh) {
-  return mesh.plane() ? field.plane_label : field.axisymmetric_label;
+std::string field_label(const FieldInfo& field, const ResultMesh& mesh, const PlanePoint& centre) {
+  if (field.cylindrical != Cylindrical::none) {
+    return std::string(field.plane_label) + " about (x, y) = (" + format_value(centre[0]) + ", " +
+           format_value(centre[1]) + ")";
+  }
+  return std::string(mesh.plane() ? field.plane_label : field.axisymmetric_label);
+}
+
+std::string field_title(const FieldInfo& field, const ResultMesh& mesh) {
+  if (!mesh.plane() || field.plane_meaning.empty()) return std::string(field.name);
+  return std::string(field.name) + " (" + std::string(field.plane_meaning) + ")";
+}
+
+void require_field_fits(const FieldInfo& field, const ResultMesh& mesh) {
+  if (field.cylindrical == Cylindrical::none || mesh.plane()) return;
+  throw std::invalid_argument("'" + std::string(field.name) +
+                              "' is a component about a centre in a plane model; in this axisymmetric model the "
+                              "radial, hoop and shear components are " +
+                              (field.quantity == Quantity::stress ? "sigma_r, sigma_theta and tau_rz"
+                                                                  : "eps_r, eps_theta and gamma_rz"));
+}
+
+double rotate_in_plane(double xx, double yy, double xy, double phi, Cylindrical component) {
+  const double c = std::cos(phi), s = std::sin(phi);
+  switch (component) {
+    case Cylindrical::radial: return xx * c * c + yy * s * s + 2.0 * xy * s * c;
+    case Cylindrical::hoop: return xx * s * s + yy * c * c - 2.0 * xy * s * c;
+    case Cylindrical::radial_hoop: return (yy - xx) * s * c + xy * (c * c - s * s);
+    case Cylindrical::none: break;
+  }
+  throw std::invalid_argument("rotate_in_plane: no component");
+}
+
+std::vector<std::string_view> element_keys(const FieldInfo& field) {
+  if (field.location != FieldLocation::element) return {};
+  if (field.cylindrical == Cylindrical::none) return {field.key};
+  if (field.quantity == Quantity::stress) return {"sigma_r", "sigma_z", "tau_rz"};
+  return {"eps_r", "eps_z", "gamma_rz"};
 }
 
 std::string unit_name(Quantity quantity, const UnitNames& units) {
@@ -95,17 +147,48 @@ std::string unit_phrase(Quantity quantity, const UnitNames& units) {
   return "in the model's " + std::string(quantity_name(quantity)) + " units";
 }
 
-std::vector<double> element_values(const nlohmann::json& result, const FieldInfo& field) {
+namespace {
+
+/// Per element, the value of each key, in the document's order.
+std::vector<std::vector<double>> stored_values(const nlohmann::json& result, const std::vector<std::string_view>& keys) {
+  std::vector<std::vector<double>> values(keys.size());
+  for (const nlohmann::json& e : result.at("elements")) {
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      const auto found = e.find(keys[k]);
+      if (found == e.end()) {
+        throw std::invalid_argument("element " + e.value("id", nlohmann::json()).dump() + " has no '" +
+                                    std::string(keys[k]) + "'");
+      }
+      values[k].push_back(found->get<double>());
+    }
+  }
+  return values;
+}
+
+}  // namespace
+
+std::vector<double> element_values(const nlohmann::json& result, const ResultMesh& mesh, const FieldInfo& field,
+                                   const PlanePoint& centre) {
   if (field.location != FieldLocation::element) {
     throw std::invalid_argument("'" + std::string(field.name) + "' is not an element field");
   }
+  require_field_fits(field, mesh);
+  std::vector<std::vector<double>> stored = stored_values(result, element_keys(field));
+  if (field.cylindrical == Cylindrical::none) return std::move(stored[0]);
+  // The stored shear strain is engineering (γ = 2 εxy): rotate the tensor, give γ back.
+  const double shear = field.quantity == Quantity::strain ? 0.5 : 1.0;
+  const double back = field.quantity == Quantity::strain && field.cylindrical == Cylindrical::radial_hoop ? 2.0 : 1.0;
   std::vector<double> values;
-  const std::string key(field.key);
-  for (const nlohmann::json& e : result.at("elements")) {
-    if (!e.contains(key)) {
-      throw std::invalid_argument("element " + e.value("id", nlohmann::json()).dump() + " has no '" + key + "'");
+  for (std::size_t e = 0; e < mesh.solids.size(); ++e) {
+    double x = 0.0, y = 0.0;
+    for (const int n : mesh.solids[e].nodes) {
+      x += mesh.nodes[n].r;
+      y += mesh.nodes[n].z;
     }
-    values.push_back(e.at(key).get<double>());
+    const double count = static_cast<double>(mesh.solids[e].nodes.size());
+    // At the centre itself the direction is undefined; atan2(0, 0) = 0 takes x as radial there.
+    const double phi = std::atan2(y / count - centre[1], x / count - centre[0]);
+    values.push_back(back * rotate_in_plane(stored[0][e], stored[1][e], shear * stored[2][e], phi, field.cylindrical));
   }
   return values;
 }
@@ -136,10 +219,11 @@ std::vector<double> average_to_nodes(const ResultMesh& mesh, const std::vector<d
   return values;
 }
 
-std::vector<double> nodal_values(const nlohmann::json& result, const ResultMesh& mesh, const FieldInfo& field) {
+std::vector<double> nodal_values(const nlohmann::json& result, const ResultMesh& mesh, const FieldInfo& field,
+                                 const PlanePoint& centre) {
   switch (field.location) {
     case FieldLocation::element:
-      return average_to_nodes(mesh, element_values(result, field));
+      return average_to_nodes(mesh, element_values(result, mesh, field, centre));
     case FieldLocation::node: {
       const auto value = [&field](const MeshNode& n) {
         if (field.name == "temperature") return n.temperature;

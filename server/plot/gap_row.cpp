@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -51,6 +53,58 @@ std::vector<int> parse_gap_ids(const std::string& text) {
   return ids;
 }
 
+namespace {
+
+/// The gap's centroid (mean of its nodes, undeformed) and its length along the face: the extent
+/// of its nodes perpendicular to M.
+struct GapShape {
+  std::array<double, 2> centre;
+  double length;
+};
+
+GapShape gap_shape(const ResultMesh& mesh, const GapElement& g) {
+  const double a = g.angle_deg * std::numbers::pi / 180.0;
+  const std::array<double, 2> along{-std::sin(a), std::cos(a)};
+  double r = 0.0, z = 0.0, lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const int n : g.nodes) {
+    r += mesh.nodes[n].r;
+    z += mesh.nodes[n].z;
+    const double t = mesh.nodes[n].r * along[0] + mesh.nodes[n].z * along[1];
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  }
+  const double count = static_cast<double>(g.nodes.size());
+  return {{r / count, z / count}, hi - lo};
+}
+
+}  // namespace
+
+bool gaps_connected(const ResultMesh& mesh, const GapElement& a, const GapElement& b) {
+  for (const int n : a.nodes) {
+    if (std::find(b.nodes.begin(), b.nodes.end(), n) != b.nodes.end()) return true;
+  }
+  const GapShape p = gap_shape(mesh, a), q = gap_shape(mesh, b);
+  return std::hypot(q.centre[0] - p.centre[0], q.centre[1] - p.centre[1]) <= 0.6 * (p.length + q.length);
+}
+
+void GapRow::set_points(Series& series, const std::vector<double>& y, std::size_t from, std::size_t to) const {
+  to = std::min(to, gaps.size());
+  for (std::size_t i = from; i < to; ++i) {
+    if (i > from && part[i] != part[i - 1]) {
+      series.x.push_back(x[i]);
+      series.y.push_back(std::numeric_limits<double>::quiet_NaN());
+    }
+    series.x.push_back(x[i]);
+    series.y.push_back(y[i]);
+  }
+}
+
+std::pair<std::size_t, std::size_t> GapRow::part_range(int k) const {
+  const auto begin = std::find(part.begin(), part.end(), k);
+  const auto end = std::find_if(begin, part.end(), [k](int p) { return p != k; });
+  return {static_cast<std::size_t>(begin - part.begin()), static_cast<std::size_t>(end - part.begin())};
+}
+
 GapRow select_gap_row(const ResultMesh& mesh, const GapRowOptions& options, int max_labels) {
   GapRow row;
   if (options.gap_ids.empty()) {
@@ -67,6 +121,11 @@ GapRow select_gap_row(const ResultMesh& mesh, const GapRowOptions& options, int 
     }
   }
   if (row.gaps.empty()) throw std::invalid_argument("the result has no gap elements to plot along");
+  row.part.push_back(0);
+  for (std::size_t i = 1; i < row.gaps.size(); ++i) {
+    const bool connected = gaps_connected(mesh, mesh.gaps[row.gaps[i - 1]], mesh.gaps[row.gaps[i]]);
+    row.part.push_back(row.part.back() + (connected ? 0 : 1));
+  }
 
   // Centroids of the undeformed gaps.
   std::vector<std::array<double, 2>> centre;

@@ -8,6 +8,14 @@
 ///   position  arc length s along the chain of gap centroids (undeformed), from the first gap
 ///   r, z      the gap centroid's coordinate (the row is drawn in its given order; a row that
 ///             folds back on itself in r or z draws back too)
+///
+/// A row may cross from one interface to another (every gap of a model with a retainer and a cap
+/// interface): the row falls into parts, runs of neighbouring gaps in row order that are connected,
+/// and a curve along the row is drawn one line per part, never a line from one interface to
+/// another. Two gaps next to each other in the row are connected when they share a node, or, for
+/// gaps that do not (each its own node pairs), when they abut along the face: their centroids are
+/// at most 0.6 (L_a + L_b) apart, L the gap's length along its face (perpendicular to M); abutting
+/// gaps are 0.5 (L_a + L_b) apart.
 
 #include <string>
 #include <vector>
@@ -35,7 +43,19 @@ struct GapRow {
   std::vector<std::size_t> gaps;  ///< indices into mesh.gaps, in row order
   std::vector<double> x;          ///< one per gap, as the axis measures
   Axis axis;                      ///< the x axis: ticks and title (with the length unit)
+  /// Per gap of the row, its part (see above): 0 for the first run of connected gaps, 1, .. after.
+  std::vector<int> part;
+  int parts() const { return part.empty() ? 0 : part.back() + 1; }
+  /// The points (x[i], y[i]) of gaps from..to (row positions, to excluded) as one series whose
+  /// line breaks between parts (a NaN point between them).
+  void set_points(Series& series, const std::vector<double>& y, std::size_t from = 0,
+                  std::size_t to = static_cast<std::size_t>(-1)) const;
+  /// Row positions [begin, end) of part k.
+  std::pair<std::size_t, std::size_t> part_range(int k) const;
 };
+
+/// Whether gaps a and b are connected (see above).
+bool gaps_connected(const ResultMesh& mesh, const GapElement& a, const GapElement& b);
 
 /// The row: an id that is not a gap element of the result is a std::invalid_argument naming it. On
 /// the index axis at most max_labels gap ids are written (every k-th gap), so that they do not

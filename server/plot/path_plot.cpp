@@ -15,6 +15,20 @@ namespace saasgaps::plot {
 
 using nlohmann::json;
 
+PlanePoint parse_point(const std::string& text) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos) throw std::invalid_argument("'" + text + "' is not a point r,z");
+  PlanePoint p{};
+  for (int k = 0; k < 2; ++k) {
+    const std::string number = k == 0 ? text.substr(0, comma) : text.substr(comma + 1);
+    const auto [stop, error] = std::from_chars(number.data(), number.data() + number.size(), p[k]);
+    if (number.empty() || error != std::errc() || stop != number.data() + number.size() || !std::isfinite(p[k])) {
+      throw std::invalid_argument("'" + number + "' in '" + text + "' is not a number");
+    }
+  }
+  return p;
+}
+
 std::vector<std::array<double, 2>> parse_path(const std::string& text) {
   const auto fail = [&text](const std::string& why) {
     return std::invalid_argument("a path is 'r0,z0;r1,z1;..' with at least two points; '" + text + "': " + why);
@@ -22,18 +36,11 @@ std::vector<std::array<double, 2>> parse_path(const std::string& text) {
   std::vector<std::array<double, 2>> points;
   for (std::size_t begin = 0; begin <= text.size();) {
     const std::size_t end = std::min(text.find(';', begin), text.size());
-    const std::string item = text.substr(begin, end - begin);
-    const std::size_t comma = item.find(',');
-    if (comma == std::string::npos) throw fail("'" + item + "' is not a point r,z");
-    std::array<double, 2> p{};
-    for (int k = 0; k < 2; ++k) {
-      const std::string number = k == 0 ? item.substr(0, comma) : item.substr(comma + 1);
-      const auto [stop, error] = std::from_chars(number.data(), number.data() + number.size(), p[k]);
-      if (number.empty() || error != std::errc() || stop != number.data() + number.size() || !std::isfinite(p[k])) {
-        throw fail("'" + number + "' is not a number");
-      }
+    try {
+      points.push_back(parse_point(text.substr(begin, end - begin)));
+    } catch (const std::invalid_argument& e) {
+      throw fail(e.what());
     }
-    points.push_back(p);
     begin = end + 1;
   }
   if (points.size() < 2) throw fail("one point is not a path");
@@ -77,7 +84,7 @@ std::string point_text(const std::array<double, 2>& p) {
 }  // namespace
 
 DataTable draw_path_plot(const Canvas& canvas, const json& result, const std::string& field_name,
-                         const PathOptions& options) {
+                         const PathOptions& options, const PlanePoint& centre) {
   const FieldInfo& field = find_field(field_name);
   if (field.location == FieldLocation::gap) {
     throw std::invalid_argument("'" + field_name + "' is a gap field: plot it along a row of gaps, not a path");
@@ -90,11 +97,11 @@ DataTable draw_path_plot(const Canvas& canvas, const json& result, const std::st
   if (mesh.solids.empty()) throw std::invalid_argument("the result has no solid elements to sample");
   const PointLocator locator(mesh);
   const bool per_element = field.location == FieldLocation::element;
-  const std::vector<double> element = per_element ? element_values(result, field) : std::vector<double>{};
+  const std::vector<double> element = per_element ? element_values(result, mesh, field, centre) : std::vector<double>{};
   const std::vector<double> nodal = per_element ? std::vector<double>{} : nodal_values(result, mesh, field);
 
   Series curve;
-  curve.name = std::string(field.name);
+  curve.name = field_title(field, mesh);
   curve.color = {0.10, 0.30, 0.75};
   curve.width = 2.0;
   std::vector<Sample> samples = samples_along(options.points, options.samples);
@@ -125,7 +132,7 @@ DataTable draw_path_plot(const Canvas& canvas, const json& result, const std::st
 
   std::string route;
   for (const auto& p : options.points) route += (route.empty() ? "" : " \u2192 ") + point_text(p);
-  const std::string label(field_label(field, mesh));
+  const std::string label = field_label(field, mesh, centre);
   const Rect area = draw_header(canvas, mesh.title.empty() ? "SAASGAPS result" : mesh.title,
                                 label + " " + unit_phrase(field.quantity, mesh.units) + ", along " + route + "\n" +
                                     (per_element ? "element values" : "interpolated in the elements") + " at " +
@@ -133,13 +140,14 @@ DataTable draw_path_plot(const Canvas& canvas, const json& result, const std::st
                                     run_summary(mesh.status, mesh.iterations));
   const double length = samples.back().s;
   const Chart chart(canvas, area, numeric_axis(0.0, length, with_unit("distance s along the path", Quantity::length, mesh.units)),
-                    numeric_axis(low, high, with_unit(field.name, field.quantity, mesh.units)), {curve});
+                    numeric_axis(low, high, with_unit(curve.name, field.quantity, mesh.units)), {curve});
   chart.draw_axes();
   chart.draw(curve);
   chart.draw_legend();
 
   DataTable table({"s", "r", "z", "element", field_name, "px", "py"});
   table.note("SAASGAPS " + field_name + " along a path: " + mesh.title);
+  if (field.cylindrical != Cylindrical::none) table.note(label);  // says the centre
   table.note("s, r, z " + unit_phrase(Quantity::length, mesh.units) + "; " + field_name + " " +
              unit_phrase(field.quantity, mesh.units) + "; element empty and value empty outside the mesh");
   for (std::size_t k = 0; k < samples.size(); ++k) {

@@ -17,6 +17,7 @@
 
 #include "plot/canvas.hpp"
 #include "plot/data_table.hpp"
+#include "plot/field.hpp"
 
 namespace saasgaps::plot {
 
@@ -29,9 +30,14 @@ struct PathOptions {
 /// path: std::invalid_argument quoting the text.
 std::vector<std::array<double, 2>> parse_path(const std::string& text);
 
+/// "r,z": one point, as a path's corners are written. Anything else: std::invalid_argument
+/// quoting the text.
+PlanePoint parse_point(const std::string& text);
+
 /// Draws the plot of the field (a name of fields(), not a gap field) over the whole canvas and
 /// returns its data table: per sample s, r, z, the element id (empty outside), the value and its px.
+/// Cylindrical components are taken about `centre`.
 DataTable draw_path_plot(const Canvas& canvas, const nlohmann::json& result, const std::string& field,
-                         const PathOptions& options);
+                         const PathOptions& options, const PlanePoint& centre = {0.0, 0.0});
 
 }  // namespace saasgaps::plot

@@ -24,6 +24,15 @@ void set_deformation(const std::string& text, ContourOptions& contour) {
   contour.deformation_scale = scale;
 }
 
+void set_centre(const std::string& text, PlanePoint& centre) {
+  if (text.empty()) return;
+  try {
+    centre = parse_point(text);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("the centre is a point r,z (x,y in a plane model): ") + e.what());
+  }
+}
+
 void set_gap_row(const std::string& ids, const std::string& along, GapRowOptions& row) {
   row.gap_ids = ids.empty() ? std::vector<int>{} : parse_gap_ids(ids);
   if (!along.empty()) row.along = row_axis(along);
@@ -45,14 +54,16 @@ ResultMembers result_members_for(const PlotRequest& request) {
   }
   // Every other plot draws the mesh (result_mesh.cpp): all of each node and gap, but of each
   // element only its id, material and nodes, and the value of the element field plotted (field.cpp).
-  // An element holds 18 members; these are 3 or 4 of them.
+  // (a cylindrical component: the three in-plane components it is rotated from). An element holds
+  // 18 members; these are 3 to 6 of them.
   // (Callers have checked the name: every plot but convergence is a field.)
-  const FieldInfo& field = find_field(request.name);
-  const std::string field_key(field.location == FieldLocation::element ? field.key : std::string_view());
-  return [field_key](int depth, std::string_view section, std::string_view key) {
+  std::vector<std::string> field_keys;
+  for (const std::string_view k : element_keys(find_field(request.name))) field_keys.emplace_back(k);
+  return [field_keys](int depth, std::string_view section, std::string_view key) {
     // depth 3 under "elements": a member of one element.
     if (depth != 3 || section != "elements") return true;
-    return key == "id" || key == "material" || key == "nodes" || key == field_key;
+    return key == "id" || key == "material" || key == "nodes" ||
+           std::find(field_keys.begin(), field_keys.end(), key) != field_keys.end();
   };
 }
 
@@ -71,7 +82,7 @@ std::optional<DataTable> draw(const Canvas& canvas, const nlohmann::json& result
   require_plot_name(request.name);
   if (request.path) {
     if (request.name == "convergence") throw std::invalid_argument("the convergence plot does not run along a path");
-    return draw_path_plot(canvas, result, request.name, *request.path);
+    return draw_path_plot(canvas, result, request.name, *request.path, request.centre);
   }
   if (request.name == "convergence") {
     draw_convergence_plot(canvas, result);
@@ -82,6 +93,7 @@ std::optional<DataTable> draw(const Canvas& canvas, const nlohmann::json& result
   } else {
     ContourOptions contour = request.contour;
     contour.field = request.name;
+    contour.centre = request.centre;
     draw_contour_plot(canvas, result, contour);
   }
   return std::nullopt;

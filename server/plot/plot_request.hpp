@@ -35,7 +35,10 @@ struct PlotRequest {
   ImageFormat format = ImageFormat::png;
   int width = 1200;  ///< px
   int height = 800;  ///< px
-  ContourOptions contour;  ///< for contour plots (its field is taken from name)
+  ContourOptions contour;  ///< for contour plots (its field and centre are taken from name and centre)
+  /// Plane models: the centre the cylindrical components (sigma_radial, sigma_hoop, ..) are taken
+  /// about, in a contour or path plot.
+  PlanePoint centre{0.0, 0.0};
   ClosureOptions closure;  ///< for the closure plot
   GapRowOptions row;       ///< the gaps the closure and contact_pressure plots run along
   std::optional<PathOptions> path;  ///< set: a line plot of the field along this path
@@ -44,6 +47,10 @@ struct PlotRequest {
 /// Sets the deformation of a contour plot from its text form: "auto" or a positive magnification;
 /// empty leaves the mesh undeformed. Anything else is a std::invalid_argument quoting the text.
 void set_deformation(const std::string& text, ContourOptions& contour);
+
+/// The centre of the cylindrical components from its text form "r,z" (x,y in a plane model); empty
+/// leaves it at the origin. Anything else is a std::invalid_argument quoting the text.
+void set_centre(const std::string& text, PlanePoint& centre);
 
 /// Sets the gap row from its text forms: ids as parse_gap_ids reads them ("" = every gap), the x
 /// axis as row_axis names it. Bad text: std::invalid_argument.

@@ -18,6 +18,7 @@
 #include "io/restraint_issues.hpp"
 #include "io/run_limits.hpp"
 #include "io/vtu_writer.hpp"
+#include "plot/color_map.hpp"
 #include "plot/plot_request.hpp"
 #include "service/assembly_upload.hpp"
 #include "service/guarded_server.hpp"
@@ -263,13 +264,17 @@ plot::PlotRequest plot_request(const httplib::Request& req) {
   const int samples = static_cast<int>(integer_parameter(req, "samples", 2, 100000).value_or(201));
   try {
     plot::set_deformation(req.get_param_value("deformed"), request.contour);
-    if (req.has_param("colormap")) request.contour.color_map = req.get_param_value("colormap");
+    if (req.has_param("colormap")) {
+      request.contour.color_map = req.get_param_value("colormap");
+      plot::ColorMap::require_name(request.contour.color_map);
+    }
     if (req.has_param("levels")) request.contour.levels = plot::level_rule(req.get_param_value("levels"));
+    plot::set_centre(req.get_param_value("centre"), request.centre);
     plot::set_gap_row(req.get_param_value("gaps"), req.get_param_value("along"), request.row);
     if (req.has_param("path")) request.path = plot::PathOptions{plot::parse_path(req.get_param_value("path")), samples};
   } catch (const std::invalid_argument& e) {
     throw HttpError(400, "Bad Request",
-                    std::string("query parameters deformed, colormap, levels, gaps, along, path: ") + e.what());
+                    std::string("query parameters deformed, colormap, levels, centre, gaps, along, path: ") + e.what());
   }
   return request;
 }

@@ -18,7 +18,9 @@
 #include <string>
 
 #include "io/json_subset.hpp"
+#include "plot/field.hpp"
 #include "plot/plot_request.hpp"
+#include "support/lame_rings.hpp"
 
 namespace saasgaps::plot {
 namespace {
@@ -118,6 +120,121 @@ TEST_F(PlotRender, ContourPngsDecodeAtTheirSizeWithManyColours) {
   EXPECT_GT(png_colours(render_plot(ring_, displacement), 800, 800), 30U);
 }
 
+/// Runs saasgaps with the arguments, expecting exit code 1 and the message in its stderr.
+void expect_error(const Outcome& r, const std::string& message) {
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+}
+
+/// Pixels of a decoded PNG that are clearly red (tension in the diverging map) and clearly blue.
+std::pair<std::size_t, std::size_t> red_and_blue_pixels(const std::string& png, const fs::path& scratch) {
+  std::ofstream(scratch, std::ios::binary) << png;
+  cairo_surface_t* image = cairo_image_surface_create_from_png(scratch.c_str());
+  std::size_t red = 0, blue = 0;
+  const unsigned char* data = cairo_image_surface_get_data(image);
+  const int stride = cairo_image_surface_get_stride(image);
+  for (int y = 0; data && y < cairo_image_surface_get_height(image); ++y) {
+    const auto* row = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+    for (int x = 0; x < cairo_image_surface_get_width(image); ++x) {
+      const int r = (row[x] >> 16) & 0xFF, g = (row[x] >> 8) & 0xFF, b = row[x] & 0xFF;
+      if (r > g + 60 && r > b + 60) ++red;
+      if (b > r + 60 && b > g + 20) ++blue;
+    }
+  }
+  cairo_surface_destroy(image);
+  return {red, blue};
+}
+
+TEST_F(PlotRender, RingFitHoopStressAboutTheOriginIsLames) {
+  // The shrink fit (plane strain, centred on the origin) against Lame's solution at the pressure
+  // of the closure the run reached: sigma = A -/+ B / r^2 (radial, hoop) in each ring, at each
+  // element's centroid radius (8 elements through each ring: the largest difference is 0.35 % of p).
+  const ResultMesh mesh = ResultMesh::from_result(ring_);
+  double closure = 0.0;
+  for (const GapElement& g : mesh.gaps) closure += g.closure / 100.0;
+  namespace lame = testing::lame_rings;
+  const double p = lame::contact_pressure(closure / static_cast<double>(mesh.gaps.size()));
+  ASSERT_GT(p, 10000.0);
+  const std::vector<double> hoop = element_values(ring_, mesh, find_field("sigma_hoop"));
+  const std::vector<double> radial = element_values(ring_, mesh, find_field("sigma_radial"));
+  const std::vector<double> shear = element_values(ring_, mesh, find_field("tau_radial_hoop"));
+  const std::vector<double> out_of_plane = element_values(ring_, mesh, find_field("sigma_theta"));
+  for (std::size_t e = 0; e < mesh.solids.size(); ++e) {
+    double x = 0.0, y = 0.0;
+    for (const int n : mesh.solids[e].nodes) {
+      x += mesh.nodes[n].r / 4.0;
+      y += mesh.nodes[n].z / 4.0;
+    }
+    const double r = std::hypot(x, y);
+    const bool inner = r < lame::b1;
+    const double A = inner ? -p * lame::b1 * lame::b1 / (lame::b1 * lame::b1 - lame::a1 * lame::a1)
+                           : p * lame::a2 * lame::a2 / (lame::b2 * lame::b2 - lame::a2 * lame::a2);
+    const double B = A * (inner ? lame::a1 * lame::a1 : lame::b2 * lame::b2);
+    SCOPED_TRACE("element " + std::to_string(mesh.solids[e].id) + " at r = " + std::to_string(r));
+    EXPECT_NEAR(hoop[e], A + B / (r * r), 0.01 * p);
+    EXPECT_NEAR(radial[e], A - B / (r * r), 0.01 * p);
+    EXPECT_NEAR(shear[e], 0.0, 0.01 * p);
+    // The hoop stress is not the stored sigma_theta, which here is the out-of-plane stress.
+    EXPECT_GT(std::abs(hoop[e] - out_of_plane[e]), 0.1 * p);
+  }
+}
+
+TEST_F(PlotRender, RingFitOutOfPlaneStressGetsNoBandsOfNoise) {
+  // The rings' out-of-plane stress is constant in each ring (Lame: sigma_r + sigma_theta is), up
+  // to 3 psi of discretisation noise: -91,532 .. -91,529 and 6,552.7 .. 6,555.8. Quantile levels
+  // used to spend eight of twelve bands on the outer ring's 3 psi (6555.80, 6555.55, .., 6552.78,
+  // -40000, -91529).
+  const ResultMesh mesh = ResultMesh::from_result(ring_);
+  const std::vector<double> stored = element_values(ring_, mesh, find_field("sigma_theta"));
+  for (std::size_t e = 0; e < mesh.solids.size(); ++e) {
+    if (mesh.solids[e].id < 200) {
+      EXPECT_NEAR(stored[e], -91530.5, 2.0) << "inner ring, element " << mesh.solids[e].id;
+    } else {
+      EXPECT_NEAR(stored[e], 6554.25, 1.6) << "outer ring, element " << mesh.solids[e].id;
+    }
+  }
+  const std::vector<double> values = nodal_values(ring_, mesh, find_field("sigma_theta"));
+  std::vector<double> area(mesh.nodes.size(), 0.0);
+  for (const SolidElement& e : mesh.solids) {
+    for (const int n : e.nodes) area[n] += mesh.area(e) / static_cast<double>(e.nodes.size());
+  }
+  for (const LevelRule rule : {ContourOptions{}.levels, LevelRule::quantile}) {
+    const BandLevels b = band_levels(values, area, 12, rule);
+    const double span = b.levels.back() - b.levels.front();
+    for (std::size_t k = 1; k < b.levels.size(); ++k) {
+      EXPECT_GE(b.levels[k] - b.levels[k - 1], 0.01 * span)
+          << "rule " << static_cast<int>(rule) << ": levels " << b.levels[k - 1] << " and " << b.levels[k];
+    }
+  }
+}
+
+TEST_F(PlotRender, SignedFieldsAreDrawnInADivergingMapByDefault) {
+  // The rings' hoop stress: compressive in the heated inner ring, tensile in the outer one.
+  const auto [red, blue] = red_and_blue_pixels(render_plot(ring_, request("sigma_hoop", ImageFormat::png)), dir_ / "d.png");
+  EXPECT_GT(red, 2000U) << "tension in red";
+  EXPECT_GT(blue, 2000U) << "compression in blue";
+  // The beam's effective stress is never negative: viridis, no red at all.
+  EXPECT_EQ(red_and_blue_pixels(render_plot(p3_, request("effective", ImageFormat::png)), dir_ / "d.png").first, 0U);
+  PlotRequest override = request("sigma_hoop", ImageFormat::png);
+  override.contour.color_map = "viridis";
+  EXPECT_EQ(red_and_blue_pixels(render_plot(ring_, override), dir_ / "d.png").first, 0U) << "--colormap overrides";
+}
+
+TEST_F(PlotRender, CentreOptionOverTheCommandLine) {
+  // sigma_hoop along the x axis from the bore out, about the origin and about a far centre.
+  Outcome r = run("plot " + path("ring.json") + " --field sigma_hoop --centre 0,0 --path '1.05,0.05;2.15,0.05' "
+                  "--samples 5 -o " + path("hoop.csv"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string about_origin = read(dir_ / "hoop.csv");
+  r = run("plot " + path("ring.json") + " --field sigma_hoop --centre=-100,0.05 --path '1.05,0.05;2.15,0.05' "
+          "--samples 5 -o " + path("hoop.csv"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(read(dir_ / "hoop.csv"), about_origin) << "the centre moves the axes";
+  EXPECT_NE(about_origin.find("s,r,z,element,sigma_hoop,px,py"), std::string::npos) << about_origin;
+  expect_error(run("plot " + path("ring.json") + " --field sigma_hoop --centre 1 -o " + path("x.png")), "--centre");
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
 TEST_F(PlotRender, ClosureAndConvergencePngs) {
   for (const nlohmann::json* result : {&p3_, &ring_}) {
     EXPECT_GT(png_colours(render_plot(*result, request("closure", ImageFormat::png)), 900, 600), 30U);
@@ -214,12 +331,6 @@ TEST_F(PlotRender, OtherBadArgumentsFailWithAMessage) {
   r = run("plot " + path("missing.json") + " --field effective -o " + path("x.png"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("missing.json"), std::string::npos) << r.err;
-}
-
-/// Runs saasgaps with the arguments, expecting exit code 1 and the message in its stderr.
-void expect_error(const Outcome& r, const std::string& message) {
-  EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
 }
 
 TEST_F(PlotRender, GapRowAndPathOptionsAreCheckedAndNamed) {

@@ -2,11 +2,17 @@
 // field catalogue and nodal averaging, on small hand-made result documents.
 #include <gtest/gtest.h>
 
+#include <cairo.h>
+
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "plot/band_levels.hpp"
+#include "plot/color_map.hpp"
+#include "plot/contour_plot.hpp"
 #include "plot/contour_bands.hpp"
 #include "plot/field.hpp"
 #include "plot/nice_scale.hpp"
@@ -315,6 +321,269 @@ TEST(PathPlot, PathsParseAndTablesRoundTrip) {
   EXPECT_EQ(DataTable::number(NAN), "");
   request.path.reset();
   EXPECT_THROW(render_table(two_squares(), request), std::invalid_argument) << "a contour plot has no table";
+}
+
+}  // namespace
+}  // namespace saasgaps::plot
+
+namespace saasgaps::plot {
+namespace {
+
+/// two_squares with one stress and strain state in both elements (centroids (0.5, 0.5) and
+/// (2, 0.5)): sigma_x 100, sigma_y -40, tau_xy 30; eps_x 1e-3, eps_y -2e-4, gamma_xy 6e-4.
+json uniform_state() {
+  json result = two_squares();
+  for (json& e : result["elements"]) {
+    e["sigma_r"] = 100.0;
+    e["sigma_z"] = -40.0;
+    e["tau_rz"] = 30.0;
+    e["sigma_theta"] = 18.0;
+    e["eps_r"] = 1e-3;
+    e["eps_z"] = -2e-4;
+    e["gamma_rz"] = 6e-4;
+  }
+  return result;
+}
+
+TEST(CylindricalComponents, RotateTheInPlaneTensorAboutTheCentre) {
+  const json result = uniform_state();
+  const ResultMesh mesh = ResultMesh::from_result(result);
+  const auto at = [&](const char* name, PlanePoint centre) {
+    return element_values(result, mesh, find_field(name), centre);
+  };
+  // About the origin element 1 lies at 45 degrees: sigma_rad = (sx + sy)/2 + txy, sigma_hoop =
+  // (sx + sy)/2 - txy, tau = (sy - sx)/2.
+  EXPECT_NEAR(at("sigma_radial", {0.0, 0.0})[0], 60.0, 1e-12);
+  EXPECT_NEAR(at("sigma_hoop", {0.0, 0.0})[0], 0.0, 1e-12);
+  EXPECT_NEAR(at("tau_radial_hoop", {0.0, 0.0})[0], -70.0, 1e-12);
+  // About (0.5, -1) element 1 lies straight up (90 degrees): radial = y, hoop = x, shear = -xy.
+  EXPECT_NEAR(at("sigma_radial", {0.5, -1.0})[0], -40.0, 1e-12);
+  EXPECT_NEAR(at("sigma_hoop", {0.5, -1.0})[0], 100.0, 1e-12);
+  EXPECT_NEAR(at("tau_radial_hoop", {0.5, -1.0})[0], -30.0, 1e-12);
+  // About (0.5, 0.5) element 2 lies along +x: the components as stored.
+  EXPECT_NEAR(at("sigma_radial", {0.5, 0.5})[1], 100.0, 1e-12);
+  EXPECT_NEAR(at("sigma_hoop", {0.5, 0.5})[1], -40.0, 1e-12);
+  EXPECT_NEAR(at("tau_radial_hoop", {0.5, 0.5})[1], 30.0, 1e-12);
+  // Element 2 about the origin (an angle no special case hits): the invariants of a rotation.
+  const double r = at("sigma_radial", {0.0, 0.0})[1], h = at("sigma_hoop", {0.0, 0.0})[1];
+  const double t = at("tau_radial_hoop", {0.0, 0.0})[1];
+  EXPECT_NEAR(r + h, 60.0, 1e-12);
+  EXPECT_NEAR(r * h - t * t, 100.0 * -40.0 - 30.0 * 30.0, 1e-9);
+  EXPECT_GT(std::abs(r - 100.0), 1.0) << "rotated, not the stored sigma_r";
+  // Strains rotate as a tensor with half the engineering shear, which comes back doubled.
+  EXPECT_NEAR(at("eps_radial", {0.0, 0.0})[0], (1e-3 - 2e-4) / 2.0 + 3e-4, 1e-15);
+  EXPECT_NEAR(at("eps_hoop", {0.0, 0.0})[0], (1e-3 - 2e-4) / 2.0 - 3e-4, 1e-15);
+  EXPECT_NEAR(at("gamma_radial_hoop", {0.0, 0.0})[0], -2e-4 - 1e-3, 1e-15);
+  EXPECT_NEAR(at("gamma_radial_hoop", {0.5, -1.0})[0], -6e-4, 1e-15);
+  // The nodes get the area-weighted mean of the rotated element values.
+  const std::vector<double> nodal = nodal_values(result, mesh, find_field("sigma_hoop"), {0.5, -1.0});
+  EXPECT_NEAR(nodal[0], 100.0, 1e-12);
+}
+
+TEST(CylindricalComponents, NamesSayWhatTheyAreAndPlotsReadTheirInputs) {
+  const json plane = uniform_state();
+  const ResultMesh mesh = ResultMesh::from_result(plane);
+  EXPECT_EQ(field_title(find_field("sigma_theta"), mesh), "sigma_theta (\u03c3z, out of plane)");
+  EXPECT_NE(field_label(find_field("sigma_theta"), mesh).find("Out-of-plane"), std::string::npos);
+  EXPECT_EQ(field_label(find_field("sigma_theta"), mesh).find("Hoop"), std::string::npos);
+  EXPECT_EQ(field_title(find_field("sigma_hoop"), mesh), "sigma_hoop");
+  EXPECT_NE(field_label(find_field("sigma_hoop"), mesh, {1.5, -2.0}).find("Hoop stress"), std::string::npos);
+  EXPECT_NE(field_label(find_field("sigma_hoop"), mesh, {1.5, -2.0}).find("(1.5, -2)"), std::string::npos);
+
+  json axisymmetric = plane;
+  axisymmetric["analysis"] = "axisymmetric";
+  const ResultMesh ring = ResultMesh::from_result(axisymmetric);
+  EXPECT_EQ(field_title(find_field("sigma_theta"), ring), "sigma_theta");
+  EXPECT_NE(field_label(find_field("sigma_theta"), ring).find("Hoop"), std::string::npos);
+  try {
+    element_values(axisymmetric, ring, find_field("sigma_hoop"));
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("sigma_theta"), std::string::npos) << e.what();
+  }
+  PlotRequest request;
+  request.name = "sigma_hoop";
+  EXPECT_THROW(render_plot(axisymmetric, request), std::invalid_argument);
+
+  // A cylindrical component reads the three stored components, and no other stress.
+  const ResultMembers keep = result_members_for(request);
+  for (const char* key : {"id", "nodes", "sigma_r", "sigma_z", "tau_rz"}) EXPECT_TRUE(keep(3, "elements", key)) << key;
+  EXPECT_FALSE(keep(3, "elements", "sigma_theta"));
+
+  PlanePoint centre{};
+  set_centre("1.5,-2", centre);
+  EXPECT_EQ(centre, (PlanePoint{1.5, -2.0}));
+  set_centre("", centre);
+  EXPECT_EQ(centre, (PlanePoint{1.5, -2.0})) << "empty: left as it was";
+  for (const char* bad : {"1", "1,", "a,2", "1,2,3", "1;2"}) EXPECT_THROW(set_centre(bad, centre), std::invalid_argument) << bad;
+}
+
+TEST(ColorMaps, SignedFieldsGetADivergingMapCentredOnZeroByDefault) {
+  const std::string chosen = ContourOptions{}.color_map;
+  EXPECT_EQ(ColorMap::for_range(chosen, -91529.0, 6556.0), "diverging");
+  EXPECT_EQ(ColorMap::for_range(chosen, 0.0, 7754.0), "viridis") << "non-negative: sequential";
+  EXPECT_EQ(ColorMap::for_range(chosen, -5.0, -1.0), "viridis") << "one sign: sequential";
+  EXPECT_EQ(ColorMap::for_range("cividis", -1.0, 1.0), "cividis") << "--colormap overrides";
+  EXPECT_NO_THROW(ColorMap::require_name("auto"));
+  EXPECT_THROW(ColorMap::require_name("jet"), std::invalid_argument);
+
+  // Bands of equal magnitude either side of zero: the same lightness, blue below and red above;
+  // a band around zero is the near-white centre.
+  const ColorMap diverging = ColorMap::named("diverging");
+  ASSERT_TRUE(diverging.centred_on_zero());
+  const std::vector<Rgb> c = diverging.band_colors({-30.0, -10.0, 10.0, 30.0});
+  ASSERT_EQ(c.size(), 3U);
+  EXPECT_GT(c[0].b, c[0].r);
+  EXPECT_GT(c[2].r, c[2].b);
+  EXPECT_NEAR(c[0].r + c[0].g + c[0].b, c[2].r + c[2].g + c[2].b, 0.35);
+  EXPECT_GT(std::min({c[1].r, c[1].g, c[1].b}), 0.95);
+  // One-sided levels stay on their side of the centre: a compressive field is all blue.
+  for (const Rgb& band : diverging.band_colors({-90000.0, -60000.0, -30000.0, 0.0})) EXPECT_GT(band.b, band.r);
+  // A sequential map ignores the values.
+  const ColorMap viridis = ColorMap::named("viridis");
+  EXPECT_FALSE(viridis.centred_on_zero());
+  EXPECT_EQ(viridis.band_colors({-1.0, 0.0, 1.0})[1].g, viridis.band(1, 2).g);
+}
+
+/// The smallest gap between neighbouring levels, as a share of the levels' span.
+double closest_levels(const BandLevels& b) {
+  double closest = 1.0;
+  for (std::size_t k = 1; k < b.levels.size(); ++k) {
+    closest = std::min(closest, (b.levels[k] - b.levels[k - 1]) / (b.levels.back() - b.levels.front()));
+  }
+  return closest;
+}
+
+TEST(BandLevels, NoBandsAreSpentOnRoundOff) {
+  // Half the area spread over -91530 .. -40000, half at 6552.8 .. 6555.8 (constant up to
+  // discretisation noise): quantile bands used to give the 3 of noise most of the bands.
+  // (plot_render_test checks the shrink-fit rings themselves.)
+  std::vector<double> values, weights;
+  for (int i = 0; i < 200; ++i) {
+    values.push_back(-91530.0 + 51530.0 * i / 199.0);
+    values.push_back(6552.8 + 3.0 * i / 199.0);
+    weights.insert(weights.end(), {1.0, 1.0});
+  }
+  EXPECT_EQ(ContourOptions{}.levels, LevelRule::even) << "nice round levels over the range by default";
+  for (const LevelRule rule : {LevelRule::even, LevelRule::quantile}) {
+    const BandLevels b = band_levels(values, weights, 12, rule);
+    // Not one band narrower than 1 % of the range (the noise band would be 3e-5 of it).
+    EXPECT_GE(closest_levels(b), 0.01) << "rule " << static_cast<int>(rule);
+    EXPECT_LE(b.levels.front(), -91530.0);
+    EXPECT_GE(b.levels.back(), 6555.8);
+  }
+  const BandLevels even = band_levels(values, weights, 12, LevelRule::even);
+  EXPECT_NE(std::find(even.levels.begin(), even.levels.end(), 0.0), even.levels.end())
+      << "a level at zero, where the diverging map turns";
+}
+
+/// Two rows of gaps far apart, neither sharing nodes with the other: gaps 1-3 under a strip at z = 0
+/// (neighbours share nodes) and gaps 4-5 at z = 4 (each on its own node pairs, abutting).
+json two_gap_rows() {
+  json nodes = json::array();
+  const auto node = [&nodes](int id, double r, double z) {
+    nodes.push_back({{"id", id}, {"r", r}, {"z", z}, {"u_r", 0.0}, {"u_z", 0.0}});
+  };
+  for (int i = 0; i <= 3; ++i) {
+    node(1 + i, i, 0.0);
+    node(11 + i, i, -0.01);
+  }
+  for (int i = 0; i < 2; ++i) {  // gap 4 + i on nodes 21 + 4i .. 24 + 4i
+    node(21 + 4 * i, i, 4.0);
+    node(22 + 4 * i, i + 1.0, 4.0);
+    node(23 + 4 * i, i + 1.0, 4.01);
+    node(24 + 4 * i, i, 4.01);
+  }
+  const auto gap = [](int id, std::vector<int> n, double pressure) {
+    return json{{"id", id}, {"nodes", n}, {"angle", 90.0}, {"eps_m", -1.0}, {"closure", 100.0}, {"modulus", 1.0},
+                {"sigma_m", -pressure}, {"contact_pressure", pressure}, {"state", "closed"}, {"converged", true}};
+  };
+  json gaps = json::array();
+  for (int i = 0; i < 3; ++i) gaps.push_back(gap(1 + i, {11 + i, 12 + i, 2 + i, 1 + i}, 100.0 + 20.0 * i));
+  for (int i = 0; i < 2; ++i) gaps.push_back(gap(4 + i, {21 + 4 * i, 22 + 4 * i, 23 + 4 * i, 24 + 4 * i}, 30.0 - 10.0 * i));
+  return {{"status", "converged"}, {"iterations", 1}, {"title", "two rows"}, {"analysis", "plane_strain"},
+          {"history", json::array()}, {"nodes", nodes}, {"elements", json::array()}, {"gaps", gaps}};
+}
+
+TEST(GapRow, ARowFallsIntoItsConnectedParts) {
+  const json result = two_gap_rows();
+  const ResultMesh mesh = ResultMesh::from_result(result);
+  EXPECT_TRUE(gaps_connected(mesh, mesh.gaps[0], mesh.gaps[1])) << "shared nodes";
+  EXPECT_TRUE(gaps_connected(mesh, mesh.gaps[3], mesh.gaps[4])) << "abutting, on their own nodes";
+  EXPECT_FALSE(gaps_connected(mesh, mesh.gaps[2], mesh.gaps[3])) << "z = 0 and z = 4";
+  EXPECT_FALSE(gaps_connected(mesh, mesh.gaps[0], mesh.gaps[2])) << "not neighbours";
+  const GapRow all = select_gap_row(mesh, {{}, RowAxis::position});
+  EXPECT_EQ(all.part, (std::vector<int>{0, 0, 0, 1, 1}));
+  EXPECT_EQ(all.parts(), 2);
+  Series s;
+  all.set_points(s, {1, 2, 3, 4, 5});
+  ASSERT_EQ(s.y.size(), 6U);
+  EXPECT_TRUE(std::isnan(s.y[3])) << "the line breaks between the parts";
+  EXPECT_EQ(select_gap_row(mesh, {{5, 4}, RowAxis::index}).parts(), 1);
+  EXPECT_EQ(select_gap_row(mesh, {{1, 4, 2}, RowAxis::index}).parts(), 3) << "each jump is a break";
+
+  PlotRequest request;
+  request.name = "contact_pressure";
+  const std::string csv = render_table(result, request);
+  EXPECT_NE(csv.find("gap,x,row_part,contact_pressure"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\n3,3,1,140,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\n4,4,2,30,"), std::string::npos) << csv;
+  request.name = "closure";
+  EXPECT_NE(render_table(result, request).find("\n5,5,2,100,"), std::string::npos);
+}
+
+/// The colour of pixel (x, y) of a PNG, 0 .. 255 each.
+std::array<int, 3> pixel(const std::string& png, double x, double y) {
+  struct Reader {
+    const std::string* data;
+    std::size_t at = 0;
+  } reader{&png};
+  cairo_surface_t* image = cairo_image_surface_create_from_png_stream(
+      [](void* closure, unsigned char* out, unsigned int length) {
+        auto* r = static_cast<Reader*>(closure);
+        if (r->at + length > r->data->size()) return CAIRO_STATUS_READ_ERROR;
+        std::copy_n(r->data->data() + r->at, length, out);
+        r->at += length;
+        return CAIRO_STATUS_SUCCESS;
+      },
+      &reader);
+  const unsigned char* data = cairo_image_surface_get_data(image);
+  const int stride = cairo_image_surface_get_stride(image);
+  const auto value = *reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(std::lround(y)) * stride +
+                                                             4 * std::lround(x));
+  cairo_surface_destroy(image);
+  return {static_cast<int>((value >> 16) & 0xFF), static_cast<int>((value >> 8) & 0xFF), static_cast<int>(value & 0xFF)};
+}
+
+TEST(GapRow, NoLineJoinsTwoSeparateRows) {
+  // Between gap 3 (end of the first row, 140) and gap 4 (start of the second, 30) nothing is drawn;
+  // within a row, the line between neighbours is.
+  PlotRequest request;
+  request.name = "contact_pressure";
+  request.width = 800;
+  request.height = 600;
+  const std::string png = render_plot(two_gap_rows(), request);
+  const std::string csv = render_table(two_gap_rows(), request);
+  std::map<int, std::pair<double, double>> at;  // gap -> (px, py_pressure)
+  std::istringstream lines(csv);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.empty() || line[0] == '#' || line.rfind("gap,", 0) == 0) continue;
+    std::vector<std::string> cells;
+    std::istringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    at[std::stoi(cells[0])] = {std::stod(cells[7]), std::stod(cells[8])};
+  }
+  ASSERT_EQ(at.size(), 5U) << csv;
+  const auto middle = [&at](int a, int b) {
+    return std::pair{(at[a].first + at[b].first) / 2.0, (at[a].second + at[b].second) / 2.0};
+  };
+  const auto [jx, jy] = middle(3, 4);
+  const std::array<int, 3> across = pixel(png, jx, jy);
+  EXPECT_GT(std::min({across[0], across[1], across[2]}), 200) << "background, not a line: " << across[0] << ","
+                                                              << across[1] << "," << across[2];
+  const auto [wx, wy] = middle(1, 2);
+  const std::array<int, 3> within = pixel(png, wx, wy);
+  EXPECT_GT(within[0], within[2] + 80) << "the first row's line, in red";
 }
 
 }  // namespace

@@ -115,6 +115,15 @@ TEST_F(Service, PlotsAndVtuOfAStoredResult) {
   EXPECT_NE(unknown["detail"].get<std::string>().find("sigma_theta"), std::string::npos) << unknown.dump();
   problem(client.Get(path + "/plots/effective.png?deformed=lots"), 400);
   problem(client.Get(path + "/plots/effective.png?width=5"), 400);
+  // Cylindrical components about a centre (the beam is plane stress); a bad centre or colour map
+  // is a 400 naming the parameter.
+  const httplib::Result hoop = client.Get(path + "/plots/sigma_hoop.csv?centre=10,-5&path=0.5,0.5;8.5,0.5&samples=3");
+  ASSERT_EQ(hoop->status, 200) << hoop->body;
+  EXPECT_NE(hoop->body.find("(10, -5)"), std::string::npos) << hoop->body;
+  EXPECT_NE(problem(client.Get(path + "/plots/sigma_hoop.png?centre=10"), 400)["detail"].get<std::string>().find("centre"),
+            std::string::npos);
+  problem(client.Get(path + "/plots/effective.png?colormap=jet"), 400);
+  EXPECT_EQ(client.Get(path + "/plots/sigma_r.png?colormap=diverging&levels=quantile")->status, 200);
   // The dashboard is served from the binary.
   const httplib::Result page = client.Get("/");
   ASSERT_EQ(page->status, 200);
