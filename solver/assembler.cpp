@@ -1,5 +1,6 @@
 #include "assembler.hpp"
 
+#include <algorithm>
 #include <cassert>
 
 namespace saasgaps {
@@ -7,6 +8,22 @@ namespace saasgaps {
 Assembler::Assembler(const DofMap& dofs, std::size_t element_count, const NodesOf& nodes_of,
                      const Cliques& couplings) {
   const auto components = static_cast<std::size_t>(dofs.components());
+  // Exact sizes first: at 10^6 unknowns a vector grown by doubling would hold up to twice its size.
+  std::size_t members = 0;
+  std::size_t upper = 0;
+  const auto count = [&](std::size_t n) {
+    members += n;
+    upper += n * (n + 1) / 2;
+  };
+  for (std::size_t e = 0; e < element_count; ++e) count(components * nodes_of(e).size());
+  for (std::size_t c = 0; c < couplings.size(); ++c) count(couplings[c].size());
+  const std::size_t cliques = element_count + couplings.size();
+  equations_.start.reserve(cliques + 1);
+  equations_.members.reserve(members);
+  positions_.start.reserve(cliques + 1);
+  positions_.members.reserve(upper);
+  lifted_.assign(cliques, false);
+
   std::vector<Index> local;
   lift_start_.push_back(0);
   for (std::size_t e = 0; e < element_count; ++e) {
@@ -21,25 +38,25 @@ Assembler::Assembler(const DofMap& dofs, std::size_t element_count, const NodesO
       lift_local_.push_back(static_cast<int>(a));
       lift_value_.push_back(u);
     }
-    lift_start_.push_back(static_cast<Index>(lift_local_.size()));
+    if (static_cast<Index>(lift_local_.size()) > lift_start_.back()) {
+      lifted_[e] = true;
+      lift_clique_.push_back(e);
+      lift_start_.push_back(static_cast<Index>(lift_local_.size()));
+    }
   }
-  for (std::size_t c = 0; c < couplings.size(); ++c) {
-    equations_.add(couplings[c]);
-    lift_start_.push_back(static_cast<Index>(lift_local_.size()));
-  }
+  for (std::size_t c = 0; c < couplings.size(); ++c) equations_.add(couplings[c]);
 
   pattern_ = CscPattern::from_cliques(dofs.size(), equations_.size(),
                                       [this](std::size_t c) { return equations_[c]; });
 
-  positions_.members.reserve(equations_.size() * 36);
-  std::vector<Index> upper;
   for (std::size_t c = 0; c < equations_.size(); ++c) {
     const std::span<const Index> eq = equations_[c];
-    upper.clear();
     for (std::size_t b = 0; b < eq.size(); ++b) {
-      for (std::size_t a = 0; a <= b; ++a) upper.push_back(eq[a] >= 0 && eq[b] >= 0 ? pattern_.find(eq[a], eq[b]) : -1);
+      for (std::size_t a = 0; a <= b; ++a) {
+        positions_.members.push_back(eq[a] >= 0 && eq[b] >= 0 ? pattern_.find(eq[a], eq[b]) : -1);
+      }
     }
-    positions_.add(upper);
+    positions_.start.push_back(static_cast<Index>(positions_.members.size()));
   }
 }
 
@@ -57,8 +74,10 @@ void Assembler::add(std::size_t clique, const ElementBlock& block, const SystemS
   for (Index a = 0; a < n; ++a) {
     if (eq[a] >= 0) sink.rhs[eq[a]] += block.f[a];
   }
+  if (!lifted_[clique]) return;
   // Move K_fp u_p of nonzero prescribed values to the right-hand side.
-  for (Index k = lift_start_[clique]; k < lift_start_[clique + 1]; ++k) {
+  const auto at = static_cast<std::size_t>(std::lower_bound(lift_clique_.begin(), lift_clique_.end(), clique) - lift_clique_.begin());
+  for (Index k = lift_start_[at]; k < lift_start_[at + 1]; ++k) {
     const double* column = block.K + lift_local_[k] * block.ld;
     const double u = lift_value_[k];
     for (Index a = 0; a < n; ++a) {

@@ -70,9 +70,12 @@ class Assembler {
   CscPattern pattern_;
   Cliques equations_;
   Cliques positions_;
-  // Per element clique, the local unknowns with a nonzero prescribed value (CSR by clique), in
-  // local order: the rhs is lifted in the same order as always.
-  std::vector<Index> lift_start_;
+  // The local unknowns with a nonzero prescribed value, in local order (the rhs is lifted in the
+  // same order as always), for the few cliques that have any: a bit per clique, and CSR over the
+  // lifted cliques only, so that a model pays 1 bit per element, not an offset.
+  std::vector<bool> lifted_;
+  std::vector<std::size_t> lift_clique_;  // ascending
+  std::vector<Index> lift_start_;         // lift_clique_.size() + 1
   std::vector<int> lift_local_;
   std::vector<double> lift_value_;
 };
