@@ -28,6 +28,22 @@ struct CscPattern {
                                  const std::function<std::span<const Index>(std::size_t)>& cliques);
 };
 
+/// Index sets ("cliques") in CSR layout, clique c = members[start[c] .. start[c + 1]): the couplings a
+/// pattern must hold beyond elements, e.g. constraint rows of any width.
+struct Cliques {
+  std::vector<Index> start{0};
+  std::vector<Index> members;
+
+  [[nodiscard]] std::size_t size() const { return start.size() - 1; }
+  [[nodiscard]] std::span<const Index> operator[](std::size_t c) const {
+    return {members.data() + start[c], static_cast<std::size_t>(start[c + 1] - start[c])};
+  }
+  void add(std::span<const Index> clique) {
+    members.insert(members.end(), clique.begin(), clique.end());
+    start.push_back(static_cast<Index>(members.size()));
+  }
+};
+
 /// Indices grouped (groups[i] = the group of index i, 0 .. count-1), members listed per group in
 /// ascending order, CSR layout: members[start[g] .. start[g + 1]).
 struct IndexGroups {

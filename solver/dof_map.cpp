@@ -1,35 +1,59 @@
 #include "dof_map.hpp"
 
+#include <cassert>
+
 namespace saasgaps {
 
-DofMap::DofMap(const Model& model)
-    : equation_(2 * model.nodes.size(), 0), value_(2 * model.nodes.size(), 0.0) {
-  for (const Constraint& c : model.constraints) {
-    if (c.u_r) {
-      equation_[2 * c.node] = prescribed_dof;
-      value_[2 * c.node] = *c.u_r;
-    }
-    if (c.u_z) {
-      equation_[2 * c.node + 1] = prescribed_dof;
-      value_[2 * c.node + 1] = *c.u_z;
-    }
+DofMap::DofMap(std::span<const int> node_ids, std::string_view component_names,
+               std::span<const Prescribed> prescribed)
+    : components_(static_cast<int>(component_names.size())),
+      equation_(component_names.size() * node_ids.size(), 0),
+      value_(equation_.size(), 0.0) {
+  assert(components_ > 0);
+  for (const Prescribed& p : prescribed) {
+    assert(p.node >= 0 && static_cast<std::size_t>(p.node) < node_ids.size());
+    assert(p.component >= 0 && p.component < components_);
+    const std::size_t k = static_cast<std::size_t>(components_ * p.node + p.component);
+    equation_[k] = prescribed_dof;
+    value_[k] = p.value;
   }
+  const auto per_node = static_cast<std::size_t>(components_);
   for (std::size_t k = 0; k < equation_.size(); ++k) {
     if (equation_[k] == prescribed_dof) continue;
     equation_[k] = free_count_++;
-    owner_.push_back({model.nodes[k / 2].id, k % 2 == 0 ? 'r' : 'z'});
-    node_of_.push_back(static_cast<Index>(k / 2));
+    owner_.push_back({node_ids[k / per_node], component_names[k % per_node]});
+    node_of_.push_back(static_cast<Index>(k / per_node));
   }
 }
 
-std::array<Index, 8> DofMap::element_equations(const std::array<int, 4>& nodes, int node_count) const {
-  std::array<Index, 8> eq{};
-  eq.fill(absent_dof);
-  for (int a = 0; a < node_count; ++a) {
-    eq[2 * a] = equation(nodes[a], 0);
-    eq[2 * a + 1] = equation(nodes[a], 1);
+namespace {
+
+std::vector<int> node_ids(const Model& model) {
+  std::vector<int> ids;
+  ids.reserve(model.nodes.size());
+  for (const Node& n : model.nodes) ids.push_back(n.id);
+  return ids;
+}
+
+std::vector<DofMap::Prescribed> displacement_constraints(const Model& model) {
+  std::vector<DofMap::Prescribed> p;
+  for (const Constraint& c : model.constraints) {
+    if (c.u_r) p.push_back({c.node, 0, *c.u_r});
+    if (c.u_z) p.push_back({c.node, 1, *c.u_z});
   }
-  return eq;
+  return p;
+}
+
+}  // namespace
+
+DofMap::DofMap(const Model& model) : DofMap(node_ids(model), "rz", displacement_constraints(model)) {}
+
+void DofMap::equations(std::span<const int> nodes, std::span<Index> out) const {
+  assert(out.size() >= nodes.size() * static_cast<std::size_t>(components_));
+  std::size_t k = 0;
+  for (int node : nodes) {
+    for (int c = 0; c < components_; ++c) out[k++] = equation(node, c);
+  }
 }
 
 }  // namespace saasgaps

@@ -1,9 +1,6 @@
 #include "element_kernel.hpp"
 
-#include <Eigen/LU>
-#include <algorithm>
 #include <cassert>
-#include <numbers>
 
 namespace saasgaps {
 
@@ -15,8 +12,6 @@ using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat10 = Eigen::Matrix<double, 10, 10>;
 using Vec10 = Eigen::Matrix<double, 10, 1>;
 
-constexpr double two_pi = 2.0 * std::numbers::pi;
-
 /// One constant-strain triangle: strain = B u over its 6 DOFs, volume weight w.
 struct Triangle {
   Mat46 B = Mat46::Zero();
@@ -27,29 +22,20 @@ struct Triangle {
 
 Triangle make_triangle(const Vec2& p0, const Vec2& p1, const Vec2& p2, AnalysisType analysis,
                        double thickness) {
-  const std::array<const Vec2*, 3> p{&p0, &p1, &p2};
-  const double two_a = twice_signed_area(p0, p1, p2);
-  assert(two_a > 0.0 && "element kernels need counter-clockwise, non-degenerate triangles");
+  const LinearTriangle g = linear_triangle(p0, p1, p2, analysis, thickness);
   Triangle t;
-  t.area = 0.5 * two_a;
-  t.r_centroid = (p0.x() + p1.x() + p2.x()) / 3.0;
+  t.area = g.area;
+  t.r_centroid = g.r_centroid;
+  t.w = g.w;
   for (int i = 0; i < 3; ++i) {
-    const Vec2& pj = *p[(i + 1) % 3];
-    const Vec2& pk = *p[(i + 2) % 3];
-    const double b = (pj.y() - pk.y()) / two_a;  // dN_i/dr
-    const double c = (pk.x() - pj.x()) / two_a;  // dN_i/dz
-    t.B(rr, 2 * i) = b;
-    t.B(zz, 2 * i + 1) = c;
-    t.B(rz, 2 * i) = c;
-    t.B(rz, 2 * i + 1) = b;
+    t.B(rr, 2 * i) = g.dN_dr[i];
+    t.B(zz, 2 * i + 1) = g.dN_dz[i];
+    t.B(rz, 2 * i) = g.dN_dz[i];
+    t.B(rz, 2 * i + 1) = g.dN_dr[i];
   }
   if (analysis == AnalysisType::axisymmetric) {
-    assert(t.r_centroid > 0.0);
     // Hoop strain u/r at the centroid, where every N_i = 1/3.
     for (int i = 0; i < 3; ++i) t.B(th, 2 * i) = 1.0 / (3.0 * t.r_centroid);
-    t.w = two_pi * t.r_centroid * t.area;
-  } else {
-    t.w = thickness * t.area;
   }
   return t;
 }
@@ -83,19 +69,9 @@ struct QuadSystem {
   Vec10 f = Vec10::Zero();
 };
 
-constexpr std::array<std::array<int, 3>, 4> quad_triangles{{{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}};
-
-std::array<Vec2, 5> quad_points(const ElementData& e) {
-  return {e.x[0], e.x[1], e.x[2], e.x[3], 0.25 * (e.x[0] + e.x[1] + e.x[2] + e.x[3])};
-}
-
-std::array<double, 5> quad_temperatures(const ElementData& e) {
-  return {e.dT[0], e.dT[1], e.dT[2], e.dT[3], 0.25 * (e.dT[0] + e.dT[1] + e.dT[2] + e.dT[3])};
-}
-
 QuadSystem quad_system(const ElementData& e) {
-  const auto p = quad_points(e);
-  const auto dT = quad_temperatures(e);
+  const auto p = quad_points(e.x);
+  const auto dT = quad_values(e.dT);
   const bool loaded = e.body_force.x() != 0.0 || e.body_force.y() != 0.0 || e.spin != 0.0;
   QuadSystem q;
   for (const auto& tri : quad_triangles) {
@@ -163,29 +139,16 @@ void accumulate_triangle_state(const Triangle& t, const Vec6& u, double dT, cons
 
 }  // namespace
 
-double twice_signed_area(const Vec2& a, const Vec2& b, const Vec2& c) {
-  return (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
-}
-
-double min_twice_area(int node_count, const std::array<Vec2, 4>& x) {
-  if (node_count == 3) return twice_signed_area(x[0], x[1], x[2]);
-  const Vec2 centre = 0.25 * (x[0] + x[1] + x[2] + x[3]);
-  double smallest = twice_signed_area(x[0], x[1], centre);
-  for (int i = 1; i < 4; ++i) smallest = std::min(smallest, twice_signed_area(x[i], x[(i + 1) % 4], centre));
-  return smallest;
-}
-
 ElementMatrices element_matrices(const ElementData& e) {
   if (e.node_count == 3) return triangle_matrices(e);
   const QuadSystem q = quad_system(e);
-  // Static condensation of the centre node: K* = Kee - Kec Kcc^-1 Kce, f* = fe - Kec Kcc^-1 fc.
-  const Eigen::Matrix2d Kcc_inv = q.K.bottomRightCorner<2, 2>().inverse();
-  const Eigen::Matrix<double, 8, 2> Kec = q.K.topRightCorner<8, 2>();
-  const Eigen::Matrix<double, 8, 2> G = Kec * Kcc_inv;
+  const Condensed<8, 2> c = condense<8, 2>(q.K, q.f);
   ElementMatrices m;
-  m.K = q.K.topLeftCorner<8, 8>() - G * Kec.transpose();
+  m.K = c.K;
+  // In place, as it always was: Eigen evaluates this without a temporary, so entries written first
+  // feed the later ones; only the upper triangle is assembled and the results are pinned to it.
   m.K = 0.5 * (m.K + m.K.transpose());
-  m.f = q.f.head<8>() - G * q.f.tail<2>();
+  m.f = c.f;
   return m;
 }
 
@@ -203,8 +166,8 @@ ElementState element_state(const ElementData& e, const Vec8& u) {
                     (q.f.tail<2>() - q.K.bottomLeftCorner<2, 8>() * u);
     Vec10 all;
     all << u, uc;
-    const auto p = quad_points(e);
-    const auto dT = quad_temperatures(e);
+    const auto p = quad_points(e.x);
+    const auto dT = quad_values(e.dT);
     for (const auto& tri : quad_triangles) {
       const Triangle t = make_triangle(p[tri[0]], p[tri[1]], p[tri[2]], e.analysis, e.thickness);
       Vec6 ut;
@@ -220,15 +183,8 @@ ElementState element_state(const ElementData& e, const Vec8& u) {
 
 std::array<Vec2, 2> edge_traction_loads(const Vec2& a, const Vec2& b, const Vec2& traction,
                                         AnalysisType analysis, double thickness) {
-  const double length = (b - a).norm();
-  if (analysis == AnalysisType::axisymmetric) {
-    // int N_a 2 pi r ds over a linear edge = 2 pi L (2 r_a + r_b) / 6.
-    const double wa = two_pi * length * (2.0 * a.x() + b.x()) / 6.0;
-    const double wb = two_pi * length * (a.x() + 2.0 * b.x()) / 6.0;
-    return {wa * traction, wb * traction};
-  }
-  const double w = 0.5 * length * thickness;
-  return {w * traction, w * traction};
+  const std::array<double, 2> w = edge_weights(a, b, analysis, thickness);
+  return {w[0] * traction, w[1] * traction};
 }
 
 }  // namespace saasgaps

@@ -2,6 +2,9 @@
 /// Element kernels: pure functions of coordinates, material and temperatures that fill fixed-size
 /// matrices. Assembly scatters them; nothing here knows about global numbering.
 ///
+/// The geometry (triangles, the SAAS quad, weights, condensation) is element_geometry.hpp's; this
+/// file is the solid (displacement) field on it.
+///
 /// Degrees of freedom per corner node are (u_r, u_z), corners in counter-clockwise order:
 /// [u_r0, u_z0, u_r1, u_z1, ...]. A 3-node element is one constant-strain triangle (CST) and fills
 /// the leading 6x6 block. A 4-node element is the SAAS III quadrilateral: four CSTs meeting at a
@@ -14,6 +17,7 @@
 
 #include <array>
 
+#include "element_geometry.hpp"
 #include "material.hpp"
 #include "model.hpp"
 #include "voigt.hpp"
@@ -48,13 +52,6 @@ ElementMatrices element_matrices(const ElementData& e);
 
 /// Recovers the centre displacement from the corner displacements u, then the centre state.
 ElementState element_state(const ElementData& e, const Vec8& u);
-
-/// Twice the signed area of triangle (a, b, c): positive when counter-clockwise.
-double twice_signed_area(const Vec2& a, const Vec2& b, const Vec2& c);
-
-/// The smallest twice-signed-area of an element's triangles (the four around the centre for a quad):
-/// positive exactly when the element is counter-clockwise and, for a quad, convex enough for SAAS.
-double min_twice_area(int node_count, const std::array<Vec2, 4>& x);
 
 /// Consistent nodal loads of a uniform traction (t_r, t_z) per unit area on edge a-b:
 /// plane: t L thickness / 2 each; axisymmetric: 2 pi t L (2 r_a + r_b) / 6 at a, and mirrored at b.

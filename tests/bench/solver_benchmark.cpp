@@ -151,10 +151,11 @@ double triplet_assembly_seconds(const Model& m, const DofMap& dofs, const SolidM
     triplets.reserve(m.elements.size() * 36);
     for (std::size_t e = 0; e < m.elements.size(); ++e) {
       const ElementMatrices em = element_matrices(solid_element_data(m, e, materials.law(e, state)));
-      const auto eq = dofs.element_equations(m.elements[e].nodes, 4);
-      for (const LocalPair& p : upper_pairs) {
-        if (eq[p.a] >= 0 && eq[p.b] >= 0) {
-          triplets.emplace_back(std::min(eq[p.a], eq[p.b]), std::max(eq[p.a], eq[p.b]), em.K(p.a, p.b));
+      std::array<Index, 8> eq{};
+      dofs.equations(m.elements[e].nodes, eq);
+      for (int b = 0; b < 8; ++b) {
+        for (int a = 0; a <= b; ++a) {
+          if (eq[a] >= 0 && eq[b] >= 0) triplets.emplace_back(std::min(eq[a], eq[b]), std::max(eq[a], eq[b]), em.K(a, b));
         }
       }
     }

@@ -60,7 +60,8 @@ void dense_assembly(const Model& m, const DofMap& dofs, const LawOf& solid, cons
   K = Eigen::MatrixXd::Zero(dofs.size(), dofs.size());
   f = Eigen::VectorXd::Zero(dofs.size());
   const auto add = [&](const std::array<int, 4>& nodes, int count, const ElementMatrices& em) {
-    const auto eq = dofs.element_equations(nodes, count);
+    std::array<Index, 8> eq{};
+    dofs.equations(std::span(nodes.data(), static_cast<std::size_t>(count)), eq);
     for (int a = 0; a < 2 * count; ++a) {
       if (eq[a] < 0) continue;
       f[eq[a]] += em.f[a];
