@@ -275,11 +275,8 @@ TEST(MortarRows, InitialGapOfConcentricArcsIsTheClearanceToSecondOrder) {
       };
       const double coarse = worst(8);
       const double fine = worst(16);
-      // Twice the largest chord sag R alpha^2 / 8 (alpha <= 1.2 * 1.2 / n): the discrete sides' own
-      // departure from the circles.
-      const double alpha = 1.44 / 8;
-      EXPECT_LT(coarse, 2.0 * alpha * alpha / 8.0);
-      // What remains is the open ends' chord normals, tilted by up to a / 2 from radial: |c| a^2 / 8.
+      // What remains is the open ends' chord normals, tilted by up to a / 2 from radial (alpha <=
+      // 1.2 * 1.2 / n): |c| a^2 / 8.
       // (The polygons' own weighted gap would be off by the chords' sags, ~1e-3 here.)
       const double alpha = 1.44 / 8;
       EXPECT_LT(coarse, std::abs(c) * alpha * alpha / 4.0 + 1e-5);
