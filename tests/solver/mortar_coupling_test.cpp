@@ -1,0 +1,406 @@
+// Mortar coupling of two contact surfaces: the dual basis (plane and with the axisymmetric 2 pi r
+// weight), consistency (sum_k M_jk = D_j) on non-matching graded meshes, exact rigid-motion gaps,
+// initial gaps of flat and curved interfaces, and the rows of a chain with a corner.
+#include "mortar_coupling.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "support/mesh_builder.hpp"
+#include "support/stacked_blocks.hpp"
+
+namespace saasgaps {
+namespace {
+
+using testing::add_grid;
+using testing::BlockFace;
+using testing::Grid;
+using Edges = std::vector<std::array<int, 2>>;
+
+constexpr double pi = std::numbers::pi;
+
+Vec2 at(const Model& m, int i) { return {m.nodes[static_cast<std::size_t>(i)].r, m.nodes[static_cast<std::size_t>(i)].z}; }
+
+SurfaceMeasure measure_of(const Model& m) { return {m.analysis, m.thickness}; }
+
+MortarRows rows_of(const Model& m, const Edges& slave, const Edges& master) {
+  return mortar_rows(m.nodes, measure_of(m), contact_surface(m, slave), contact_surface(m, master));
+}
+
+/// Simpson's rule on [lo, hi]: exact for the cubics psi N w of a straight segment.
+template <class F>
+double simpson(double lo, double hi, F&& f) {
+  return (hi - lo) / 6.0 * (f(lo) + 4.0 * f(0.5 * (lo + hi)) + f(hi));
+}
+
+struct DualCase {
+  const char* name;
+  AnalysisType analysis;
+  Vec2 x1, x2;
+  std::vector<ParameterInterval> covered;
+};
+
+TEST(MortarDualBasis, IsBiorthogonalWithTheWeightIncluded) {
+  const std::vector<DualCase> cases = {
+      {"plane, whole", AnalysisType::plane_stress, {1.0, 0.5}, {2.5, 1.1}, {{0.0, 1.0}}},
+      {"axisymmetric, whole", AnalysisType::axisymmetric, {1.0, 0.5}, {2.5, 1.1}, {{0.0, 1.0}}},
+      {"axisymmetric, from the axis", AnalysisType::axisymmetric, {0.0, 0.0}, {1.2, 0.3}, {{0.0, 1.0}}},
+      {"axisymmetric, towards the axis", AnalysisType::axisymmetric, {1.2, 0.3}, {0.0, 0.0}, {{0.0, 1.0}}},
+      {"plane, partly covered", AnalysisType::plane_strain, {1.0, 0.5}, {2.5, 1.1}, {{0.2, 0.7}}},
+      {"axisymmetric, two pieces", AnalysisType::axisymmetric, {0.5, 2.0}, {3.0, 1.0}, {{0.0, 0.3}, {0.5, 0.9}}},
+  };
+  for (const DualCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    const SurfaceMeasure measure{c.analysis, 0.4};
+    const DualBasis basis = dual_basis(c.x1, c.x2, c.covered, measure);
+    const double length = (c.x2 - c.x1).norm();
+    auto N = [](int k, double xi) { return k == 0 ? 1.0 - xi : xi; };
+    auto psi = [&](int i, double xi) { return basis.A(i, 0) * (1.0 - xi) + basis.A(i, 1) * xi; };
+    auto dA = [&](double xi) { return length * measure.weight((1.0 - xi) * c.x1.x() + xi * c.x2.x()); };
+    for (int i = 0; i < 2; ++i) {
+      double d = 0.0;
+      for (const ParameterInterval& p : c.covered) {
+        d += simpson(p.lo, p.hi, [&](double xi) { return N(i, xi) * dA(xi); });
+      }
+      EXPECT_NEAR(basis.d[i], d, 1e-15 * d);
+      for (int k = 0; k < 2; ++k) {
+        double product = 0.0;
+        for (const ParameterInterval& p : c.covered) {
+          product += simpson(p.lo, p.hi, [&](double xi) { return psi(i, xi) * N(k, xi) * dA(xi); });
+        }
+        EXPECT_NEAR(product, i == k ? d : 0.0, 1e-14 * d) << "psi_" << i << " N_" << k;
+      }
+    }
+    for (const double xi : {0.0, 0.37, 1.0}) EXPECT_NEAR(psi(0, xi) + psi(1, xi), 1.0, 1e-14);
+  }
+}
+
+TEST(MortarDualBasis, MatchesTheClosedForms) {
+  const DualBasis plane =
+      dual_basis({0.0, 0.0}, {0.3, 0.4}, std::vector<ParameterInterval>{{0.0, 1.0}}, {AnalysisType::plane_stress, 2.0});
+  EXPECT_NEAR(plane.A(0, 0), 2.0, 1e-14);
+  EXPECT_NEAR(plane.A(0, 1), -1.0, 1e-14);
+  EXPECT_NEAR(plane.A(1, 0), -1.0, 1e-14);
+  EXPECT_NEAR(plane.A(1, 1), 2.0, 1e-14);
+  EXPECT_NEAR(plane.d[0], 0.5 * 0.5 * 2.0, 1e-15);
+
+  for (const auto& [r1, r2] : {std::pair{1.0, 3.0}, std::pair{0.0, 2.0}, std::pair{5.0, 0.5}}) {
+    const DualBasis axi =
+        dual_basis({r1, 0.0}, {r2, 0.0}, std::vector<ParameterInterval>{{0.0, 1.0}}, {AnalysisType::axisymmetric, 1.0});
+    const double q = r1 * r1 + 4.0 * r1 * r2 + r2 * r2;
+    EXPECT_NEAR(axi.A(0, 0), (2 * r1 + r2) * (r1 + 3 * r2) / q, 1e-14);
+    EXPECT_NEAR(axi.A(0, 1), -(2 * r1 + r2) * (r1 + r2) / q, 1e-14);
+    EXPECT_NEAR(axi.A(1, 0), -(r1 + 2 * r2) * (r1 + r2) / q, 1e-14);
+    EXPECT_NEAR(axi.A(1, 1), (r1 + 2 * r2) * (3 * r1 + r2) / q, 1e-14);
+    const double length = std::abs(r2 - r1);
+    EXPECT_NEAR(axi.d[0], 2.0 * pi * length * (2 * r1 + r2) / 6.0, 1e-13);
+  }
+}
+
+/// The master nodes whose segments overlap node j's support on the slave face (r ranges, open).
+std::vector<int> overlapping_master_nodes(const Model& m, const Edges& slave, const Edges& master, int j) {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (const auto& e : slave) {
+    if (e[0] != j && e[1] != j) continue;
+    for (const int n : e) {
+      lo = std::min(lo, at(m, n).x());
+      hi = std::max(hi, at(m, n).x());
+    }
+  }
+  std::vector<int> nodes;
+  for (const auto& e : master) {
+    const double a = std::min(at(m, e[0]).x(), at(m, e[1]).x());
+    const double b = std::max(at(m, e[0]).x(), at(m, e[1]).x());
+    if (std::min(b, hi) - std::max(a, lo) > 1e-12) {
+      nodes.push_back(e[0]);
+      nodes.push_back(e[1]);
+    }
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+struct Interface {
+  const char* name;
+  AnalysisType analysis;
+  bool slave_below;  // the 5-segment face is the slave
+};
+
+const std::vector<Interface> interfaces = {
+    {"plane, 5 on 7", AnalysisType::plane_stress, true},
+    {"plane, 7 on 5", AnalysisType::plane_strain, false},
+    {"axisymmetric, 5 on 7", AnalysisType::axisymmetric, true},
+    {"axisymmetric, 7 on 5", AnalysisType::axisymmetric, false},
+};
+
+testing::StackedBlocks graded_blocks(AnalysisType analysis, double gap) {
+  return testing::stacked_blocks(analysis, 1.0, 2.0, 1.0, gap, BlockFace{5, 1.3}, BlockFace{7, 0.75}, 2);
+}
+
+TEST(MortarRows, AreConsistentOnNonMatchingGradedMeshes) {
+  for (const Interface& f : interfaces) {
+    SCOPED_TRACE(f.name);
+    const testing::StackedBlocks b = graded_blocks(f.analysis, 0.0);
+    const Edges& slave = f.slave_below ? b.lower_top : b.upper_bottom;
+    const Edges& master = f.slave_below ? b.upper_bottom : b.lower_top;
+    const MortarRows rows = rows_of(b.model, slave, master);
+    ASSERT_EQ(rows.size(), slave.size() + 1);
+    double area = 0.0;
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      const double D = rows.weight[r];
+      area += D;
+      EXPECT_EQ(rows.node[rows.start[r]], rows.slave_node[r]);
+      EXPECT_DOUBLE_EQ(rows.mortar[rows.start[r]], -D);
+      double sum = 0.0;  // sum_k M_jk - D_j
+      std::vector<int> masters;
+      for (std::size_t e = rows.start[r]; e < rows.start[r + 1]; ++e) {
+        sum += rows.mortar[e];
+        EXPECT_EQ(rows.coefficient[e], rows.mortar[e] * rows.normal[r]);
+        if (e > rows.start[r]) masters.push_back(rows.node[e]);
+      }
+      EXPECT_NEAR(sum, 0.0, 1e-14 * D) << "row " << r;
+      EXPECT_EQ(masters, overlapping_master_nodes(b.model, slave, master, rows.slave_node[r])) << "row " << r;
+      EXPECT_EQ(rows.normal[r], Vec2(0.0, f.slave_below ? 1.0 : -1.0));
+    }
+    const double expected = f.analysis == AnalysisType::axisymmetric ? pi * (9.0 - 1.0) : 2.0 * b.model.thickness;
+    EXPECT_NEAR(area, expected, 1e-14 * expected);
+  }
+}
+
+/// Displacements (u_r, u_z per node) moving `nodes` by delta.
+std::vector<double> translation(const Model& m, const Edges& edges, const Vec2& delta) {
+  std::vector<double> u(2 * m.nodes.size(), 0.0);
+  for (const auto& e : edges) {
+    for (const int n : e) {
+      u[2 * static_cast<std::size_t>(n)] = delta.x();
+      u[2 * static_cast<std::size_t>(n) + 1] = delta.y();
+    }
+  }
+  return u;
+}
+
+/// Every row's gap change under a rigid translation of the master side is n_j . delta D_j, of the
+/// slave side -n_j . delta D_j, of both nothing.
+void expect_rigid_motions_exact(const Model& m, const Edges& slave, const Edges& master) {
+  const MortarRows rows = rows_of(m, slave, master);
+  ASSERT_GT(rows.size(), 0U);
+  const Vec2 delta(0.013, -0.007);
+  const std::vector<double> move_master = translation(m, master, delta);
+  const std::vector<double> move_slave = translation(m, slave, delta);
+  Edges both = slave;
+  both.insert(both.end(), master.begin(), master.end());
+  const std::vector<double> move_both = translation(m, both, delta);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const double expected = rows.normal[r].dot(delta) * rows.weight[r];
+    const double tolerance = 1e-14 * delta.norm() * rows.weight[r] * 10.0;
+    EXPECT_NEAR(rows.gap(r, move_master) - rows.g0[r], expected, tolerance) << "row " << r;
+    EXPECT_NEAR(rows.gap(r, move_slave) - rows.g0[r], -expected, tolerance) << "row " << r;
+    EXPECT_NEAR(rows.gap(r, move_both) - rows.g0[r], 0.0, tolerance) << "row " << r;
+  }
+}
+
+TEST(MortarRows, RigidTranslationChangesEveryGapByNormalDisplacementTimesWeight) {
+  for (const Interface& f : interfaces) {
+    SCOPED_TRACE(f.name);
+    const testing::StackedBlocks b = graded_blocks(f.analysis, 0.03);
+    expect_rigid_motions_exact(b.model, f.slave_below ? b.lower_top : b.upper_bottom,
+                               f.slave_below ? b.upper_bottom : b.lower_top);
+  }
+}
+
+TEST(MortarRows, InitialGapOfAFlatInterfaceIsDistanceTimesWeight) {
+  for (const Interface& f : interfaces) {
+    for (const double h : {0.05, 0.0, -0.02}) {
+      SCOPED_TRACE(std::string(f.name) + ", h = " + std::to_string(h));
+      const testing::StackedBlocks b = graded_blocks(f.analysis, h);
+      const MortarRows rows = rows_of(b.model, f.slave_below ? b.lower_top : b.upper_bottom,
+                                      f.slave_below ? b.upper_bottom : b.lower_top);
+      ASSERT_EQ(rows.size(), (f.slave_below ? 5U : 7U) + 1U);
+      for (std::size_t r = 0; r < rows.size(); ++r) {
+        EXPECT_NEAR(rows.g0[r], h * rows.weight[r], 1e-14 * rows.weight[r]) << "row " << r;
+      }
+    }
+  }
+}
+
+/// An inner sector (radii R - 0.5 .. R, angles -0.6 .. 0.6, graded) facing an outer one (radii
+/// R + c .. R + c + 0.5, angles -0.7 .. 0.7) about `centre`; side A the inner sector's outer face.
+struct Arcs {
+  Model model;
+  Edges inner_face;
+  Edges outer_face;
+};
+
+Arcs concentric_arcs(AnalysisType analysis, const Vec2& centre, double R, double c, int inner_segments,
+                     int outer_segments) {
+  Arcs a;
+  a.model.analysis = analysis;
+  a.model.materials = {testing::isotropic_material(1, 1.0e6, 0.3)};
+  auto polar = [&](double radius, double angle) { return Vec2(centre + radius * Vec2(std::cos(angle), std::sin(angle))); };
+  // t runs inwards on the inner sector and angles run backwards on the outer: both counter-clockwise.
+  const Grid inner = add_grid(
+      a.model, inner_segments, 1,
+      [&](double s, double t) { return polar(R - 0.5 * t, -0.6 + 1.2 * std::pow(s, 1.2)); }, 0);
+  const Grid outer = add_grid(
+      a.model, outer_segments, 1,
+      [&](double s, double t) { return polar(R + c + 0.5 * t, 0.7 - 1.4 * std::pow(s, 0.9)); }, 0);
+  a.inner_face = testing::row_edges(inner, 0);
+  a.outer_face = testing::row_edges(outer, 0);
+  testing::fill_temperatures(a.model, 0.0);
+  return a;
+}
+
+TEST(MortarRows, InitialGapOfConcentricArcsIsTheClearanceToSecondOrder) {
+  for (const AnalysisType analysis : {AnalysisType::plane_stress, AnalysisType::axisymmetric}) {
+    for (const double c : {0.02, -0.01}) {
+      SCOPED_TRACE(std::to_string(static_cast<int>(analysis)) + ", c = " + std::to_string(c));
+      const Vec2 centre = analysis == AnalysisType::axisymmetric ? Vec2(4.0, 0.5) : Vec2(0.0, 0.0);
+      auto worst = [&](int n) {
+        const Arcs a = concentric_arcs(analysis, centre, 1.0, c, n, n + n / 2 - 1);
+        const MortarRows rows = rows_of(a.model, a.inner_face, a.outer_face);
+        EXPECT_EQ(rows.size(), static_cast<std::size_t>(n) + 1);
+        double error = 0.0;
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+          error = std::max(error, std::abs(rows.g0[r] / rows.weight[r] - c));
+          // The row's normal is the radial direction (nodal normals of a circle; the ends are chords').
+          const Vec2 radial = (at(a.model, rows.slave_node[r]) - centre).normalized();
+          EXPECT_GT(rows.normal[r].dot(radial), std::cos(0.75 / n));
+        }
+        return error;
+      };
+      const double coarse = worst(8);
+      const double fine = worst(16);
+      // What remains is the open ends' chord normals, tilted by up to a / 2 from radial (alpha <=
+      // 1.2 * 1.2 / n): |c| a^2 / 8.
+      // (The polygons' own weighted gap would be off by the chords' sags, ~1e-3 here.)
+      const double alpha = 1.44 / 8;
+      EXPECT_LT(coarse, std::abs(c) * alpha * alpha / 4.0 + 1e-5);
+      EXPECT_GT(coarse / fine, 3.0) << coarse << " " << fine;  // second order: 4 in the limit
+    }
+  }
+}
+
+TEST(MortarRows, ConcentricArcsAtZeroClearanceHaveNoInitialGap) {
+  // The polygons' own weighted gap n_j . sum_k m_jk x_k carries the chords' sag mismatch; the initial
+  // gap measured to B's smooth curve does not.
+  for (const AnalysisType analysis : {AnalysisType::plane_stress, AnalysisType::axisymmetric}) {
+    const Arcs a = concentric_arcs(analysis, Vec2(4.0, 0.5), 1.0, 0.0, 12, 17);
+    const MortarRows rows = rows_of(a.model, a.inner_face, a.outer_face);
+    double polygon_worst = 0.0;
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      EXPECT_LT(std::abs(rows.g0[r] / rows.weight[r]), 2e-6) << "row " << r;
+      Vec2 polygon = Vec2::Zero();
+      for (std::size_t e = rows.start[r]; e < rows.start[r + 1]; ++e) {
+        polygon += rows.mortar[e] * (at(a.model, rows.node[e]) - at(a.model, rows.slave_node[r]));
+      }
+      polygon_worst = std::max(polygon_worst, std::abs(rows.normal[r].dot(polygon) / rows.weight[r]));
+    }
+    EXPECT_GT(polygon_worst, 1e-4);
+  }
+}
+
+TEST(MortarRows, RigidTranslationIsExactOnCurvedInterfacesToo) {
+  for (const AnalysisType analysis : {AnalysisType::plane_strain, AnalysisType::axisymmetric}) {
+    const Arcs a = concentric_arcs(analysis, Vec2(4.0, 0.5), 1.0, 0.02, 9, 13);
+    expect_rigid_motions_exact(a.model, a.inner_face, a.outer_face);
+  }
+}
+
+/// A block [0, 2]^2 (4 x 4) whose top and right faces (side A, one chain round the corner) face an
+/// L-shaped strip at clearance h on both: its inner face runs (-0.5, 2 + h) -> (2 + h, 2 + h) ->
+/// (2 + h, -0.5), 5 segments per leg, mitred at the corner.
+struct Corner {
+  Model model;
+  Grid block;
+  Edges block_faces;
+  Edges strip_face;
+};
+
+Corner corner(double h) {
+  Corner c;
+  c.model.analysis = AnalysisType::plane_strain;
+  c.model.thickness = 1.0;
+  c.model.materials = {testing::isotropic_material(1, 1.0e6, 0.3)};
+  c.block = add_grid(c.model, 4, 4, [](double s, double t) { return Vec2(2.0 * s, 2.0 * t); }, 0);
+  const Vec2 p0(-0.5, 2.0 + h);
+  const Vec2 knee(2.0 + h, 2.0 + h);
+  const Vec2 p1(2.0 + h, -0.5);
+  const Grid strip = add_grid(
+      c.model, 10, 1,
+      [&](double s, double t) {
+        if (s < 0.5) return Vec2(p0 + 2.0 * s * (knee - p0) + 0.3 * t * Vec2(0.0, 1.0));
+        if (s > 0.5) return Vec2(knee + 2.0 * (s - 0.5) * (p1 - knee) + 0.3 * t * Vec2(1.0, 0.0));
+        return Vec2(knee + 0.3 * t * Vec2(1.0, 1.0));
+      },
+      0);
+  c.block_faces = testing::row_edges(c.block, 4);
+  for (const auto& e : testing::column_edges(c.block, 4)) c.block_faces.push_back(e);
+  c.strip_face = testing::row_edges(strip, 0);
+  testing::fill_temperatures(c.model, 0.0);
+  return c;
+}
+
+TEST(MortarRows, ChainWithACornerGivesOneRowPerNodeReachingBothLegs) {
+  const double h = 0.1;
+  const Corner c = corner(h);
+  const MortarRows rows = rows_of(c.model, c.block_faces, c.strip_face);
+  ASSERT_EQ(rows.size(), 9U);
+  const int knee_node = c.block.at(4, 4);
+  double area = 0.0;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    area += rows.weight[r];
+    double sum = 0.0;
+    for (std::size_t e = rows.start[r]; e < rows.start[r + 1]; ++e) sum += rows.mortar[e];
+    EXPECT_NEAR(sum, 0.0, 1e-14 * rows.weight[r]);
+    const Vec2 x = at(c.model, rows.slave_node[r]);
+    const bool next_to_corner = (x - at(c.model, knee_node)).norm() < 0.51;
+    if (!next_to_corner) {
+      EXPECT_NEAR(rows.g0[r], h * rows.weight[r], 1e-14 * rows.weight[r]) << "row " << r;
+      EXPECT_NEAR(rows.weight[r], x.x() == 0.0 || x.y() == 0.0 ? 0.25 : 0.5, 1e-15);
+    }
+    if (rows.slave_node[r] != knee_node) continue;
+    EXPECT_NEAR(rows.normal[r].x(), std::sqrt(0.5), 1e-15);
+    EXPECT_NEAR(rows.normal[r].y(), std::sqrt(0.5), 1e-15);
+    EXPECT_NEAR(rows.weight[r], 0.5, 1e-15);
+    // Along the bisector to the strip's corner (a corner: not rounded off).
+    EXPECT_NEAR(rows.g0[r] / rows.weight[r], h * std::sqrt(2.0), 1e-15);
+    bool on_top_leg = false;
+    bool on_side_leg = false;
+    for (std::size_t e = rows.start[r] + 1; e < rows.start[r + 1]; ++e) {
+      const Vec2 y = at(c.model, rows.node[e]);
+      on_top_leg = on_top_leg || (y.y() == 2.0 + h && y.x() < 2.0 + h);
+      on_side_leg = on_side_leg || (y.x() == 2.0 + h && y.y() < 2.0 + h);
+    }
+    EXPECT_TRUE(on_top_leg && on_side_leg);
+  }
+  EXPECT_NEAR(area, 4.0, 1e-14);
+  expect_rigid_motions_exact(c.model, c.block_faces, c.strip_face);
+}
+
+TEST(MortarRows, SlaveNodesFacingNothingGiveNoRow) {
+  // The upper face covers only r in [1, 2] of the lower's [1, 3]: its nodes' rows only.
+  testing::StackedBlocks b = graded_blocks(AnalysisType::axisymmetric, 0.0);
+  for (const int n : b.upper.nodes) b.model.nodes[static_cast<std::size_t>(n)].r =
+      1.0 + 0.5 * (b.model.nodes[static_cast<std::size_t>(n)].r - 1.0);
+  const MortarRows rows = rows_of(b.model, b.lower_top, b.upper_bottom);
+  // Lower nodes at r = 1 + 2 (i / 5)^1.3 = 1, 1.25, 1.61, 2.03, 2.49, 3: the segment 1.61-2.03 is
+  // partly covered, so node 3 has a row (of the covered part's weight) and nodes 4 and 5 none.
+  ASSERT_EQ(rows.size(), 4U);
+  EXPECT_EQ(rows.slave_node.front(), b.lower.at(3, 2));  // the chain runs right to left
+  double area = 0.0;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    area += rows.weight[r];
+    double sum = 0.0;
+    for (std::size_t e = rows.start[r]; e < rows.start[r + 1]; ++e) sum += rows.mortar[e];
+    EXPECT_NEAR(sum, 0.0, 1e-14 * rows.weight[r]);
+  }
+  EXPECT_NEAR(area, pi * (4.0 - 1.0), 1e-13);  // exactly the covered ring
+}
+
+}  // namespace
+}  // namespace saasgaps
