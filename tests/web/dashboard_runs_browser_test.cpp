@@ -50,6 +50,7 @@ TEST_F(DashboardRuns, AConvergedRunWithAWarningHasItsOwnBadgeAndTheListShowsTheM
   const std::int64_t warned = submit_job(client, example_text("report-problem3-case1.json"));
   const json warned_job = wait_for_state(client, warned, {"converged", "not_converged", "failed"});
   ASSERT_EQ(warned_job["state"], "converged") << warned_job.dump();
+  ASSERT_TRUE(warned_job.contains("warnings")) << warned_job.dump();
   ASSERT_EQ(warned_job["warnings"].size(), 1U) << warned_job["message"];
   const std::string warning = warned_job["warnings"][0].get<std::string>();
   EXPECT_EQ(warning.rfind("5 gaps do not touch", 0), 0U) << warning;
