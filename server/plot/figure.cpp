@@ -40,6 +40,8 @@ int gap_labels_that_fit(const Canvas& canvas, const ResultMesh& mesh) {
 std::string run_summary(std::string_view status, int iterations) {
   const std::string count = std::to_string(iterations) + (iterations == 1 ? " iteration" : " iterations");
   if (status == "converged") return "converged in " + count;
+  // A job followed live (the service draws its convergence from the rows stored so far).
+  if (status == "running" || status == "queued" || status == "interrupted") return std::string(status) + ", " + count + " so far";
   return "NOT CONVERGED after " + count;
 }
 

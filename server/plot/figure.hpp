@@ -27,7 +27,8 @@ Rect draw_header(const Canvas& canvas, std::string_view title, std::string_view 
 /// How many labels as wide as the mesh's widest gap id fit side by side along the canvas.
 int gap_labels_that_fit(const Canvas& canvas, const ResultMesh& mesh);
 
-/// A status note for subtitles: "converged in 10 iterations" or "NOT CONVERGED after 40 iterations".
+/// A status note for subtitles: "converged in 10 iterations", "NOT CONVERGED after 40 iterations", or
+/// for a job still going "running, 3 iterations so far".
 std::string run_summary(std::string_view status, int iterations);
 
 }  // namespace saasgaps::plot

@@ -74,6 +74,23 @@ json stored_json(const std::optional<std::string>& text) {
   }
 }
 
+/// The warnings of a run's message: each clause that follows "warning: " up to the next one (the
+/// solver appends them to the message as "; warning: ..."). Empty for a clean run, so that clients
+/// can tell "converged" from "converged with a warning" without reading prose.
+json message_warnings(const std::optional<std::string>& message) {
+  json warnings = json::array();
+  if (!message) return warnings;
+  static constexpr std::string_view marker = "warning: ";
+  std::size_t at = message->find(marker);
+  while (at != std::string::npos) {
+    const std::size_t start = at + marker.size();
+    const std::size_t next = message->find("; " + std::string(marker), start);
+    warnings.push_back(message->substr(start, next == std::string::npos ? std::string::npos : next - start));
+    at = next == std::string::npos ? next : message->find(marker, next);
+  }
+  return warnings;
+}
+
 json job_json(const JobRecord& j) {
   const std::string self = "/v1/jobs/" + std::to_string(j.id);
   json settings = json::object();
@@ -92,6 +109,7 @@ json job_json(const JobRecord& j) {
           {"interruptions", j.interruptions},
           {"cancel_requested", j.cancel_requested},
           {"message", j.message ? json(*j.message) : json(nullptr)},
+          {"warnings", message_warnings(j.message)},
           {"error", j.error ? json(*j.error) : json(nullptr)},
           {"resume_settings", settings},
           {"slurm", j.slurm_job_id ? json{{"job_id", *j.slurm_job_id}, {"state", j.slurm_state.value_or("")}} : json(nullptr)},
@@ -250,6 +268,23 @@ json stored_result(JobStore& store, std::int64_t id, const io::MemberFilter& mem
   } catch (const io::NestingTooDeep& e) {  // results are checked when stored: this is damage too
     throw damaged(e.issues().front().pointer + ": " + e.issues().front().detail);
   }
+}
+
+/// What the convergence plot reads of a result (title, status, iterations, history, gaps), for a
+/// job that has none yet: its stored history rows. 409 before its first iteration.
+json history_so_far(JobStore& store, const JobRecord& job) {
+  json history = json::array();
+  for (const std::string& row : store.iterations(job.id, 0)) history.push_back(io::parse_document(row));
+  if (history.empty()) {
+    throw HttpError(409, "Conflict", "job " + std::to_string(job.id) + " has no iterations yet (" + to_string(job.state) + ")");
+  }
+  // Only the number of gaps is read (the height of the count axis): one per closure of the last row.
+  const std::size_t gaps = history.back().value("gap_closures", json::array()).size();
+  return {{"title", job.title},
+          {"status", to_string(job.state)},
+          {"iterations", job.iteration},
+          {"history", std::move(history)},
+          {"gaps", json(std::vector<json>(gaps, json::object()))}};
 }
 
 /// The plot a request asks for: the name and format from the path, options from the query.
@@ -461,8 +496,14 @@ void HttpApi::install(httplib::Server& server) {
     }
     // The image follows from the stored result and the query: tag it by both, and skip the drawing
     // when the client already has it.
-    if (not_modified(req, res, result_tag(store_, id, 0, req.target))) return;
-    const json result = stored_result(store_, id, plot::result_members_for(request));
+    // A job still running has no result: its convergence plot is drawn from the rows stored so far
+    // (the dashboard follows it live), tagged by its last iteration as well.
+    const JobRecord job = store_.get(id);
+    const bool live = request.name == "convergence" &&
+                      (job.state == JobState::queued || job.state == JobState::running || job.state == JobState::interrupted);
+    const std::string variant = live ? req.target + "@" + std::to_string(job.iteration) : req.target;
+    if (not_modified(req, res, result_tag(store_, id, 0, variant))) return;
+    const json result = live ? history_so_far(store_, job) : stored_result(store_, id, plot::result_members_for(request));
     const bool table = req.matches[3] == "csv";
     std::string body;
     try {

@@ -32,7 +32,9 @@ async function api(path, options = {}) {
   if (!response.ok) {
     const problem = body || {};
     const details = (problem.errors || []).slice(0, 5).map(e => `${e.pointer || "(document)"}: ${e.detail}`);
-    throw new Error([problem.detail || response.statusText].concat(details).join("\n"));
+    const error = new Error([problem.detail || response.statusText].concat(details).join("\n"));
+    error.problem = problem;  // every error with its pointer, for showProblem
+    throw error;
   }
   return body;
 }
@@ -44,9 +46,32 @@ function cell(row, text, className) {
   return td;
 }
 
-function stateBadge(element, state) {
-  element.textContent = state;
-  element.className = "state " + state;
+// A converged run whose message carries warnings (job.warnings) is not a clean convergence: it
+// gets its own amber badge that says so.
+function warned(job) {
+  return job.state === "converged" && (job.warnings || []).length > 0;
+}
+
+function stateBadge(element, job) {
+  const count = (job.warnings || []).length;
+  element.textContent = warned(job) ? (count === 1 ? "converged with warning" : `converged with ${count} warnings`) : job.state;
+  element.className = "state " + job.state + (warned(job) ? " warned" : "");
+  element.dataset.state = job.state;
+}
+
+// A problem document in box: its detail, then every error at its JSON Pointer (an import's or a
+// model's 422 lists them all).
+function showProblem(box, error) {
+  const problem = error.problem || { detail: error.message };
+  const head = Object.assign(document.createElement("p"), { textContent: problem.detail || error.message });
+  const list = document.createElement("ul");
+  for (const e of problem.errors || []) {
+    const item = list.appendChild(document.createElement("li"));
+    item.appendChild(Object.assign(document.createElement("code"), { textContent: e.pointer || "(document)" }));
+    item.append(" " + e.detail);
+  }
+  box.replaceChildren(head, ...(list.children.length ? [list] : []));
+  box.hidden = false;
 }
 
 function number(value, digits) {
@@ -99,13 +124,13 @@ async function showList() {
       row.insertCell().append(link);
       cell(row, job.title);
       const stateCell = row.insertCell();
-      stateBadge(stateCell.appendChild(document.createElement("span")), job.state);
-      if (job.error) {
-        // Why it failed, at a glance: the first line here, the whole text on hover.
+      stateBadge(stateCell.appendChild(document.createElement("span")), job);
+      if (job.error || job.message) {
+        // Why it failed, or how the run ended (its warnings first): the start here, all on hover.
         const reason = stateCell.appendChild(document.createElement("div"));
-        reason.className = "reason";
-        reason.textContent = job.error.split("\n")[0];
-        reason.title = job.error;
+        reason.className = job.error ? "reason" : warned(job) ? "reason warning" : "reason note";
+        reason.textContent = job.error ? job.error.split("\n")[0] : warned(job) ? "warning: " + job.warnings.join("; ") : job.message;
+        reason.title = job.error || job.message;
       }
       cell(row, `${job.iteration} / ${job.max_iterations}`);
       cell(row, when(job.created_at));
@@ -126,7 +151,30 @@ async function showList() {
       const job = await api("/v1/jobs", { method: "POST", headers: { "Content-Type": "application/json" }, body: await file.text() });
       location.hash = `#/jobs/${job.id}`;
     } catch (error) {
-      status.textContent = error.message;
+      status.textContent = "";
+      showProblem(view.querySelector("#import-errors"), error);
+    }
+  });
+  // An assembly and the files it names, as POST /v1/imports takes them (docs/import.md): imported
+  // and submitted in one request; a bad assembly lists every problem at its pointer.
+  view.querySelector("#import-form").addEventListener("submit", async event => {
+    event.preventDefault();
+    const status = view.querySelector("#import-status");
+    const errors = view.querySelector("#import-errors");
+    errors.hidden = true;
+    const assembly = view.querySelector("#assembly-file").files[0];
+    if (!assembly) { status.textContent = "choose the assembly document first"; return; }
+    const form = new FormData();
+    form.append("assembly", assembly, assembly.name);
+    // Each file under its own name, which is how the assembly names it ("mesh": "ring-fit.geo").
+    for (const file of view.querySelector("#assembly-parts").files) form.append("file", file, file.name);
+    status.textContent = "importing " + assembly.name + " ...";
+    try {
+      const job = await api("/v1/imports?submit=true", { method: "POST", body: form });
+      location.hash = `#/jobs/${job.id}`;
+    } catch (error) {
+      status.textContent = "";
+      showProblem(errors, error);
     }
   });
   await load(false);
@@ -138,46 +186,140 @@ async function showList() {
 // ---------------------------------------------------------------------------------------------
 // One job, followed live.
 
+// The iteration table's columns, chosen by a row as the CLI chooses them: exact contact rows (they
+// carry active_set_iterations) show the node pairs in contact, the complementarity residual and the
+// active sets tried instead of the classic E tension and non-converged count (which mean nothing
+// there); rows of a stepped load show their step and increment. [heading, field, text of a row]
+function columnsFor(row) {
+  const exact = typeof row.active_set_iterations === "number";
+  const count = key => r => (typeof r[key] === "number" ? String(r[key]) : "");
+  const fixed = (key, digits) => r => number(r[key], digits);
+  const columns = [["iter", "iteration", count("iteration")]];
+  for (const key of ["step", "increment"]) if (key in row) columns.push([key, key, count(key)]);
+  if (!exact) columns.push(["E tension", "tensile_modulus", fixed("tensile_modulus", 4)]);
+  columns.push(["closed", "closed_gaps", count("closed_gaps")]);
+  // The report leaves iteration 1's non-converged count blank: there is nothing to compare with.
+  if (!exact) columns.push(["non-conv", "nonconverged_gaps", r => (r.iteration === 1 ? "-" : count("nonconverged_gaps")(r))]);
+  columns.push(["avg clos %", "average_closure", fixed("average_closure", 1)], ["max clos %", "max_closure", fixed("max_closure", 1)]);
+  if (exact) {
+    columns.push(["contact pairs", "contact_pairs", count("contact_pairs")],
+                 ["complementarity", "complementarity",
+                  r => (typeof r.complementarity === "number" ? r.complementarity.toExponential(2) : "")],
+                 ["active sets", "active_set_iterations", count("active_set_iterations")]);
+  }
+  columns.push(["yielded", "yielded_elements", count("yielded_elements")],
+               ["N-L non-conv", "nonconverged_plastic", count("nonconverged_plastic")]);
+  if (!exact) columns.push(["extrap.", "extrapolated", r => (r.extrapolated ? "yes" : "")]);
+  columns.push(["attempt", "attempt", count("attempt")], ["s", "seconds", fixed("seconds", 3)]);
+  return columns;
+}
+
+// The exact mode's convergence, drawn here from the history rows (an SVG): per iteration (or load
+// increment) the active sets the contact solve tried and the node pairs it left in contact, as
+// labelled bars, and below them its complementarity residual on a log scale. One row is one group
+// of bars that reads as such, not the classic plot's single dot of closures.
+function exactConvergenceSvg(history) {
+  const W = 520, H = 330, left = 62, right = 12;
+  const ns = "http://www.w3.org/2000/svg";
+  const svg = document.createElementNS(ns, "svg");
+  svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
+  svg.setAttribute("role", "img");
+  const add = (tag, attributes, text) => {
+    const e = svg.appendChild(document.createElementNS(ns, tag));
+    for (const [key, value] of Object.entries(attributes)) e.setAttribute(key, String(value));
+    if (text !== undefined) e.textContent = text;
+    return e;
+  };
+  const label = r => ("step" in r ? `${r.step}.${r.increment ?? ""}` : String(r.iteration));
+  const slot = (W - left - right) / history.length;
+  const middle = i => left + slot * (i + 0.5);
+  add("text", { x: 8, y: 18, class: "title" }, "Exact contact solve per iteration");
+
+  // Upper panel: active sets and pairs in contact, on a count axis of 1, 2 or 5 times a power of ten.
+  const top = 48, bottom = 165;
+  const most = Math.max(1, ...history.map(r => Math.max(r.active_set_iterations || 0, r.contact_pairs || 0)));
+  const power = 10 ** Math.floor(Math.log10(most / 4 || 1));
+  const step = [1, 2, 5, 10].map(m => m * power).find(s => most / s <= 5) || 10 * power;
+  const ceiling = Math.max(step, Math.ceil(most / step) * step);
+  const y = v => bottom - (bottom - top) * v / ceiling;
+  for (let v = 0; v <= ceiling; v += step) {
+    add("line", { x1: left, x2: W - right, y1: y(v), y2: y(v), class: "grid" });
+    add("text", { x: left - 6, y: y(v) + 4, class: "tick end" }, String(v));
+  }
+  add("text", { x: 14, y: (top + bottom) / 2, class: "axis-label", transform: `rotate(-90 14 ${(top + bottom) / 2})` }, "count");
+  const bar = Math.min(44, slot * 0.36);
+  history.forEach((r, i) => {
+    for (const [value, offset, kind] of [[r.active_set_iterations || 0, -bar, "active-sets"], [r.contact_pairs || 0, 0, "pairs"]]) {
+      add("rect", { x: middle(i) + offset, y: y(value), width: bar, height: bottom - y(value), class: "bar " + kind });
+      if (bar >= 12) add("text", { x: middle(i) + offset + bar / 2, y: y(value) - 4, class: "tick middle" }, String(value));
+    }
+  });
+  add("rect", { x: W - 262, y: 26, width: 11, height: 11, class: "swatch active-sets" });
+  add("text", { x: W - 246, y: 36, class: "tick" }, "active sets tried");
+  add("rect", { x: W - 128, y: 26, width: 11, height: 11, class: "swatch pairs" });
+  add("text", { x: W - 112, y: 36, class: "tick" }, "pairs in contact");
+
+  // Lower panel: the complementarity residual, log10, a tick per decade (fewer when many).
+  const top2 = 200, bottom2 = 282;
+  const logs = history.map(r => Math.log10(Math.max(r.complementarity || 0, 1e-300)));
+  const low = Math.floor(Math.min(...logs)), high = Math.max(Math.ceil(Math.max(...logs)), low + 1);
+  const y2 = v => bottom2 - (bottom2 - top2) * (v - low) / (high - low);
+  const every = Math.ceil((high - low) / 5);
+  for (let v = low; v <= high; v += every) {
+    add("line", { x1: left, x2: W - right, y1: y2(v), y2: y2(v), class: "grid" });
+    add("text", { x: left - 6, y: y2(v) + 4, class: "tick end" }, `1e${v}`);
+  }
+  add("text", { x: 14, y: (top2 + bottom2) / 2, class: "axis-label", transform: `rotate(-90 14 ${(top2 + bottom2) / 2})` },
+      "complementarity");
+  add("polyline", { points: logs.map((v, i) => `${middle(i)},${y2(v)}`).join(" "), class: "residual" });
+  logs.forEach((v, i) => add("circle", { cx: middle(i), cy: y2(v), r: 3.5, class: "residual" }));
+
+  // The iteration (step.increment) under each group, thinned to what fits.
+  const stride = Math.ceil(32 / slot);
+  history.forEach((r, i) => {
+    if (i % stride === 0) add("text", { x: middle(i), y: bottom2 + 20, class: "tick middle" }, label(r));
+  });
+  add("text", { x: (left + W - right) / 2, y: H - 8, class: "axis-label middle" },
+      history.some(r => "step" in r) ? "step.increment" : "iteration");
+  return svg;
+}
+
 async function showJob(id) {
   view.replaceChildren(document.getElementById("job-view").content.cloneNode(true));
   const $ = selector => view.querySelector(selector);
   const base = `/v1/jobs/${id}`;
-  const rows = new Map();
+  const rows = new Map();     // iteration -> its table row
+  const rowData = new Map();  // iteration -> its history row
 
   let units = {};
-  let headerDone = false;
+  let columns = null;  // chosen by the first row
+  let exact = false;   // exact contact rows
 
-  // The watched elements' and gaps' columns, as the CLI prints them: named from the first row.
-  function addWatchHeader(row) {
-    if (headerDone) return;
-    headerDone = true;
+  // The columns, and the watched elements' and gaps' columns as the CLI prints them: named from the
+  // first row.
+  function addHeader(row) {
+    if (columns) return;
+    columns = columnsFor(row);
+    exact = columns.some(([, field]) => field === "active_set_iterations");
     const head = $("#iterations thead tr");
+    const th = (text, title) => head.appendChild(Object.assign(document.createElement("th"), { textContent: text, title: title || "" }));
+    for (const [text, field] of columns) th(text, field);
     const stress = unitOf(units, "stress");
     for (const e of (row.watch || {}).elements || []) {
-      for (const name of ["s_r", "s_th", "eff"]) {
-        head.appendChild(Object.assign(document.createElement("th"), { textContent: `el ${e.id} ${name}${stress}` }));
-      }
+      for (const name of ["s_r", "s_th", "eff"]) th(`el ${e.id} ${name}${stress}`);
     }
     for (const g of (row.watch || {}).gaps || []) {
-      for (const name of [`E_M${stress}`, "clos %", `s_M${stress}`]) {
-        head.appendChild(Object.assign(document.createElement("th"), { textContent: `gap ${g.id} ${name}` }));
-      }
+      for (const name of [`E_M${stress}`, "clos %", `s_M${stress}`]) th(`gap ${g.id} ${name}`);
     }
+    $("#no-iterations").hidden = true;
   }
 
   function addRow(row) {
     if (rows.has(row.iteration)) return;
-    addWatchHeader(row);
+    addHeader(row);
     const tr = document.createElement("tr");
     tr.dataset.iteration = row.iteration;
-    for (const [text, digits] of [[row.iteration, 0], [row.tensile_modulus, 4], [row.closed_gaps, 0],
-                                  [row.iteration === 1 ? "-" : row.nonconverged_gaps, 0], [row.average_closure, 1],
-                                  [row.max_closure, 1], [row.yielded_elements, 0], [row.nonconverged_plastic, 0]]) {
-      cell(tr, typeof text === "number" && digits > 0 ? number(text, digits) : String(text));
-    }
-    cell(tr, row.extrapolated ? "yes" : "");
-    cell(tr, row.attempt);
-    cell(tr, number(row.seconds, 3));
+    for (const [, , text] of columns) cell(tr, text(row));
     for (const e of (row.watch || {}).elements || []) {
       for (const value of [e.sigma_r, e.sigma_theta, e.effective]) cell(tr, number(value, 1));
     }
@@ -187,35 +329,39 @@ async function showJob(id) {
       cell(tr, number(g.sigma_m, 1));
     }
     rows.set(row.iteration, tr);
+    rowData.set(row.iteration, row);
     // Keep the table ordered even if rows arrive out of order (a reconnect after a gap).
     const later = [...rows.keys()].filter(k => k > row.iteration).sort((a, b) => a - b)[0];
     $("#iterations tbody").insertBefore(tr, later === undefined ? null : rows.get(later));
   }
+  const historyRows = () => [...rowData.keys()].sort((a, b) => a - b).map(k => rowData.get(k));
 
   function showState(job) {
     $("#job-title").textContent = job.title;
     $("#job-id").textContent = job.id;
-    stateBadge($("#job-state"), job.state);
+    stateBadge($("#job-state"), job);
     $("#job-iteration").textContent = job.iteration;
     $("#job-max").textContent = job.max_iterations;
     $("#job-attempts").textContent = job.attempts;
     $("#job-created").textContent = when(job.created_at);
     $("#job-started").textContent = when(job.started_at) || "not yet";
     $("#job-finished").textContent = when(job.finished_at) || "not yet";
-    // A failed job says why, in full; other jobs show the run's message.
+    // A failed job says why, in full; other jobs show the run's message (amber with warnings).
     $("#job-error").hidden = !job.error;
     $("#job-error").textContent = job.error ? `Failed: ${job.error}` : "";
     $("#job-message").textContent = job.error ? "" : (job.message || "");
+    $("#job-message").className = warned(job) ? "message warning" : "message";
     const active = ["queued", "running", "interrupted"].includes(job.state);
     $("#cancel").disabled = !active || job.cancel_requested;
     $("#resume").disabled = ["queued", "running", "converged"].includes(job.state);
-    const hasResult = !["queued", "running"].includes(job.state);
+    const hasResult = !active;
     if (job.last_row && Array.isArray(job.last_row.gap_closures)) hasGaps = job.last_row.gap_closures.length > 0;
     $("#links").replaceChildren(...[["model", base + "/model"], ["iterations", base + "/iterations"]]
       .concat(hasResult ? [["result (JSON)", base + "/result"], ["result (VTU for ParaView)", base + "/result.vtu"]] : [])
       .concat(hasResult && hasGaps ? [["contact pressure (CSV)", base + "/plots/contact_pressure.csv"]] : [])
       .map(([label, href]) => Object.assign(document.createElement("a"), { href: withToken(href), textContent: label })));
     if (hasResult && !plotsShown) showPlots();
+    if (!hasResult) showRunning();
   }
 
   // Plots are drawn for the space they get: the figure's width in device pixels, so a PNG is sharp
@@ -224,7 +370,6 @@ async function showJob(id) {
   const plots = [["#contour-plot", () => $("#plot-field").value, contourOptions], ["#contact-plot", () => "contact_pressure", rowOptions],
                  ["#closure-plot", () => "closure", rowOptions], ["#convergence-plot", () => "convergence", () => ({})]];
   let plotsShown = false;
-  let plotStamp = -1;
 
   function plotUrl(name, width, height, extra) {
     const format = $("#plot-format").value;
@@ -249,32 +394,99 @@ async function showJob(id) {
   }
 
   let hasGaps = true;
+  const gapPlot = selector => selector === "#contact-plot" || selector === "#closure-plot";
+
+  // A figure's placeholder says what the figure waits for (or why it cannot be drawn); it shows
+  // whenever its picture does not.
+  function placeholder(selector, text) {
+    const img = $(selector);
+    img.hidden = true;
+    img.parentElement.querySelector(".placeholder").textContent = text;
+    img.parentElement.querySelector(".placeholder").hidden = false;
+  }
+
+  // Loads a plot into its image: fetched first, shown only once it has loaded, so a figure never
+  // shows a broken or half-drawn picture, and a late answer to an older request is dropped.
+  function loadPlot(selector, name, options, done) {
+    const img = $(selector);
+    const ratio = window.devicePixelRatio || 1;
+    const width = Math.min(4000, Math.max(320, Math.round(img.parentElement.clientWidth * ratio)));
+    const height = Math.round(width * 0.62);
+    const url = plotUrl(name, width, height, Object.assign({ t: String(rows.size) }, options));  // new rows: a new picture
+    img.dataset.wanted = url;
+    const probe = new Image();
+    probe.onload = () => {
+      if (img.dataset.wanted === url) {
+        img.src = url;
+        img.hidden = false;
+        img.parentElement.hidden = false;
+        img.parentElement.querySelector(".placeholder").hidden = true;
+        if (plotsShown) $("#plot-note").textContent = "";
+        img.dataset.plot = name;
+        img.dataset.width = String(width);
+        img.dataset.extra = JSON.stringify(options);
+      }
+      if (done) done(true);
+    };
+    probe.onerror = () => {
+      if (done) done(false);
+      if (img.dataset.wanted !== url) return;
+      // Say why, e.g. a gap row naming a gap the model does not have.
+      fetch(url).then(r => r.json()).then(p => {
+        $("#plot-note").textContent = `${name}: ${p.detail}`;
+        placeholder(selector, p.detail);
+        if (plotsShown && selector !== "#contour-plot") img.parentElement.hidden = true;
+      }).catch(() => placeholder(selector, `${name}: cannot be drawn`));
+    };
+    probe.src = url;
+  }
+
+  // The exact mode's convergence figure: drawn here, from the rows.
+  function drawExactConvergence() {
+    const box = $("#exact-convergence");
+    box.replaceChildren(exactConvergenceSvg(historyRows()));
+    box.hidden = false;
+    $("#convergence-plot").hidden = true;
+    $("#convergence-plot").parentElement.querySelector(".placeholder").hidden = true;
+    $("#convergence-caption").textContent = "exact contact solve per iteration";
+  }
+
+  // While the job runs: the result's plots wait for the result; the convergence is drawn from the
+  // rows so far and redrawn as rows arrive, at most every 2 s and never while the last drawing is
+  // still on its way.
+  let convergenceBusy = false, convergenceAt = -Infinity, convergenceTimer = null;
+  function showRunning() {
+    plotsShown = false;
+    for (const [selector] of plots) {
+      if (selector !== "#convergence-plot") placeholder(selector, "drawn when the job has a result");
+      $(selector).parentElement.hidden = gapPlot(selector) && !hasGaps;
+    }
+    if (rows.size === 0) {
+      placeholder("#convergence-plot", "drawn after the first iteration");
+      return;
+    }
+    const wait = convergenceAt + 2000 - performance.now();
+    if (convergenceBusy || wait > 0) {
+      if (!convergenceTimer) {
+        convergenceTimer = setTimeout(() => { convergenceTimer = null; if (!plotsShown) showRunning(); }, Math.max(wait, 250));
+      }
+      return;
+    }
+    convergenceAt = performance.now();
+    if (exact) { drawExactConvergence(); return; }
+    convergenceBusy = true;
+    loadPlot("#convergence-plot", "convergence", {}, () => { convergenceBusy = false; });
+  }
 
   function showPlots() {
     plotsShown = true;
-    plotStamp = rows.size;
-    const ratio = window.devicePixelRatio || 1;
     // A model without gaps has no gap plots: their figures go before the others are measured.
-    const gapPlot = selector => selector === "#contact-plot" || selector === "#closure-plot";
     for (const [selector] of plots) $(selector).parentElement.hidden = gapPlot(selector) && !hasGaps;
     for (const [selector, name, optionsOf] of plots) {
-      const img = $(selector);
       if (gapPlot(selector) && !hasGaps) continue;
-      const width = Math.min(4000, Math.max(320, Math.round(img.parentElement.clientWidth * ratio)));
-      const height = Math.round(width * 0.62);
-      const options = optionsOf();
-      const extra = Object.assign({ t: String(rows.size) }, options);  // new rows: a new picture
-      img.onload = () => { img.hidden = false; img.parentElement.hidden = false; $("#plot-note").textContent = ""; };
-      img.onerror = () => {
-        img.hidden = true;
-        img.parentElement.hidden = selector !== "#contour-plot";
-        // Say why, e.g. a gap row naming a gap the model does not have.
-        fetch(img.src).then(r => r.json()).then(p => { $("#plot-note").textContent = `${name()}: ${p.detail}`; }).catch(() => {});
-      };
-      img.dataset.plot = name();
-      img.dataset.width = String(width);
-      img.dataset.extra = JSON.stringify(options);
-      img.src = plotUrl(name(), width, height, extra);
+      if (selector === "#convergence-plot" && exact) { drawExactConvergence(); continue; }
+      if ($(selector).hidden) placeholder(selector, "drawing ...");
+      loadPlot(selector, name(), optionsOf());
     }
   }
 
@@ -341,11 +553,7 @@ async function showJob(id) {
       addRow(JSON.parse(event.data));
       api(base).then(showState).catch(() => {});
     });
-    source.addEventListener("state", () => api(base).then(job => {
-      const redraw = plotsShown && plotStamp !== rows.size;
-      showState(job);
-      if (redraw) showPlots();
-    }).catch(() => {}), { once: false });
+    source.addEventListener("state", () => api(base).then(showState).catch(() => {}));
     source.onerror = () => {
       // A finished job closes its stream; stop reconnecting then.
       api(base).then(job => { if (!["queued", "running", "interrupted"].includes(job.state)) source.close(); })
@@ -353,7 +561,10 @@ async function showJob(id) {
     };
   }
   follow();
-  closeJobView = () => { if (source) source.close(); };
+  closeJobView = () => {
+    if (source) source.close();
+    clearTimeout(convergenceTimer);
+  };
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,0 +1,280 @@
+// How the dashboard shows runs that are not the plain classic case, in headless Chromium against a
+// real `saasgaps serve`: a convergence that carries a warning, an exact-mode run, a job followed live
+// (placeholders, then its convergence drawn and redrawn while it runs) and an assembly upload.
+// Screenshots land in build/tests/artifacts/.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <thread>
+
+#include "service/job_client.hpp"
+#include "service/long_job_model.hpp"
+#include "service/server_process.hpp"
+#include "web/browser_session.hpp"
+
+namespace saasgaps::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+std::string base_url(const ServerProcess& server) { return "http://127.0.0.1:" + std::to_string(server.port()); }
+
+/// Each test: a fresh directory named for it, a real server (one worker) on a database there, and
+/// the server's client; the directory goes when the test ends.
+class DashboardRuns : public ::testing::Test {
+ protected:
+  DashboardRuns()
+      : dir(fresh_directory(::testing::UnitTest::GetInstance()->current_test_info()->name())),
+        server(dir / "jobs.db"),
+        client(server.client()) {}
+  ~DashboardRuns() override { fs::remove_all(dir); }
+
+  const fs::path dir;
+  ServerProcess server;
+  httplib::Client client;
+};
+
+/// Opens the job's page and waits until it is usable.
+void open_job(Browser& browser, const ServerProcess& server, std::int64_t job) {
+  browser.open(base_url(server) + "/#/jobs/" + std::to_string(job));
+  ASSERT_TRUE(wait_until(browser, "return document.body.dataset.ready === 'job';", std::chrono::seconds(30)));
+}
+
+TEST_F(DashboardRuns, AConvergedRunWithAWarningHasItsOwnBadgeAndTheListShowsTheMessage) {
+  // The classic mode's stopping rule accepts gaps that do not touch yet carry load: it converges
+  // with a warning (README). The quick-start block converges clean.
+  const std::int64_t warned = submit_job(client, example_text("report-problem3-case1.json"));
+  const json warned_job = wait_for_state(client, warned, {"converged", "not_converged", "failed"});
+  ASSERT_EQ(warned_job["state"], "converged") << warned_job.dump();
+  ASSERT_TRUE(warned_job.contains("warnings")) << warned_job.dump();
+  ASSERT_EQ(warned_job["warnings"].size(), 1U) << warned_job["message"];
+  const std::string warning = warned_job["warnings"][0].get<std::string>();
+  EXPECT_EQ(warning.rfind("5 gaps do not touch", 0), 0U) << warning;
+  EXPECT_NE(warned_job["message"].get<std::string>().find("; warning: " + warning), std::string::npos);
+  const std::int64_t clean = submit_job(client, example_text("quickstart-plane-strain-block.json"));
+  const json clean_job = wait_for_state(client, clean, {"converged", "not_converged", "failed"});
+  ASSERT_EQ(clean_job["state"], "converged");
+  EXPECT_EQ(clean_job["warnings"], json::array());
+  // The list carries them too.
+  EXPECT_EQ(get_json(client, "/v1/jobs")["jobs"][1]["warnings"], warned_job["warnings"]);
+
+  Browser browser(dir / "chromium-profile");
+  browser.open(base_url(server) + "/#/");
+  ASSERT_TRUE(wait_until(browser, "return document.querySelectorAll('#jobs tbody tr').length === 2;", std::chrono::seconds(30)));
+  // Per row: the badge's text, class and colour, the note under it and its class.
+  const json rows = browser.run(
+      "return [...document.querySelectorAll('#jobs tbody tr')].map(r => {"
+      " const b = r.querySelector('.state'), n = r.querySelector('.reason');"
+      " return {id: r.cells[0].textContent, badge: b.textContent, badge_class: b.className,"
+      "         colour: getComputedStyle(b).backgroundColor, note: n ? n.textContent : '', note_class: n ? n.className : ''}; });");
+  ASSERT_EQ(rows.size(), 2U);
+  const json& w = rows[0]["id"] == std::to_string(warned) ? rows[0] : rows[1];
+  const json& c = rows[0]["id"] == std::to_string(clean) ? rows[0] : rows[1];
+  EXPECT_EQ(w["badge"], "converged with warning");
+  EXPECT_NE(w["badge_class"].get<std::string>().find("warned"), std::string::npos) << w;
+  EXPECT_EQ(c["badge"], "converged");
+  EXPECT_EQ(c["badge_class"], "state converged");
+  EXPECT_NE(w["colour"], c["colour"]) << "a warning must not wear the green of a clean convergence";
+  EXPECT_EQ(w["note"], "warning: " + warning);
+  EXPECT_NE(w["note_class"].get<std::string>().find("warning"), std::string::npos);
+  EXPECT_EQ(c["note"], clean_job["message"]);
+  save_artifact("dashboard-warning-list.png", browser.screenshot());
+
+  open_job(browser, server, warned);
+  EXPECT_EQ(browser.run("return document.querySelector('#job-state').textContent;"), "converged with warning");
+  const json message = browser.run("const m = document.querySelector('#job-message'); return [m.textContent, m.className];");
+  EXPECT_EQ(message[0], warned_job["message"]);
+  EXPECT_EQ(message[1], "message warning");
+  save_artifact("dashboard-warning-job.png", browser.screenshot());
+}
+
+TEST_F(DashboardRuns, ExactModeRunsShowTheirOwnColumnsAndConvergence) {
+  const std::int64_t job = submit_job(client, example_text("report-problem3-case1-exact.json"));
+  ASSERT_EQ(wait_for_state(client, job, {"converged", "not_converged", "failed"})["state"], "converged");
+  const json history = get_json(client, "/v1/jobs/" + std::to_string(job) + "/iterations")["iterations"];
+  ASSERT_FALSE(history.empty());
+  const json& row = history.back();
+  ASSERT_TRUE(row.contains("active_set_iterations")) << row.dump();
+
+  Browser browser(dir / "chromium-profile");
+  open_job(browser, server, job);
+  const json headers = browser.run("return [...document.querySelectorAll('#iterations thead th')].map(t => t.textContent);");
+  const auto has = [&headers](const std::string& name) { return std::find(headers.begin(), headers.end(), json(name)) != headers.end(); };
+  for (const std::string name : {"iter", "closed", "contact pairs", "complementarity", "active sets"}) {
+    EXPECT_TRUE(has(name)) << name << " in " << headers;
+  }
+  // The classic columns mean nothing here; the rows carry no load steps.
+  for (const std::string name : {"E tension", "non-conv", "extrap.", "step", "increment"}) {
+    EXPECT_FALSE(has(name)) << name << " in " << headers;
+  }
+  // The last row's cells under those headings, as the API gives them.
+  const json cells = browser.run(
+      "const heads = [...document.querySelectorAll('#iterations thead th')].map(t => t.textContent);"
+      "const r = document.querySelector('#iterations tbody tr:last-child');"
+      "return ['contact pairs', 'complementarity', 'active sets'].map(h => r.children[heads.indexOf(h)].textContent);");
+  EXPECT_EQ(cells[0], std::to_string(row["contact_pairs"].get<int>()));
+  EXPECT_NEAR(std::strtod(cells[1].get<std::string>().c_str(), nullptr), row["complementarity"].get<double>(),
+              0.01 * row["complementarity"].get<double>());
+  EXPECT_EQ(cells[2], std::to_string(row["active_set_iterations"].get<int>()));
+
+  // The convergence figure: bars of the active sets and of the pairs per iteration, labelled with
+  // their values, and the complementarity; not the classic plot's closures.
+  const json figure = browser.run(
+      "const box = document.querySelector('#exact-convergence');"
+      "return [!box.checkVisibility(), !document.querySelector('#convergence-plot').checkVisibility(),"
+      " [...box.querySelectorAll('rect.bar.active-sets')].length, [...box.querySelectorAll('rect.bar.pairs')].length,"
+      " [...box.querySelectorAll('text')].map(t => t.textContent), box.querySelectorAll('circle.residual').length,"
+      " document.querySelector('#convergence-caption').textContent];");
+  EXPECT_FALSE(figure[0].get<bool>());
+  EXPECT_TRUE(figure[1].get<bool>()) << "the classic convergence image is not shown for an exact run";
+  EXPECT_EQ(figure[2].get<std::size_t>(), history.size());
+  EXPECT_EQ(figure[3].get<std::size_t>(), history.size());
+  const json& labels = figure[4];
+  EXPECT_NE(std::find(labels.begin(), labels.end(), json(std::to_string(row["active_set_iterations"].get<int>()))), labels.end())
+      << labels;
+  EXPECT_NE(std::find(labels.begin(), labels.end(), json("complementarity")), labels.end()) << labels;
+  EXPECT_EQ(figure[5].get<std::size_t>(), history.size());
+  EXPECT_EQ(figure[6], "exact contact solve per iteration");
+  EXPECT_FALSE(browser.run("return [...document.querySelectorAll('img')].some(i => i.checkVisibility() && i.naturalWidth === 0);")
+                   .get<bool>())
+      << "a broken image is shown";
+  save_artifact("dashboard-exact-job.png", browser.screenshot());
+
+  // Rows of a stepped load (other engineers' work: not produced yet) get their columns after iter,
+  // and the convergence figure labels each group step.increment: the page's own functions.
+  const json stepped = browser.run(
+      "const row = Object.assign({}, " + row.dump() + ", {step: 2, increment: 3});"
+      "const svg = exactConvergenceSvg([row]);"
+      "return [columnsFor(row).map(c => c[0]), [...svg.querySelectorAll('text')].map(t => t.textContent)];");
+  EXPECT_EQ(stepped[0][1], "step");
+  EXPECT_EQ(stepped[0][2], "increment");
+  EXPECT_NE(std::find(stepped[1].begin(), stepped[1].end(), json("2.3")), stepped[1].end()) << stepped[1];
+}
+
+TEST_F(DashboardRuns, ARunningJobShowsPlaceholdersThenItsConvergenceLive) {
+  // One worker: the second job waits for the first.
+  const std::int64_t blocker = submit_job(client, tilted_block_document(200).dump());
+  const std::int64_t job = submit_job(client, tilted_block_document(200).dump());
+  const std::string path = "/v1/jobs/" + std::to_string(job);
+
+  Browser browser(dir / "chromium-profile");
+  open_job(browser, server, job);
+  // Queued: every figure says what it waits for; no image, broken or not, is shown.
+  ASSERT_EQ(get_json(client, path)["state"], "queued");
+  const json queued = browser.run(
+      "return [...document.querySelectorAll('.plots figure')].map(f => [!f.checkVisibility(),"
+      " !f.querySelector('.placeholder').checkVisibility(), f.querySelector('.placeholder').textContent,"
+      " !f.querySelector('img').checkVisibility()]);");
+  ASSERT_EQ(queued.size(), 4U);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_FALSE(queued[i][0].get<bool>()) << i;
+    EXPECT_FALSE(queued[i][1].get<bool>()) << i;
+    EXPECT_TRUE(queued[i][3].get<bool>()) << i;
+  }
+  EXPECT_EQ(queued[0][2], "drawn when the job has a result");
+  EXPECT_EQ(queued[3][2], "drawn after the first iteration");
+  save_artifact("dashboard-live-queued.png", browser.screenshot());
+  // Before its first iteration the server has no convergence to draw; it says so.
+  EXPECT_EQ(client.Get(path + "/plots/convergence.png")->status, 409);
+
+  ASSERT_EQ(client.Post("/v1/jobs/" + std::to_string(blocker) + "/cancel", "", "application/json")->status, 202);
+  // Followed to its end: what the convergence figure and the contour figure show at each look.
+  std::set<std::string> live_pictures;  // convergence images shown while the job ran
+  bool broken = false, contour_waits_while_live = true, live_answer = false;
+  std::string state;
+  int running_looks = 0;
+  const auto started = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point first_running{}, last_running{};
+  const auto deadline = started + std::chrono::seconds(180);
+  while (std::chrono::steady_clock::now() < deadline) {
+    const json look = browser.run(
+        "const c = document.querySelector('#convergence-plot'), k = document.querySelector('#contour-plot');"
+        "const shown = i => i.checkVisibility() && i.complete && i.naturalWidth > 0;"
+        "return {state: document.querySelector('#job-state').textContent,"
+        " broken: [...document.querySelectorAll('.plots img')].some(i => i.checkVisibility() && i.naturalWidth === 0),"
+        " convergence: shown(c) ? c.src : '',"
+        " contour_waits: k.parentElement.querySelector('.placeholder').checkVisibility() && !k.checkVisibility()};");
+    state = look["state"].get<std::string>();
+    broken = broken || look["broken"].get<bool>();
+    if (state == "running") {
+      const auto now = std::chrono::steady_clock::now();
+      if (running_looks++ == 0) first_running = now;
+      last_running = now;
+      const std::string picture = look["convergence"].get<std::string>();
+      if (!picture.empty() && live_pictures.insert(picture).second) {
+        contour_waits_while_live = contour_waits_while_live && look["contour_waits"].get<bool>();
+        if (live_pictures.size() == 1) save_artifact("dashboard-live-running.png", browser.screenshot());
+        if (!live_answer) {
+          const httplib::Result drawn = client.Get(path + "/plots/convergence.png");
+          live_answer = drawn && drawn->status == 200 && drawn->body.substr(1, 3) == "PNG";
+        }
+      }
+    }
+    if (state.rfind("converged", 0) == 0 || state == "failed" || state == "not_converged") break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  EXPECT_EQ(state.rfind("converged", 0), 0U) << state;
+  EXPECT_FALSE(broken) << "a figure showed a broken image";
+  EXPECT_TRUE(live_answer) << "the server drew no convergence for the running job";
+  EXPECT_GE(live_pictures.size(), 2U) << "the convergence was not redrawn as iterations arrived";
+  EXPECT_TRUE(contour_waits_while_live) << "the contour figure did not wait for the result with its placeholder";
+  // Throttled: at most one drawing per 2 s of running (and the first).
+  const double ran = std::chrono::duration<double>(last_running - first_running).count();
+  EXPECT_LE(static_cast<double>(live_pictures.size()), ran / 2.0 + 2.0) << ran << " s";
+
+  // Finished: the result's plots replace their placeholders.
+  EXPECT_TRUE(wait_until(browser,
+                         "return ['#contour-plot', '#convergence-plot'].map(s => document.querySelector(s)).every(i =>"
+                         " i.checkVisibility() && i.complete && i.naturalWidth > 100 &&"
+                         " !i.parentElement.querySelector('.placeholder').checkVisibility());",
+                         std::chrono::seconds(60)));
+  save_artifact("dashboard-live-finished.png", browser.screenshot());
+}
+
+TEST_F(DashboardRuns, AnAssemblyUploadImportsAndSubmitsOrListsItsErrorsAtTheirPointers) {
+  const fs::path examples = fs::path(SAASGAPS_EXAMPLES_DIR) / "assemblies";
+  // The ring fit with a region naming a group the mesh does not have.
+  json bad = json::parse(example_text("assemblies/ring-fit.assembly.json"));
+  bad["regions"][0]["group"] = "inner_rin";
+  const fs::path bad_file = dir / "ring-fit.assembly.json";
+  std::ofstream(bad_file) << bad.dump(1);
+
+  Browser browser(dir / "chromium-profile");
+  browser.open(base_url(server) + "/#/");
+  ASSERT_TRUE(wait_until(browser, "return document.body.dataset.ready === 'list';", std::chrono::seconds(30)));
+  browser.choose_files("#assembly-file", {bad_file});
+  browser.choose_files("#assembly-parts", {examples / "ring-fit.geo"});
+  browser.run("document.querySelector('#import-form button').click(); return true;");
+  ASSERT_TRUE(wait_until(browser, "return !document.querySelector('#import-errors').hidden;", std::chrono::seconds(60)));
+  const json errors = browser.run(
+      "return [...document.querySelectorAll('#import-errors li')].map(l => [l.querySelector('code').textContent, l.textContent]);");
+  ASSERT_EQ(errors.size(), 1U) << errors;
+  EXPECT_EQ(errors[0][0], "/regions/0/group");
+  EXPECT_NE(errors[0][1].get<std::string>().find("inner_rin"), std::string::npos) << errors;
+  EXPECT_EQ(get_json(client, "/v1/jobs")["jobs"].size(), 0U) << "a bad assembly must not become a job";
+  save_artifact("dashboard-import-errors.png", browser.screenshot());
+
+  // The example as it is: imported, submitted, and its job page opens.
+  browser.run("for (const s of ['#assembly-file', '#assembly-parts']) document.querySelector(s).value = ''; return true;");
+  browser.choose_files("#assembly-file", {examples / "ring-fit.assembly.json"});
+  browser.choose_files("#assembly-parts", {examples / "ring-fit.geo"});
+  browser.run("document.querySelector('#import-form button').click(); return true;");
+  ASSERT_TRUE(wait_until(browser, "return /^#\\/jobs\\/\\d+$/.test(location.hash) && document.body.dataset.ready === 'job';",
+                         std::chrono::seconds(60)));
+  const std::string hash = browser.run("return location.hash;").get<std::string>();
+  const std::int64_t job = std::stoll(hash.substr(hash.rfind('/') + 1));
+  const json finished = wait_for_state(client, job, {"converged", "not_converged", "failed"});
+  EXPECT_EQ(finished["state"], "converged") << finished.dump();
+  EXPECT_EQ(finished["title"], bad["title"]);
+  EXPECT_TRUE(wait_until(browser, "return document.querySelector('#job-state').textContent.startsWith('converged') &&"
+                                  " document.querySelectorAll('#iterations tbody tr').length > 0;",
+                         std::chrono::seconds(30)));
+  save_artifact("dashboard-import-job.png", browser.screenshot());
+}
+
+}  // namespace
+}  // namespace saasgaps::testing
