@@ -389,7 +389,7 @@ async function showJob(id) {
     const options = {};
     if ($("#plot-deformed").checked) options.deformed = "auto";
     if ($("#plot-mesh").checked) options.mesh = "1";
-    if ($("#plot-levels").value !== "quantile") options.levels = $("#plot-levels").value;
+    options.levels = $("#plot-levels").value;  // the server's default is even; quantile must be asked for
     return options;
   }
 
