@@ -7,10 +7,12 @@
 ///
 /// Files: section_reader.cpp (the sections, in document order), section_checks.cpp (generic
 /// value checks and temperature tables), section_references.cpp (ids, references and element
-/// shapes), value_quote.cpp (how values are quoted in messages).
+/// shapes), section_items.cpp (the typed fast path of valid items), value_quote.cpp (how values
+/// are quoted in messages).
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <initializer_list>
 #include <map>
 #include <optional>
@@ -148,6 +150,45 @@ std::span<const Section> dependencies(Section s);
 /// nodes, elements and constraints: arrays that may be read item by item.
 bool streams_items(Section s);
 
+/// A JSON number as the text wrote it: an integer keeps its exact value and kind (as nlohmann's
+/// parser does: unsigned when it has no sign), anything with a fraction or an exponent is a double.
+struct Number {
+  enum class Kind { signed_integer, unsigned_integer, floating };
+  Kind kind = Kind::floating;
+  std::int64_t integer = 0;     ///< signed_integer
+  std::uint64_t unsigned_ = 0;  ///< unsigned_integer
+  double floating = 0.0;        ///< floating
+  /// The value as nlohmann's get<double>() gives it.
+  [[nodiscard]] double value() const {
+    switch (kind) {
+      case Kind::signed_integer: return static_cast<double>(integer);
+      case Kind::unsigned_integer: return static_cast<double>(unsigned_);
+      case Kind::floating: break;
+    }
+    return floating;
+  }
+  /// An id: a JSON integer in 1..INT_MAX; nullopt for anything else.
+  [[nodiscard]] std::optional<int> id() const;
+};
+
+/// The values of an item of nodes, elements or constraints that has exactly the keys its rule
+/// allows, each once, each a number (elements: nodes an array of 3 or 4 numbers). The streaming
+/// driver hands such items to SectionReader::read_*_values without building a tree.
+struct NodeValues {
+  Number id, r, z;
+};
+struct ElementValues {
+  Number id;
+  std::array<Number, 4> nodes;
+  int node_count = 0;
+  Number material;
+  std::optional<Number> angle;
+};
+struct ConstraintValues {
+  Number node;
+  std::optional<Number> r, z;
+};
+
 /// Reads one document, accumulating issues; one function per section of the document. Every
 /// check reports its own issue and returns nullopt / nullptr / false, and the caller carries on, so
 /// one pass finds every independent problem.
@@ -170,6 +211,12 @@ class SectionReader {
   void begin_items(Section s);
   void read_item(Section s, const json& item, std::size_t index);
   void end_items(Section s, std::size_t count);
+  /// The fast path of read_item for an item of the usual shape (section_items.cpp): true when the
+  /// item is valid and has been read, with exactly the effect read_item has; false (nothing
+  /// changed, nothing reported) when some rule fails, and read_item must judge the item's tree.
+  bool read_node_values(const NodeValues& item, std::size_t index);
+  bool read_element_values(const ElementValues& item, std::size_t index);
+  bool read_constraint_values(const ConstraintValues& item, std::size_t index);
   /// The Model, or ModelError with every issue.
   Model finish();
 
