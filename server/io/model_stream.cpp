@@ -157,7 +157,9 @@ class ModelStream final : public json::json_sax_t {
     }
     reader_->check_required_root_keys(present_);
     for (InputIssue& issue : repeated_) reader_->repeated_key(std::move(issue.pointer), std::move(issue.detail));
-    if (digest != nullptr) *digest = model_fingerprint(present_, dumps_);
+    if (digest != nullptr) {
+      *digest = model_fingerprint(present_, [&](Section s, Fingerprint& f) { f.add(dumps_[static_cast<std::size_t>(s)]); });
+    }
   }
 
  private:
@@ -340,7 +342,7 @@ std::string repeated_key_detail(std::string_view key) {
 }
 
 std::string model_fingerprint(const std::array<bool, section_count>& present,
-                              const std::array<std::string, section_count>& dumps) {
+                              const std::function<void(Section, Fingerprint&)>& add) {
   std::array<std::size_t, section_count> order{};
   for (std::size_t k = 0; k < section_count; ++k) order[k] = k;
   std::sort(order.begin(), order.end(), [](std::size_t a, std::size_t b) {
@@ -356,7 +358,7 @@ std::string model_fingerprint(const std::array<bool, section_count>& present,
     first = false;
     f.add(section_key(s));
     f.add("\":");
-    f.add(dumps[k]);
+    add(s, f);
   }
   f.add("}");
   return f.hex();

@@ -16,6 +16,7 @@
 ///   (io/json_limits.hpp), before anything of it is built.
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -25,6 +26,7 @@
 
 #include "errors.hpp"
 #include "io/section_reader.hpp"
+#include "io/state_codec.hpp"
 
 namespace saasgaps::io {
 
@@ -36,10 +38,11 @@ void stream_model(std::string_view text, SectionReader& reader, std::string* dig
 /// The detail of an issue at a key that an object repeats.
 std::string repeated_key_detail(std::string_view key);
 
-/// model_digest (io/state_codec.hpp) from each present section's compact dump (nlohmann's dump of
-/// its value): the fingerprint of the root's dump without title, description and output.
+/// model_digest (io/state_codec.hpp) of a document with these sections: the fingerprint of the
+/// root's compact dump without title, description and output, keys sorted; `add(s, f)` adds the
+/// compact dump of section s's value (as nlohmann's dump() prints it) to f.
 std::string model_fingerprint(const std::array<bool, section_count>& present,
-                              const std::array<std::string, section_count>& dumps);
+                              const std::function<void(Section, Fingerprint&)>& add);
 
 /// The whole document as a tree, with repeated keys and out-of-range numbers reported at their
 /// pointers (ModelError), as parse_document promises.

@@ -3,20 +3,10 @@
 // already known, without a tree. Each function only accepts: every check that would report sends
 // the item back (false) before anything changes, so read_item judges it and words the issue.
 
-#include <climits>
-
 #include "element_kernel.hpp"
 #include "io/section_reader.hpp"
 
 namespace saasgaps::io {
-
-std::optional<int> Number::id() const {
-  if (kind == Kind::signed_integer && integer >= 1 && integer <= INT_MAX) return static_cast<int>(integer);
-  if (kind == Kind::unsigned_integer && unsigned_ >= 1 && unsigned_ <= static_cast<std::uint64_t>(INT_MAX)) {
-    return static_cast<int>(unsigned_);
-  }
-  return std::nullopt;
-}
 
 bool SectionReader::read_node_values(const NodeValues& item, std::size_t index) {
   const auto id = item.id.id();
@@ -38,9 +28,9 @@ bool SectionReader::read_element_values(const ElementValues& item, std::size_t i
   bool placed = true;
   for (std::size_t k = 0; k < n; ++k) {
     const auto node_id = item.nodes[k].id();
-    const auto found = node_id ? nodes_.find(*node_id) : nodes_.end();
-    if (found == nodes_.end()) return false;
-    const int node = found->second.index;
+    const Entry* found = node_id ? nodes_.find(*node_id) : nullptr;
+    if (found == nullptr) return false;
+    const int node = found->index;
     const auto end = corners.nodes.begin() + static_cast<std::ptrdiff_t>(k);
     if (std::find(corners.nodes.begin(), end, node) != end) return false;
     corners.nodes[k] = node;
@@ -60,9 +50,9 @@ bool SectionReader::read_element_values(const ElementValues& item, std::size_t i
   e.nodes = corners.nodes;
   e.node_count = corners.count;
   const auto material_id = item.material.id();
-  const auto material = material_id ? materials_.find(*material_id) : materials_.end();
-  if (material == materials_.end()) return false;
-  e.material = material->second.index;
+  const Entry* material = material_id ? materials_.find(*material_id) : nullptr;
+  if (material == nullptr) return false;
+  e.material = material->index;
   e.angle_deg = item.angle ? item.angle->value() : 0.0;
   item_ = index;
   elements_.emplace(*id, Entry{as_index(model_.elements.size()), false, as_index(index)});
@@ -72,9 +62,9 @@ bool SectionReader::read_element_values(const ElementValues& item, std::size_t i
 
 bool SectionReader::read_constraint_values(const ConstraintValues& item, std::size_t index) {
   const auto node_id = item.node.id();
-  const auto found = node_id ? nodes_.find(*node_id) : nodes_.end();
-  if (found == nodes_.end() || (!item.r && !item.z)) return false;
-  const int node = found->second.index;
+  const Entry* found = node_id ? nodes_.find(*node_id) : nullptr;
+  if (found == nullptr || (!item.r && !item.z)) return false;
+  const int node = found->index;
   if ((item.r && prescribed_.contains({node, 'r'})) || (item.z && prescribed_.contains({node, 'z'}))) return false;
   item_ = index;
   const std::string pointer = "/constraints/" + std::to_string(index);

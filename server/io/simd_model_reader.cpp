@@ -1,7 +1,6 @@
 #include "io/simd_model_reader.hpp"
 
 #include <array>
-#include <charconv>
 #include <utility>
 #include <vector>
 
@@ -9,6 +8,7 @@
 
 #include "io/json_limits.hpp"
 #include "io/model_stream.hpp"
+#include "io/tape_dump.hpp"
 
 namespace saasgaps::io {
 
@@ -33,19 +33,6 @@ bool number_of(dom::element e, Number& n) {
       return true;
     default: return false;
   }
-}
-
-/// A number as nlohmann's dump() writes it.
-void append_number(std::string& out, const Number& n) {
-  std::array<char, 64> buffer{};
-  char* end = buffer.data();
-  switch (n.kind) {
-    case Number::Kind::signed_integer: end = std::to_chars(buffer.begin(), buffer.end(), n.integer).ptr; break;
-    case Number::Kind::unsigned_integer: end = std::to_chars(buffer.begin(), buffer.end(), n.unsigned_).ptr; break;
-    // Text holds finite numbers only, for which dump() writes nlohmann's to_chars.
-    case Number::Kind::floating: end = nlohmann::detail::to_chars(buffer.begin(), buffer.end(), n.floating); break;
-  }
-  out.append(buffer.data(), end);
 }
 
 /// Each key of `o` is one of `keys` (a bit each) and no key is repeated: which keys there are;
@@ -104,59 +91,15 @@ bool constraint_values(dom::element item, ConstraintValues& v) {
          (seen & 1U) != 0;
 }
 
-/// The dump of a fast item: its members in key order (as nlohmann's sorted objects print).
-void append_dump(std::string& out, const NodeValues& v) {
-  out += "{\"id\":";
-  append_number(out, v.id);
-  out += ",\"r\":";
-  append_number(out, v.r);
-  out += ",\"z\":";
-  append_number(out, v.z);
-  out += '}';
-}
-
-void append_dump(std::string& out, const ElementValues& v) {
-  out += '{';
-  if (v.angle) {
-    out += "\"angle\":";
-    append_number(out, *v.angle);
-    out += ',';
-  }
-  out += "\"id\":";
-  append_number(out, v.id);
-  out += ",\"material\":";
-  append_number(out, v.material);
-  out += ",\"nodes\":[";
-  for (int k = 0; k < v.node_count; ++k) {
-    if (k > 0) out += ',';
-    append_number(out, v.nodes[static_cast<std::size_t>(k)]);
-  }
-  out += "]}";
-}
-
-void append_dump(std::string& out, const ConstraintValues& v) {
-  out += "{\"node\":";
-  append_number(out, v.node);
-  if (v.r) {
-    out += ",\"r\":";
-    append_number(out, *v.r);
-  }
-  if (v.z) {
-    out += ",\"z\":";
-    append_number(out, *v.z);
-  }
-  out += '}';
-}
-
 /// The walk over the tape.
 class TapeWalk {
  public:
-  TapeWalk(SectionReader& reader, bool digest) : reader_(reader), digest_(digest) {}
+  explicit TapeWalk(SectionReader& reader) : reader_(reader) {}
 
   void read(dom::object root) {
     // The root's members in the text's order: unknown and repeated keys are reported where they are.
-    std::array<dom::element, section_count> values{};
-    std::array<bool, section_count> present{};
+    auto& values = values_;
+    auto& present = present_;
     for (const dom::key_value_pair member : root) {
       const auto s = section_of(member.key);
       if (s && !present[static_cast<std::size_t>(*s)]) {
@@ -177,20 +120,24 @@ class TapeWalk {
       if (!present[k]) {
         reader_.read_section(s, nullptr);
       } else if (streams_items(s) && values[k].is_array()) {
-        read_items(s, values[k], dumps_[k]);
+        read_items(s, values[k]);
       } else {
         path_.start_at_member(std::string(section_key(s)));
         const json value = tree(values[k]);
-        if (digest_) dumps_[k] = value.dump();
         reader_.read_section(s, &value);
       }
     }
     reader_.check_required_root_keys(present);
     for (InputIssue& issue : repeated_) reader_.repeated_key(std::move(issue.pointer), std::move(issue.detail));
-    present_ = present;
   }
 
-  [[nodiscard]] std::string digest() const { return model_fingerprint(present_, dumps_); }
+  /// model_digest of the document, from the dumps of the sections' values on the tape.
+  [[nodiscard]] std::string digest() const {
+    return model_fingerprint(present_, [&](Section s, Fingerprint& f) {
+      TapeDump dump([&](std::string_view piece) { f.add(piece); });
+      dump.value(values_[static_cast<std::size_t>(s)]);
+    });
+  }
 
  private:
   void repeated(std::string pointer, std::string_view key) {
@@ -235,50 +182,41 @@ class TapeWalk {
   }
 
   /// A streamed array: each item of the usual shape read typed, any other as a tree.
-  void read_items(Section s, dom::element list, std::string& dump) {
-    reader_.begin_items(s);
+  void read_items(Section s, dom::element list) {
+    reader_.begin_items(s, dom::array(list).size());
     path_.start_at_member(std::string(section_key(s)));
     path_.open(false);
-    if (digest_) dump = "[";
     std::size_t index = 0;
     for (const dom::element item : dom::array(list)) {
-      if (digest_ && index > 0) dump += ',';
-      if (!read_typed(s, item, index, dump)) {
+      if (!read_typed(s, item, index)) {
         const json value = tree(item);
-        if (digest_) dump += value.dump();
         reader_.read_item(s, value, index);
       } else {
         path_.next();
       }
       ++index;
     }
-    if (digest_) dump += ']';
     reader_.end_items(s, index);
   }
 
-  bool read_typed(Section s, dom::element item, std::size_t index, std::string& dump) {
-    const auto accepted = [&](const auto& values, bool read) {
-      if (read && digest_) append_dump(dump, values);
-      return read;
-    };
+  bool read_typed(Section s, dom::element item, std::size_t index) {
     if (s == Section::nodes) {
       NodeValues v;
-      return node_values(item, v) && accepted(v, reader_.read_node_values(v, index));
+      return node_values(item, v) && reader_.read_node_values(v, index);
     }
     if (s == Section::elements) {
       ElementValues v;
-      return element_values(item, v) && accepted(v, reader_.read_element_values(v, index));
+      return element_values(item, v) && reader_.read_element_values(v, index);
     }
     ConstraintValues v;
-    return constraint_values(item, v) && accepted(v, reader_.read_constraint_values(v, index));
+    return constraint_values(item, v) && reader_.read_constraint_values(v, index);
   }
 
   SectionReader& reader_;
-  bool digest_;
   JsonPath path_;
   std::vector<InputIssue> repeated_;
-  std::array<bool, section_count> present_{};
-  std::array<std::string, section_count> dumps_{};
+  std::array<bool, section_count> present_{};  ///< the first value of each section the root has
+  std::array<dom::element, section_count> values_{};
 };
 
 }  // namespace
@@ -291,7 +229,7 @@ bool read_model_text(std::string_view text, SectionReader& reader, std::string* 
   if (parser.parse(text.data(), text.size(), true).get(root) != simdjson::SUCCESS) return false;
   dom::object members;
   if (root.get(members) != simdjson::SUCCESS) return false;
-  TapeWalk walk(reader, digest != nullptr);
+  TapeWalk walk(reader);
   walk.read(members);
   if (digest != nullptr) *digest = walk.digest();
   return true;
