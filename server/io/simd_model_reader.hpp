@@ -11,8 +11,8 @@
 ///   read_model, so every issue reads exactly as there.
 /// - simdjson keeps every member of an object, repeated keys included: the walk reports each
 ///   repeated key at its pointer (a tree keeps the later value, as nlohmann's parser does).
-/// - The digest is that of model_digest (io/state_codec.hpp): the compact dump of each section as
-///   nlohmann prints it (numbers by nlohmann's own to_chars), keys sorted.
+/// - The digest is that of model_digest (io/state_codec.hpp), hashed from the dump of each section
+///   written from the tape (io/tape_dump.hpp), never held whole.
 ///
 /// simdjson reports only an error code, no position, and it refuses an integer beyond 64 bits that
 /// nlohmann reads as a double. So text that simdjson refuses is not judged here: the caller reads
