@@ -170,7 +170,16 @@ class TapeWalk {
         path_.close();
         return value;
       }
-      case dom::element_type::INT64: value = e.get_int64().value_unsafe(); break;
+      case dom::element_type::INT64: {
+        // nlohmann's parser makes every integer without a sign unsigned; so does this tree.
+        const std::int64_t v = e.get_int64().value_unsafe();
+        if (v >= 0) {
+          value = static_cast<std::uint64_t>(v);
+        } else {
+          value = v;
+        }
+        break;
+      }
       case dom::element_type::UINT64: value = e.get_uint64().value_unsafe(); break;
       case dom::element_type::DOUBLE: value = e.get_double().value_unsafe(); break;
       case dom::element_type::STRING: value = std::string(e.get_string().value_unsafe()); break;
