@@ -5,6 +5,7 @@
 #include "io/json_limits.hpp"
 #include "io/model_stream.hpp"
 #include "io/section_reader.hpp"
+#include "io/simd_model_reader.hpp"
 
 namespace saasgaps::io {
 
@@ -21,8 +22,11 @@ nlohmann::json parse_document(std::string_view text) { return parse_tree(text); 
 Model parse_model(std::string_view text, std::string* digest) {
   try {
     SectionReader reader;
-    stream_model(text, reader, digest);
-    return reader.finish();
+    if (read_model_text(text, reader, digest)) return reader.finish();
+    // Text simdjson refuses: the nlohmann pass says why, at the byte or pointer where it is.
+    SectionReader diagnosis;
+    stream_model(text, diagnosis, digest);
+    return diagnosis.finish();
   } catch (const NotJsonText&) {
     throw;  // no document to name
   } catch (const NestingTooDeep&) {

@@ -157,7 +157,9 @@ class ModelStream final : public json::json_sax_t {
     }
     reader_->check_required_root_keys(present_);
     for (InputIssue& issue : repeated_) reader_->repeated_key(std::move(issue.pointer), std::move(issue.detail));
-    if (digest != nullptr) *digest = fingerprint();
+    if (digest != nullptr) {
+      *digest = model_fingerprint(present_, [&](Section s, Fingerprint& f) { f.add(dumps_[static_cast<std::size_t>(s)]); });
+    }
   }
 
  private:
@@ -172,9 +174,7 @@ class ModelStream final : public json::json_sax_t {
   [[nodiscard]] std::string pointer() const { return path_.pointer(); }
 
   void repeated_here() {
-    repeated_.push_back(InputIssue{pointer(), "key " + quote_string(path_.top().key) +
-                                                  " appears more than once in this object; a JSON reader keeps "
-                                                  "only one of the values, so give each key once"});
+    repeated_.push_back(InputIssue{pointer(), repeated_key_detail(path_.top().key)});
   }
 
   /// A key of the root object: which section, and whether it can be read now.
@@ -306,30 +306,6 @@ class ModelStream final : public json::json_sax_t {
     target_ = Target::none;
   }
 
-  /// model_digest: the fingerprint of the compact dump of the root without title, description and
-  /// output, keys sorted, as nlohmann prints the tree.
-  [[nodiscard]] std::string fingerprint() const {
-    std::array<std::size_t, section_count> order{};
-    for (std::size_t k = 0; k < section_count; ++k) order[k] = k;
-    std::sort(order.begin(), order.end(), [](std::size_t a, std::size_t b) {
-      return section_key(static_cast<Section>(a)) < section_key(static_cast<Section>(b));
-    });
-    Fingerprint f;
-    f.add("{");
-    bool first = true;
-    for (const std::size_t k : order) {
-      const auto s = static_cast<Section>(k);
-      if (!present_[k] || s == Section::title || s == Section::description || s == Section::output) continue;
-      f.add(first ? "\"" : ",\"");
-      first = false;
-      f.add(section_key(s));
-      f.add("\":");
-      f.add(dumps_[k]);
-    }
-    f.add("}");
-    return f.hex();
-  }
-
  private:
   Mode mode_;
   SectionReader* reader_;
@@ -359,6 +335,34 @@ class ModelStream final : public json::json_sax_t {
 };
 
 }  // namespace
+
+std::string repeated_key_detail(std::string_view key) {
+  return "key " + quote_string(key) +
+         " appears more than once in this object; a JSON reader keeps only one of the values, so give each key once";
+}
+
+std::string model_fingerprint(const std::array<bool, section_count>& present,
+                              const std::function<void(Section, Fingerprint&)>& add) {
+  std::array<std::size_t, section_count> order{};
+  for (std::size_t k = 0; k < section_count; ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [](std::size_t a, std::size_t b) {
+    return section_key(static_cast<Section>(a)) < section_key(static_cast<Section>(b));
+  });
+  Fingerprint f;
+  f.add("{");
+  bool first = true;
+  for (const std::size_t k : order) {
+    const auto s = static_cast<Section>(k);
+    if (!present[k] || s == Section::title || s == Section::description || s == Section::output) continue;
+    f.add(first ? "\"" : ",\"");
+    first = false;
+    f.add(section_key(s));
+    f.add("\":");
+    add(s, f);
+  }
+  f.add("}");
+  return f.hex();
+}
 
 void stream_model(std::string_view text, SectionReader& reader, std::string* digest) {
   ModelStream stream(ModelStream::Mode::model, &reader, digest != nullptr);

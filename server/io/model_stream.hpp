@@ -15,6 +15,8 @@
 /// - The pass stops with NestingTooDeep at the first container nested deeper than max_json_depth
 ///   (io/json_limits.hpp), before anything of it is built.
 
+#include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -24,6 +26,7 @@
 
 #include "errors.hpp"
 #include "io/section_reader.hpp"
+#include "io/state_codec.hpp"
 
 namespace saasgaps::io {
 
@@ -31,6 +34,15 @@ namespace saasgaps::io {
 /// Throws ModelError with the one issue when the text is not JSON. When `digest` is given, also
 /// computes model_digest of the document (io/state_codec.hpp) from the members as they are read.
 void stream_model(std::string_view text, SectionReader& reader, std::string* digest);
+
+/// The detail of an issue at a key that an object repeats.
+std::string repeated_key_detail(std::string_view key);
+
+/// model_digest (io/state_codec.hpp) of a document with these sections: the fingerprint of the
+/// root's compact dump without title, description and output, keys sorted; `add(s, f)` adds the
+/// compact dump of section s's value (as nlohmann's dump() prints it) to f.
+std::string model_fingerprint(const std::array<bool, section_count>& present,
+                              const std::function<void(Section, Fingerprint&)>& add);
 
 /// The whole document as a tree, with repeated keys and out-of-range numbers reported at their
 /// pointers (ModelError), as parse_document promises.

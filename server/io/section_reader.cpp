@@ -109,7 +109,7 @@ void SectionReader::read_item_section(Section s, const Obj& root) {
     incomplete(s);
     return;
   }
-  begin_items(s);
+  begin_items(s, list->size());
   for (std::size_t i = 0; i < list->size(); ++i) read_item(s, (*list)[i], i);
   end_items(s, list->size());
 }
@@ -119,8 +119,15 @@ void SectionReader::incomplete(Section s) {
   if (s == Section::elements) solids_complete_ = false;
 }
 
-void SectionReader::begin_items(Section s) {
+void SectionReader::begin_items(Section s, std::size_t count_hint) {
   rank_ = 1 + static_cast<int>(s);
+  // The streaming driver knows the array's length: grow the model's arrays once.
+  if (s == Section::nodes) {
+    model_.nodes.reserve(count_hint);
+    node_placed_.reserve(count_hint);
+  }
+  if (s == Section::elements) model_.elements.reserve(count_hint);
+  if (s == Section::constraints) model_.constraints.reserve(count_hint);
   if (s == Section::nodes) radius_ = analysis_ == AnalysisType::axisymmetric ? &axisymmetric_radius : &any_number;
   prescribed_.clear();
 }
@@ -455,21 +462,25 @@ void SectionReader::read_temperatures(const Obj& loads) {
   }
   const json* list = array_field(temperatures, "nodal", 0);
   if (list == nullptr) return;
-  std::unordered_map<int, std::string> given;  // node index -> pointer of its temperature
+  // Per node index, the item that gave its temperature (its pointer is spelled only for an issue:
+  // a large model has a temperature per node).
+  std::vector<std::size_t> given(model_.nodes.size(), list->size());
+  const std::string nodal = temperatures.at("nodal");
   for (std::size_t i = 0; i < list->size(); ++i) {
-    const std::string pointer = pointer_append(temperatures.at("nodal"), i);
+    const std::string pointer = pointer_append(nodal, i);
     if (!object((*list)[i], pointer, {"node", "T"})) continue;
     const Obj o{&(*list)[i], pointer};
     const json* node_id = o.find("node");
     const Entry* node = node_id == nullptr ? nullptr : resolve_node(*node_id, Where(o.pointer, "node"));
     const auto T = number_field(o, "T");
     if (node == nullptr) continue;
-    const auto [first, fresh] = given.emplace(node->index, pointer);
-    if (!fresh) {
-      report(o.at("node"), "node " + quote(*node_id) + " already has a temperature at " + first->second +
+    std::size_t& first = given[static_cast<std::size_t>(node->index)];
+    if (first < i) {
+      report(o.at("node"), "node " + quote(*node_id) + " already has a temperature at " + pointer_append(nodal, first) +
                                "; give each node one temperature");
       continue;
     }
+    first = i;
     if (T) model_.loads.node_temperature[static_cast<std::size_t>(node->index)] = *T;
   }
 }

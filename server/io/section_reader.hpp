@@ -7,10 +7,12 @@
 ///
 /// Files: section_reader.cpp (the sections, in document order), section_checks.cpp (generic
 /// value checks and temperature tables), section_references.cpp (ids, references and element
-/// shapes), value_quote.cpp (how values are quoted in messages).
+/// shapes), section_items.cpp (the typed fast path of valid items), value_quote.cpp (how values
+/// are quoted in messages).
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <initializer_list>
 #include <limits>
 #include <map>
@@ -117,8 +119,41 @@ struct Entry {
   int item = 0;      ///< index in the document's array (/nodes/item, /gaps/elements/item, ...)
 };
 
-/// Ids of one kind (solid and gap elements share one kind).
-using Registry = std::unordered_map<int, Entry>;
+/// Ids of one kind (solid and gap elements share one kind). Models number their items 1..n or
+/// nearly so: such ids index a vector (a hash lookup per reference cost a tenth of the reading of a
+/// large model); ids far beyond the count go to a hash map, so memory stays linear in the count.
+class Registry {
+ public:
+  /// The entry of id; nullptr when there is none.
+  [[nodiscard]] const Entry* find(int id) const {
+    if (id >= 1 && static_cast<std::size_t>(id) <= dense_.size()) {
+      const Entry& e = dense_[static_cast<std::size_t>(id) - 1];
+      if (e.index >= 0) return &e;
+    }
+    if (sparse_.empty()) return nullptr;
+    const auto found = sparse_.find(id);
+    return found == sparse_.end() ? nullptr : &found->second;
+  }
+  [[nodiscard]] bool contains(int id) const { return find(id) != nullptr; }
+  /// Adds an id that find() does not know.
+  void emplace(int id, Entry entry) {
+    ++count_;
+    const auto slot = static_cast<std::size_t>(id);
+    if (id >= 1 && slot > dense_.size() && slot <= 2 * count_ + 4096) {
+      dense_.resize(std::max(slot, 2 * dense_.size()), Entry{-1, false, 0});
+    }
+    if (id >= 1 && slot <= dense_.size()) {
+      dense_[slot - 1] = entry;
+    } else {
+      sparse_.emplace(id, entry);
+    }
+  }
+
+ private:
+  std::vector<Entry> dense_;  ///< by id - 1; index -1 where no id
+  std::unordered_map<int, Entry> sparse_;
+  std::size_t count_ = 0;
+};
 
 /// Up to four node indices of an element, a gap element or a pressure edge; -1 where an id did not
 /// resolve (the rest still serve, e.g. as edges that a pressure may name).
@@ -149,6 +184,52 @@ std::span<const Section> dependencies(Section s);
 /// nodes, elements and constraints: arrays that may be read item by item.
 bool streams_items(Section s);
 
+/// A JSON number as the text wrote it: an integer keeps its exact value and kind (as nlohmann's
+/// parser does: unsigned when it has no sign), anything with a fraction or an exponent is a double.
+struct Number {
+  enum class Kind { signed_integer, unsigned_integer, floating };
+  Kind kind = Kind::floating;
+  std::int64_t integer = 0;     ///< signed_integer
+  std::uint64_t unsigned_ = 0;  ///< unsigned_integer
+  double floating = 0.0;        ///< floating
+  /// The value as nlohmann's get<double>() gives it.
+  [[nodiscard]] double value() const {
+    switch (kind) {
+      case Kind::signed_integer: return static_cast<double>(integer);
+      case Kind::unsigned_integer: return static_cast<double>(unsigned_);
+      case Kind::floating: break;
+    }
+    return floating;
+  }
+  /// An id: a JSON integer in 1..INT_MAX; nullopt for anything else.
+  [[nodiscard]] std::optional<int> id() const {
+    constexpr auto largest = static_cast<std::uint64_t>(std::numeric_limits<int>::max());
+    if (kind == Kind::signed_integer && integer >= 1 && static_cast<std::uint64_t>(integer) <= largest) {
+      return static_cast<int>(integer);
+    }
+    if (kind == Kind::unsigned_integer && unsigned_ >= 1 && unsigned_ <= largest) return static_cast<int>(unsigned_);
+    return std::nullopt;
+  }
+};
+
+/// The values of an item of nodes, elements or constraints that has exactly the keys its rule
+/// allows, each once, each a number (elements: nodes an array of 3 or 4 numbers). The streaming
+/// driver hands such items to SectionReader::read_*_values without building a tree.
+struct NodeValues {
+  Number id, r, z;
+};
+struct ElementValues {
+  Number id;
+  std::array<Number, 4> nodes;
+  int node_count = 0;
+  Number material;
+  std::optional<Number> angle;
+};
+struct ConstraintValues {
+  Number node;
+  std::optional<Number> r, z;
+};
+
 /// Reads one document, accumulating issues; one function per section of the document. Every
 /// check reports its own issue and returns nullopt / nullptr / false, and the caller carries on, so
 /// one pass finds every independent problem.
@@ -168,9 +249,15 @@ class SectionReader {
   /// A section read whole; value nullptr when the document does not have it.
   void read_section(Section s, const json* value);
   /// A streamed array (streams_items(s)): begin, each item in order, end with their count.
-  void begin_items(Section s);
+  void begin_items(Section s, std::size_t count_hint = 0);
   void read_item(Section s, const json& item, std::size_t index);
   void end_items(Section s, std::size_t count);
+  /// The fast path of read_item for an item of the usual shape (section_items.cpp): true when the
+  /// item is valid and has been read, with exactly the effect read_item has; false (nothing
+  /// changed, nothing reported) when some rule fails, and read_item must judge the item's tree.
+  bool read_node_values(const NodeValues& item, std::size_t index);
+  bool read_element_values(const ElementValues& item, std::size_t index);
+  bool read_constraint_values(const ConstraintValues& item, std::size_t index);
   /// The Model, or ModelError with every issue.
   Model finish();
 

@@ -6,9 +6,9 @@
 namespace saasgaps::io {
 
 bool SectionReader::is_new(const Registry& registry, int id, const Where& pointer, std::string_view what) {
-  const auto found = registry.find(id);
-  if (found == registry.end()) return true;
-  const Entry& first = found->second;
+  const Entry* found = registry.find(id);
+  if (found == nullptr) return true;
+  const Entry& first = *found;
   const std::string list = what == "node"       ? "/nodes"
                            : what == "material" ? "/materials"
                            : first.gap          ? "/gaps/elements"
@@ -23,8 +23,7 @@ const Entry* SectionReader::resolve(const Registry& registry, bool complete, con
                              const Where& pointer, std::string_view what, std::string_view where) {
   const auto id = integer(value, pointer, what, 1);
   if (!id) return nullptr;
-  const auto found = registry.find(*id);
-  if (found != registry.end()) return &found->second;
+  if (const Entry* found = registry.find(*id)) return found;
   if (complete) {
     report(pointer, std::string(what) + " " + std::to_string(*id) + " is not defined: no entry of " +
                         std::string(where) + " has id " + std::to_string(*id));

@@ -39,10 +39,13 @@ std::vector<T> dense(const json& pairs, std::size_t size, T usual) {
 }  // namespace
 
 void Fingerprint::add(std::string_view text) {
+  // In a local: the text's chars may alias hash_, which would be stored and reloaded per byte.
+  std::uint64_t hash = hash_;
   for (const unsigned char c : text) {
-    hash_ ^= c;
-    hash_ *= 1099511628211ULL;
+    hash ^= c;
+    hash *= 1099511628211ULL;
   }
+  hash_ = hash;
 }
 
 std::string Fingerprint::hex() const {

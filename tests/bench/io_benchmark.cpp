@@ -2,7 +2,7 @@
 // the streaming way, on one model document.
 //
 //   /usr/bin/python3 schemas/examples/make_ring_model.py --radial 160 --hoop 1600 -o /tmp/annulus-1e6.json
-//   build/tests/bench/saasgaps_io_bench /tmp/annulus-1e6.json
+//   build/tests/bench/saasgaps_io_bench /tmp/annulus-1e6.json [--reads-only]
 //
 // Each stage runs in a child process of its own (fork), so its peak RSS (the child's ru_maxrss) is
 // that stage's true peak for the whole process: what the parent held when it forked (the text, or
@@ -13,9 +13,12 @@
 // writers do not solve, they print.
 //
 // Stages:
-//   read, tree     parse_document (a tree of the whole text) + read_model + model_digest: what
-//                  `saasgaps solve` did before
-//   read, stream   parse_model(text, &digest): one SAX pass, no tree of the document
+//   read, tree     parse_document (a tree of the whole text) + read_model + model_digest: the tree
+//                  reader the model-reader tests take as their reference
+//   read, SAX      the nlohmann SAX pass (io/model_stream.hpp) + its digest: what parse_model did
+//                  before simdjson, and still does for text simdjson refuses
+//   read, stream   parse_model(text, &digest): simdjson's tape, typed items, digest from the tape
+// The read rates are also printed as ratios of CPU rates, all measured in this one run.
 //   write, tree    the tree writer (kept in tests/io) + dump(2): what `saasgaps solve -o` wrote before
 //   write, stream  io::write_result, compact (the default) and --pretty, through a 64 KiB buffer
 #include <sys/resource.h>
@@ -34,6 +37,7 @@
 
 #include "io/json_writer.hpp"
 #include "io/model_reader.hpp"
+#include "io/model_stream.hpp"
 #include "io/result_tree_reference.hpp"
 #include "io/result_writer.hpp"
 #include "io/state_codec.hpp"
@@ -138,8 +142,9 @@ Solution synthetic_solution(const Model& model) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: %s MODEL.json\n", argv[0]);
+  const bool reads_only = argc == 3 && std::string(argv[2]) == "--reads-only";
+  if (argc != 2 && !reads_only) {
+    std::fprintf(stderr, "usage: %s MODEL.json [--reads-only]\n", argv[0]);
     return 2;
   }
   std::string text;
@@ -152,18 +157,31 @@ int main(int argc, char** argv) {
   const auto size = static_cast<double>(text.size());
   std::printf("model %s: %.1f MB of text; this process holds %.0f MiB\n", argv[1], size / 1e6, peak_rss_mib());
 
-  print("read, tree (before)", in_child([&] {
-          const nlohmann::json document = io::parse_document(text);
-          const Model model = io::read_model(document);
-          const std::string digest = io::model_digest(document);
-          return size;
-        }));
-  print("read, stream", in_child([&] {
-          std::string digest;
-          const Model model = io::parse_model(text, &digest);
-          return size;
-        }));
+  const Measured tree = in_child([&] {
+    const nlohmann::json document = io::parse_document(text);
+    const Model model = io::read_model(document);
+    const std::string digest = io::model_digest(document);
+    return size;
+  });
+  print("read, tree (reference)", tree);
+  const Measured sax = in_child([&] {
+    std::string digest;
+    io::SectionReader reader;
+    io::stream_model(text, reader, &digest);
+    const Model model = reader.finish();
+    return size;
+  });
+  print("read, nlohmann SAX (before)", sax);
+  const Measured stream = in_child([&] {
+    std::string digest;
+    const Model model = io::parse_model(text, &digest);
+    return size;
+  });
+  print("read, stream (simdjson)", stream);
+  std::printf("read rate of CPU, stream / tree: %.1fx; stream / nlohmann SAX: %.1fx\n",
+              tree.cpu_seconds / stream.cpu_seconds, sax.cpu_seconds / stream.cpu_seconds);
 
+  if (reads_only) return 0;
   const Model model = io::parse_model(text);
   text = std::string();  // a solve no longer holds the text when it writes
   const Solution solution = synthetic_solution(model);

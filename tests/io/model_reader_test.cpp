@@ -5,6 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -15,6 +19,7 @@
 #include "io/json_pointer.hpp"
 #include "io/model_reader.hpp"
 #include "io/state_codec.hpp"
+#include "../support/json_mutation.hpp"
 
 namespace saasgaps::io {
 namespace {
@@ -991,6 +996,130 @@ TEST(ModelReader, HugeAndDeepInputsAreModelErrors) {
 
   EXPECT_THROW((void)parse_model(std::string("\xff\xfe garbage")), ModelError);
   EXPECT_THROW((void)parse_model(""), ModelError);
+}
+
+// ------------------------------------------------------------------------------------------------
+// The streaming reader (simdjson's tape, io/simd_model_reader.hpp) against the tree reader on every
+// example, on a corpus of mutated examples, and on text simdjson refuses
+
+std::vector<std::filesystem::path> example_models() {
+  std::vector<std::filesystem::path> paths;
+  for (const auto& entry : std::filesystem::directory_iterator(SAASGAPS_EXAMPLES_DIR)) {
+    if (entry.path().extension() == ".json") paths.push_back(entry.path());
+  }
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+std::string text_of(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream all;
+  all << in.rdbuf();
+  return all.str();
+}
+
+/// The Model read from text equals the Model read from its tree, value for value.
+void expect_same_model(const Model& a, const Model& b) {
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    EXPECT_EQ(a.nodes[i].id, b.nodes[i].id);
+    EXPECT_EQ(a.nodes[i].r, b.nodes[i].r);
+    EXPECT_EQ(a.nodes[i].z, b.nodes[i].z);
+  }
+  ASSERT_EQ(a.elements.size(), b.elements.size());
+  for (std::size_t i = 0; i < a.elements.size(); ++i) {
+    EXPECT_EQ(a.elements[i].id, b.elements[i].id);
+    EXPECT_EQ(a.elements[i].nodes, b.elements[i].nodes);
+    EXPECT_EQ(a.elements[i].node_count, b.elements[i].node_count);
+    EXPECT_EQ(a.elements[i].material, b.elements[i].material);
+    EXPECT_EQ(a.elements[i].angle_deg, b.elements[i].angle_deg);
+  }
+  ASSERT_EQ(a.constraints.size(), b.constraints.size());
+  for (std::size_t i = 0; i < a.constraints.size(); ++i) {
+    EXPECT_EQ(a.constraints[i].node, b.constraints[i].node);
+    EXPECT_EQ(a.constraints[i].u_r, b.constraints[i].u_r);
+    EXPECT_EQ(a.constraints[i].u_z, b.constraints[i].u_z);
+  }
+  EXPECT_EQ(a.materials.size(), b.materials.size());
+  EXPECT_EQ(a.loads.node_temperature, b.loads.node_temperature);
+  EXPECT_EQ(a.loads.nodal_forces.size(), b.loads.nodal_forces.size());
+  EXPECT_EQ(a.loads.pressures.size(), b.loads.pressures.size());
+  EXPECT_EQ(a.gaps.has_value(), b.gaps.has_value());
+  if (a.gaps && b.gaps) {
+    EXPECT_EQ(a.gaps->elements.size(), b.gaps->elements.size());
+  }
+}
+
+TEST(ModelReader, EveryExampleReadsFromTextAsFromItsTree) {
+  const auto paths = example_models();
+  ASSERT_GE(paths.size(), 10U);
+  for (const auto& path : paths) {
+    SCOPED_TRACE(path.filename().string());
+    const std::string text = text_of(path);
+    const json document = json::parse(text);
+    EXPECT_TRUE(issues_of(document).empty());  // and the text of its dump and in contract order agree
+    std::string digest;
+    const Model streamed = parse_model(text, &digest);
+    expect_same_model(streamed, read_model(document));
+    EXPECT_EQ(digest, model_digest(document));
+    EXPECT_EQ(parse_model(document.dump(2), &digest).nodes.size(), streamed.nodes.size());
+    EXPECT_EQ(digest, model_digest(document));
+  }
+}
+
+TEST(ModelReader, MutatedExamplesGiveTheIssuesOfTheTreeReader) {
+  std::vector<json> seeds;
+  for (const auto& path : example_models()) {
+    const json document = json::parse(text_of(path));
+    if (document.dump().size() < 200000) seeds.push_back(document);  // small ones: 600 mutations stay quick
+  }
+  ASSERT_GE(seeds.size(), 5U);
+  std::mt19937 random(1976);
+  int refused = 0;
+  for (int k = 0; k < 600; ++k) {
+    const json document = testing::mutate(seeds[static_cast<std::size_t>(k) % seeds.size()], random);
+    // issues_of compares parse_model on the dump and in contract order with read_model.
+    if (!issues_of(document).empty()) ++refused;
+  }
+  EXPECT_GT(refused, 300);
+}
+
+TEST(ModelReaderRules, TextTheFastParserRefusesIsJudgedAsBefore) {
+  const std::string text = in_contract_order(valid_model());
+  // A byte order mark: nlohmann's parser skips it, so the model reads.
+  std::string digest;
+  EXPECT_EQ(parse_model("\xEF\xBB\xBF" + text, &digest).nodes.size(), 11U);
+  EXPECT_EQ(digest, model_digest(valid_model()));
+  // An integer beyond 64 bits is a double to nlohmann: an id "must be an integer", as in the tree.
+  std::string big = text;
+  const std::string node = R"({"id":2,"r":1,"z":0})";
+  big.replace(big.find(node), node.size(), R"({"id":18446744073709551616,"r":1,"z":0})");
+  std::vector<InputIssue> tree_issues;
+  try {
+    (void)read_model(json::parse(big));
+  } catch (const ModelError& e) {
+    tree_issues = e.issues();
+  }
+  EXPECT_TRUE(has_issue(tree_issues, "/nodes/1/id", {"must be an integer"}));
+  EXPECT_TRUE(same_issues(issues_of_text(big), tree_issues)) << listing(issues_of_text(big));
+  // Keys spelled with escapes are the same keys.
+  std::string escaped = text;
+  escaped.replace(escaped.find(node), node.size(), R"({"\u0069d":2,"r":1,"z":0})");
+  EXPECT_NO_THROW((void)parse_model(escaped, &digest));
+  EXPECT_EQ(digest, model_digest(valid_model()));
+}
+
+TEST(ModelReaderRules, RepeatedKeysAreFoundInEverySection) {
+  std::string text = in_contract_order(valid_model());
+  const std::string material = R"("density":0.283)";
+  text.replace(text.find(material), material.size(), R"("density":0.283,"density":0.3)");
+  text.insert(text.size() - 1, R"(,"extra":{"a":1,"a":2},"solver":{})");
+  const auto issues = issues_of_text(text);
+  EXPECT_TRUE(has_issue(issues, "/materials/0/density", {"\"density\"", "more than once"})) << listing(issues);
+  EXPECT_TRUE(has_issue(issues, "/extra/a", {"\"a\"", "more than once"})) << listing(issues);
+  EXPECT_TRUE(has_issue(issues, "/extra", {"unknown key"})) << listing(issues);
+  EXPECT_TRUE(has_issue(issues, "/solver", {"\"solver\"", "more than once"})) << listing(issues);
+  EXPECT_EQ(issues.size(), 4U) << listing(issues);
 }
 
 }  // namespace
