@@ -16,6 +16,7 @@
 
 #include "io/json_text.hpp"
 #include "io/model_reader.hpp"
+#include "io/read_card.hpp"
 #include "service/log.hpp"
 
 namespace saasgaps::service {
@@ -99,33 +100,6 @@ constexpr const char* job_columns =
     "(SELECT row FROM iterations i WHERE i.job_id = jobs.id ORDER BY iteration DESC LIMIT 1), "
     "slurm_job_id, slurm_state";
 
-json settings_json(const RunSettings& s) {
-  json j = json::object();
-  if (s.tensile_schedule) j["tensile_schedule"] = *s.tensile_schedule;
-  if (s.max_iterations) j["max_iterations"] = *s.max_iterations;
-  if (s.extrapolation_factor) j["extrapolation_factor"] = *s.extrapolation_factor;
-  j["restart_schedule"] = s.restart_schedule;
-  return j;
-}
-
-RunSettings parse_settings(const std::string& text) {
-  // Written by settings_json; anything else is damage, read as "no changes" rather than an error
-  // on every read of the job.
-  json j;
-  try {
-    j = io::parse_document(text);
-  } catch (const ModelError&) {
-    // damage: j stays null
-  }
-  RunSettings s;
-  if (!j.is_object()) return s;
-  if (j.contains("tensile_schedule")) s.tensile_schedule = j["tensile_schedule"].get<std::vector<double>>();
-  if (j.contains("max_iterations")) s.max_iterations = j["max_iterations"].get<int>();
-  if (j.contains("extrapolation_factor")) s.extrapolation_factor = j["extrapolation_factor"].get<double>();
-  s.restart_schedule = j.value("restart_schedule", false);
-  return s;
-}
-
 JobRecord read_job(const Statement& q) {
   JobRecord j;
   j.id = q.integer(0);
@@ -141,7 +115,7 @@ JobRecord read_job(const Statement& q) {
   j.cancel_requested = q.integer(10) != 0;
   j.error = q.optional_text(11);
   j.message = q.optional_text(12);
-  j.settings = parse_settings(q.text(13));
+  j.settings = io::stored_read_card(q.text(13));
   j.last_row = q.optional_text(14);
   j.slurm_job_id = q.optional_text(15);
   j.slurm_state = q.optional_text(16);
@@ -770,7 +744,7 @@ JobRecord JobStore::cancel(std::int64_t id) {
   return updated;
 }
 
-JobRecord JobStore::resume(std::int64_t id, const RunSettings& changes) {
+JobRecord JobStore::resume(std::int64_t id, const ResumeOptions& changes) {
   require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
@@ -779,15 +753,10 @@ JobRecord JobStore::resume(std::int64_t id, const RunSettings& changes) {
     throw JobConflict("job " + std::to_string(id) + " is " + to_string(job.state) + "; only cancelled, "
                       "not_converged, interrupted or failed jobs can be resumed");
   }
-  RunSettings settings = job.settings;
-  if (changes.tensile_schedule) {
-    settings.tensile_schedule = changes.tensile_schedule;
-    settings.restart_schedule = true;
-  }
-  if (changes.max_iterations) settings.max_iterations = changes.max_iterations;
-  if (changes.extrapolation_factor) settings.extrapolation_factor = changes.extrapolation_factor;
+  ResumeOptions settings = job.settings;
+  settings.apply(changes);
   db->prepare("UPDATE jobs SET settings = ?, max_iterations = COALESCE(?, max_iterations), interruptions = 0 WHERE id = ?")
-      .bind(1, io::json_text(settings_json(settings)))
+      .bind(1, io::stored_read_card_text(settings))
       .bind(2, changes.max_iterations)
       .bind(3, id)
       .run();

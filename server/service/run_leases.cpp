@@ -156,9 +156,6 @@ void interrupt(Connection& db, std::int64_t id, const std::string& what, int max
 
 // Remote workers and the Slurm executor.
 
-std::string settings_to_text(const RunSettings& settings) { return settings_json(settings).dump(); }
-RunSettings settings_from_text(const std::string& text) { return parse_settings(text); }
-
 Lease JobStore::redeem_ticket(std::int64_t id, const Lease& ticket, const std::string& worker) {
   require_writable();
   auto db = pool_->lease();
