@@ -18,26 +18,15 @@
 #include <vector>
 
 #include "resume_options.hpp"
+#include "service/job_states.hpp"
 #include "service/sqlite.hpp"
 
 namespace saasgaps::service {
-
-enum class JobState { queued, running, converged, not_converged, failed, cancelled, interrupted };
-
-const char* to_string(JobState state);
-std::optional<JobState> parse_job_state(std::string_view text);
-bool is_finished(JobState state);  ///< converged, not_converged, failed, cancelled
 
 /// The job does not exist.
 class JobNotFound : public std::runtime_error {
  public:
   explicit JobNotFound(std::int64_t id) : std::runtime_error("no job " + std::to_string(id)) {}
-};
-
-/// The request does not fit the job's state (resume while running, result while running, ...).
-class JobConflict : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
 };
 
 /// The store is open read-only (it could not write at start-up, e.g. a full disk): reads work,
