@@ -677,8 +677,7 @@ void JobStore::finish(std::int64_t id, JobState state, const std::optional<std::
     const JobRecord job = require_job(*db, id);
     attempt = job.attempts;
     if (lease && !check_lease(*db, id, *lease, std::nullopt, finish_digest)) return;  // finished before: a retry
-    // The service's own runs (no lease) are not checked here.
-    const JobState outcome = lease ? *next_state(id, job.state, JobAction::finish, {.outcome = state}) : state;
+    const JobState outcome = *next_state(id, job.state, JobAction::finish, {.outcome = state});
     add_commit_seconds(*db, id, last_commit);
     if (result) {
       db->prepare("INSERT OR REPLACE INTO results (job_id, document) VALUES (?, ?)").bind(1, id).bind(2, *result).run();

@@ -253,6 +253,21 @@ TEST_F(StoreTransitions, AStaleLeaseCannotWriteOrFinish) {
   EXPECT_EQ(state(id), S::converged);
 }
 
+TEST_F(StoreTransitions, ARunFinishesOnlyARunningJob) {
+  // Without a lease (the service's own runs) the table still decides: a job no run holds is not
+  // finished by one. Before the table, such a finish was written unchecked.
+  const std::int64_t id = submit();
+  EXPECT_THROW(store().finish(id, S::converged, "{}", "ended", std::nullopt), JobConflict);
+  EXPECT_EQ(state(id), S::queued);
+  const ClaimedJob run = claim();
+  EXPECT_THROW(store().finish(id, S::queued, "{}", "ended", std::nullopt), JobConflict);
+  store().finish(id, S::converged, "{}", "ended", std::nullopt);
+  EXPECT_EQ(state(id), S::converged);
+  EXPECT_THROW(store().finish(id, S::failed, "{}", "again", std::nullopt), JobConflict);
+  EXPECT_EQ(state(id), S::converged);
+  (void)run;
+}
+
 TEST_F(StoreTransitions, RecoveryCancelsAJobWhoseCancelWasAcknowledged) {
   const std::int64_t id = submit();
   const ClaimedJob run = claim();
