@@ -16,20 +16,10 @@
 #include "ordering_cache.hpp"
 #include "model.hpp"
 #include "restart_state.hpp"
+#include "resume_options.hpp"
 #include "solution.hpp"
 
 namespace saasgaps {
-
-/// What a restart may change (the report's READ card): a new tensile schedule (absolute moduli,
-/// started afresh from its first value), a new iteration limit, a new extrapolation factor.
-struct ResumeOptions {
-  std::optional<std::vector<double>> tensile_schedule;
-  std::optional<int> max_iterations;
-  std::optional<double> extrapolation_factor;
-  /// Start a new tensile_schedule from its first value at the next iteration (the READ card). A
-  /// caller that re-applies a schedule an earlier resume already began (after a crash) sets false.
-  bool restart_schedule = true;
-};
 
 /// Runs a model from the start, or from `resume` when given. Throws SingularModelError for a
 /// mechanism, SolverError for a state that does not belong to the model. cache (optional): where

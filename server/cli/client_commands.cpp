@@ -10,6 +10,7 @@
 #include "cli/http_client.hpp"
 #include "cli/job_watch.hpp"
 #include "cli/usage.hpp"
+#include "io/read_card.hpp"
 
 namespace saasgaps::cli {
 
@@ -184,10 +185,7 @@ int ClientCommands::cancel() const {
 }
 
 int ClientCommands::resume() const {
-  json body = json::object();
-  if (changes_.max_iterations) body["max_iterations"] = *changes_.max_iterations;
-  if (changes_.tensile_schedule) body["tensile_schedule"] = *changes_.tensile_schedule;
-  if (changes_.extrapolation_factor) body["extrapolation_factor"] = *changes_.extrapolation_factor;
+  const json body = io::read_card_to_json(changes_, io::ReadCardForm::changes);
   ServiceClient client = connect(server_);
   const json job = json::parse(client.post_json(job_path(job_) + "/resume", body.dump()));
   std::cerr << "job " << job_ << " " << text_of(job, "state") << " to continue after "

@@ -58,7 +58,7 @@ class ClientCommands {
   bool json_ = false;
   std::string state_filter_;
   int limit_ = 20;
-  ReadCardChanges changes_;
+  ResumeOptions changes_;
   bool fetch_result_ = false;
   bool fetch_vtu_ = false;
   std::string fetch_plot_;

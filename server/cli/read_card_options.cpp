@@ -1,19 +1,20 @@
 #include "cli/read_card_options.hpp"
 
 #include "cli/usage.hpp"
+#include "io/read_card.hpp"
 #include "io/run_limits.hpp"
 
 namespace saasgaps::cli {
 
-void add_read_card_options(CLI::App& command, ReadCardChanges& changes, const std::string& schedule_note) {
+void add_read_card_options(CLI::App& command, ResumeOptions& changes, const std::string& schedule_note) {
   command.add_option("--max-iterations", changes.max_iterations, "Iteration limit (overrides the model's)")
-      ->check(integer_range(1, io::max_iterations_limit));
+      ->check(integer_rule(io::max_iterations_allowed, io::max_iterations_rule(), "INT in [1 - " + std::to_string(io::max_iterations_limit) + "]"));
   command.add_option("--schedule", changes.tensile_schedule,
                      "New tensile modulus schedule, absolute moduli, comma separated" + schedule_note)
       ->delimiter(',')
-      ->check(positive_number());
+      ->check(number_rule(io::tensile_modulus_allowed, io::tensile_modulus_rule, "NUMBER > 0"));
   command.add_option("--extrapolation", changes.extrapolation_factor, "Extrapolation factor XFACT, 0 <= F < 1")
-      ->check(fraction_below_one());
+      ->check(number_rule(io::extrapolation_factor_allowed, io::extrapolation_factor_rule, "0 <= NUMBER < 1"));
 }
 
 }  // namespace saasgaps::cli

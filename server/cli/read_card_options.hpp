@@ -1,22 +1,18 @@
 #pragma once
 /// The report's READ card on the command line: the three changes a resumed run may make, as the same
-/// options for `saasgaps solve --resume` and `saasgaps resume` (docs/restart.md).
+/// options for `saasgaps solve --resume` and `saasgaps resume` (docs/restart.md), mapped onto the one
+/// READ-card type (ResumeOptions) here and nowhere else.
 
 #include <CLI/CLI.hpp>
 
-#include <optional>
-#include <vector>
+#include <string>
+
+#include "resume_options.hpp"
 
 namespace saasgaps::cli {
 
-struct ReadCardChanges {
-  std::optional<int> max_iterations;                      ///< --max-iterations N
-  std::optional<std::vector<double>> tensile_schedule;    ///< --schedule E1,E2,...
-  std::optional<double> extrapolation_factor;             ///< --extrapolation F
-};
-
-/// Adds --max-iterations (1 to io::max_iterations_limit), --schedule (moduli > 0) and
-/// --extrapolation (0 <= F < 1) to `command`. `schedule_note` ends the --schedule description.
-void add_read_card_options(CLI::App& command, ReadCardChanges& changes, const std::string& schedule_note);
+/// Adds --max-iterations, --schedule E1,E2,... and --extrapolation F to `command`, filling `changes`
+/// and checked by the rules of io/read_card.hpp. `schedule_note` ends the --schedule description.
+void add_read_card_options(CLI::App& command, ResumeOptions& changes, const std::string& schedule_note);
 
 }  // namespace saasgaps::cli

@@ -98,17 +98,12 @@ int run_solve(const SolveOptions& options) {
     }
     resume = io::state_from_json(saved, digest);
   }
-  ResumeOptions changes;
-  changes.max_iterations = options.changes.max_iterations;
-  changes.tensile_schedule = options.changes.tensile_schedule;
-  changes.extrapolation_factor = options.changes.extrapolation_factor;
-
   CommandLineObserver observer(options, digest);
   std::optional<OrderingCache> cache;
   if (!options.cache_dir.empty()) cache.emplace(options.cache_dir);
   std::optional<Solution> solution;
   try {
-    solution = solve(model, &observer, resume ? &*resume : nullptr, changes, cache ? &*cache : nullptr);
+    solution = solve(model, &observer, resume ? &*resume : nullptr, options.changes, cache ? &*cache : nullptr);
   } catch (const std::exception& e) {
     // The failure is reported by main(); the result document records it too.
     if (destination != "-") {

@@ -18,7 +18,7 @@ struct SolveOptions {
   std::string result_path;  ///< "-": stdout; empty: stdout, or next to the model on a terminal
   std::string state_out;    ///< write the restart state after every iteration
   std::string resume_from;  ///< continue from this restart state
-  ReadCardChanges changes;  ///< --max-iterations, --schedule, --extrapolation
+  ResumeOptions changes;  ///< --max-iterations, --schedule, --extrapolation (with --resume)
   std::optional<int> stop_after;  ///< stop at the boundary after this iteration
   bool quiet = false;
   bool wide = false;     ///< every column of the progress table (cli/progress_table.hpp)

@@ -175,44 +175,38 @@ std::string plural(long long count, const std::string& noun) {
   return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
 }
 
-CLI::Validator positive_number() {
+CLI::Validator number_rule(const std::function<bool(double)>& allowed, const std::string& rule,
+                           const std::string& type_name) {
   return CLI::Validator(
-      [](std::string& text) -> std::string {
+      [allowed, rule](std::string& text) -> std::string {
         double value = 0.0;
         const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-        if (error != std::errc() || end != text.data() + text.size() || !(value > 0.0)) {
-          return "must be a number > 0, got \"" + text + "\"";
+        if (error != std::errc() || end != text.data() + text.size() || !allowed(value)) {
+          return rule + ", got \"" + text + "\"";
         }
         return {};
       },
-      "NUMBER > 0");
+      type_name);
+}
+
+CLI::Validator integer_rule(const std::function<bool(long long)>& allowed, const std::string& rule,
+                            const std::string& type_name) {
+  return CLI::Validator(
+      [allowed, rule](std::string& text) -> std::string {
+        long long value = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error != std::errc() || end != text.data() + text.size() || !allowed(value)) {
+          return rule + ", got \"" + text + "\"";
+        }
+        return {};
+      },
+      type_name);
 }
 
 CLI::Validator integer_range(long long low, long long high) {
-  return CLI::Validator(
-      [low, high](std::string& text) -> std::string {
-        long long value = 0;
-        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-        if (error != std::errc() || end != text.data() + text.size() || value < low || value > high) {
-          return "must be an integer from " + std::to_string(low) + " to " + std::to_string(high) + ", got \"" +
-                 text + "\"";
-        }
-        return {};
-      },
-      "INT in [" + std::to_string(low) + " - " + std::to_string(high) + "]");
-}
-
-CLI::Validator fraction_below_one() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        double value = 0.0;
-        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-        if (error != std::errc() || end != text.data() + text.size() || !(value >= 0.0 && value < 1.0)) {
-          return "must be a number at least 0 and below 1, got \"" + text + "\"";
-        }
-        return {};
-      },
-      "0 <= NUMBER < 1");
+  return integer_rule([low, high](long long value) { return value >= low && value <= high; },
+                      "must be an integer from " + std::to_string(low) + " to " + std::to_string(high),
+                      "INT in [" + std::to_string(low) + " - " + std::to_string(high) + "]");
 }
 
 }  // namespace saasgaps::cli

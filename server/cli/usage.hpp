@@ -44,13 +44,16 @@ int run_command(const std::function<int()>& command, const std::string& document
 /// take an s only).
 std::string plural(long long count, const std::string& noun);
 
-/// A validator for numbers > 0 whose message names the value ("must be a number > 0, got abc").
-CLI::Validator positive_number();
+/// A validator of a number by a rule (e.g. io/read_card.hpp's): `allowed` decides; a refusal says
+/// `rule` and the text ("must be a number > 0, got \"abc\""). type_name shows in the help.
+CLI::Validator number_rule(const std::function<bool(double)>& allowed, const std::string& rule,
+                           const std::string& type_name);
+
+/// The same for integers.
+CLI::Validator integer_rule(const std::function<bool(long long)>& allowed, const std::string& rule,
+                            const std::string& type_name);
 
 /// A validator for integers in [low, high] whose message names the value.
 CLI::Validator integer_range(long long low, long long high);
-
-/// A validator for numbers f with 0 <= f < 1 ("must be a number at least 0 and below 1, got ...").
-CLI::Validator fraction_below_one();
 
 }  // namespace saasgaps::cli

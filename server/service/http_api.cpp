@@ -15,8 +15,8 @@
 #include "io/json_subset.hpp"
 #include "io/json_text.hpp"
 #include "io/model_reader.hpp"
+#include "io/read_card.hpp"
 #include "io/restraint_issues.hpp"
-#include "io/run_limits.hpp"
 #include "io/vtu_writer.hpp"
 #include "plot/color_map.hpp"
 #include "plot/plot_request.hpp"
@@ -93,9 +93,6 @@ json message_warnings(const std::optional<std::string>& message) {
 
 json job_json(const JobRecord& j) {
   const std::string self = "/v1/jobs/" + std::to_string(j.id);
-  json settings = json::object();
-  if (j.settings.tensile_schedule) settings["tensile_schedule"] = *j.settings.tensile_schedule;
-  if (j.settings.extrapolation_factor) settings["extrapolation_factor"] = *j.settings.extrapolation_factor;
   return {{"id", j.id},
           {"state", to_string(j.state)},
           {"title", j.title},
@@ -111,7 +108,7 @@ json job_json(const JobRecord& j) {
           {"message", j.message ? json(*j.message) : json(nullptr)},
           {"warnings", message_warnings(j.message)},
           {"error", j.error ? json(*j.error) : json(nullptr)},
-          {"resume_settings", settings},
+          {"resume_settings", io::read_card_to_json(j.settings, io::ReadCardForm::in_force)},
           {"slurm", j.slurm_job_id ? json{{"job_id", *j.slurm_job_id}, {"state", j.slurm_state.value_or("")}} : json(nullptr)},
           {"links",
            {{"self", self},
@@ -147,54 +144,6 @@ void send_json(httplib::Response& res, int status, const json& body) {
 /// (io::NotJsonText), 422 naming the pointer of a repeated key, of a number beyond a double, or of
 /// nesting beyond io::max_json_depth.
 json json_body(const httplib::Request& req) { return io::parse_document(req.body); }
-
-/// The resume body {tensile_schedule?, max_iterations?, extrapolation_factor?}: every problem is
-/// reported with its pointer, like a model.
-RunSettings resume_changes(const json& body, bool model_has_gaps) {
-  std::vector<InputIssue> issues;
-  RunSettings changes;
-  if (!body.is_object()) {
-    throw ModelError(std::vector<InputIssue>{{"", "the resume body must be an object, like {\"max_iterations\": 40}"}});
-  }
-  for (const auto& [key, value] : body.items()) {
-    const std::string pointer = io::pointer_append("", key);
-    if (key == "tensile_schedule") {
-      if (!model_has_gaps) issues.push_back({pointer, "the model has no gaps, so it has no tensile schedule"});
-      if (!value.is_array() || value.empty()) {
-        issues.push_back({pointer, "must be a non-empty array of positive moduli, got " + io::json_text(value)});
-        continue;
-      }
-      std::vector<double> schedule;
-      for (std::size_t i = 0; i < value.size(); ++i) {
-        if (!value[i].is_number() || !(value[i].get<double>() > 0.0)) {
-          issues.push_back({io::pointer_append(pointer, i), "a tensile modulus must be a number > 0, got " + io::json_text(value[i])});
-        } else {
-          schedule.push_back(value[i].get<double>());
-        }
-      }
-      changes.tensile_schedule = schedule;
-    } else if (key == "max_iterations") {
-      if (!value.is_number_integer() || value.get<std::int64_t>() < 1 || value.get<std::int64_t>() > io::max_iterations_limit) {
-        issues.push_back({pointer, "must be an integer from 1 to " + std::to_string(io::max_iterations_limit) + ", got " +
-                                       io::json_text(value)});
-      } else {
-        changes.max_iterations = value.get<int>();
-      }
-    } else if (key == "extrapolation_factor") {
-      if (!model_has_gaps) issues.push_back({pointer, "the model has no gaps, so nothing to extrapolate"});
-      if (!value.is_number() || !(value.get<double>() >= 0.0 && value.get<double>() < 1.0)) {
-        issues.push_back({pointer, "must be a number at least 0 and below 1, got " + io::json_text(value)});
-      } else {
-        changes.extrapolation_factor = value.get<double>();
-      }
-    } else {
-      issues.push_back({pointer, "unknown key \"" + key + "\" (known: tensile_schedule, max_iterations, "
-                                 "extrapolation_factor)"});
-    }
-  }
-  if (!issues.empty()) throw ModelError(std::move(issues));
-  return changes;
-}
 
 /// Releases an event-stream slot when the stream ends, however it ends.
 struct StreamSlot {
@@ -580,9 +529,12 @@ void HttpApi::list(const httplib::Request& req, httplib::Response& res) {
 
 void HttpApi::resume(const httplib::Request& req, httplib::Response& res) {
   const std::int64_t id = job_in_path(req);
-  RunSettings changes;
+  // The body {tensile_schedule?, max_iterations?, extrapolation_factor?}: every problem is reported
+  // with its pointer, like a model's.
+  ResumeOptions changes;
   if (!req.body.empty()) {
-    changes = resume_changes(json_body(req), io::parse_model(store_.model(id)).gaps.has_value());
+    changes = io::read_card_from_json(json_body(req), io::ReadCardForm::changes,
+                                      io::parse_model(store_.model(id)).gaps.has_value());
   }
   const JobRecord job = store_.resume(id, changes);
   log_info("job_resume_requested", {{"job", id}, {"request_id", res.get_header_value("X-Request-Id")},

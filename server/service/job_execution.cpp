@@ -43,15 +43,6 @@ class SinkObserver final : public IterationObserver {
   RestartState state_;
 };
 
-ResumeOptions resume_options(const RunSettings& settings) {
-  ResumeOptions options;
-  options.tensile_schedule = settings.tensile_schedule;
-  options.max_iterations = settings.max_iterations;
-  options.extrapolation_factor = settings.extrapolation_factor;
-  options.restart_schedule = settings.restart_schedule;
-  return options;
-}
-
 }  // namespace
 
 void note_run_started(const ClaimedJob& claimed, const std::string& worker) {
@@ -115,7 +106,7 @@ void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& 
     if (input.state) state = io::decode_stored_state(*input.state, parsed->digest);
 
     SinkObserver observer(sink, parsed->digest, shutting_down, pipeline);
-    const Solution solution = solve(model, &observer, state ? &*state : nullptr, resume_options(input.settings), ordering_cache);
+    const Solution solution = solve(model, &observer, state ? &*state : nullptr, input.settings, ordering_cache);
     // Every iteration is committed before the run's end is; a commit that failed ends the run here.
     pipeline.wait();
 

@@ -33,7 +33,7 @@ struct RunInput {
   std::string model;                               ///< the submitted document
   std::shared_ptr<const ParsedModel> parsed;       ///< `model` read already, when the service kept it
   std::optional<std::vector<std::uint8_t>> state;  ///< the latest committed restart state (CBOR)
-  RunSettings settings;                            ///< resume changes in force
+  ResumeOptions settings;                          ///< resume changes in force
   std::int64_t job = 0;                            ///< the job's id, for log lines
 };
 

@@ -16,6 +16,7 @@
 
 #include "io/json_text.hpp"
 #include "io/model_reader.hpp"
+#include "io/read_card.hpp"
 #include "service/log.hpp"
 
 namespace saasgaps::service {
@@ -99,33 +100,6 @@ constexpr const char* job_columns =
     "(SELECT row FROM iterations i WHERE i.job_id = jobs.id ORDER BY iteration DESC LIMIT 1), "
     "slurm_job_id, slurm_state";
 
-json settings_json(const RunSettings& s) {
-  json j = json::object();
-  if (s.tensile_schedule) j["tensile_schedule"] = *s.tensile_schedule;
-  if (s.max_iterations) j["max_iterations"] = *s.max_iterations;
-  if (s.extrapolation_factor) j["extrapolation_factor"] = *s.extrapolation_factor;
-  j["restart_schedule"] = s.restart_schedule;
-  return j;
-}
-
-RunSettings parse_settings(const std::string& text) {
-  // Written by settings_json; anything else is damage, read as "no changes" rather than an error
-  // on every read of the job.
-  json j;
-  try {
-    j = io::parse_document(text);
-  } catch (const ModelError&) {
-    // damage: j stays null
-  }
-  RunSettings s;
-  if (!j.is_object()) return s;
-  if (j.contains("tensile_schedule")) s.tensile_schedule = j["tensile_schedule"].get<std::vector<double>>();
-  if (j.contains("max_iterations")) s.max_iterations = j["max_iterations"].get<int>();
-  if (j.contains("extrapolation_factor")) s.extrapolation_factor = j["extrapolation_factor"].get<double>();
-  s.restart_schedule = j.value("restart_schedule", false);
-  return s;
-}
-
 JobRecord read_job(const Statement& q) {
   JobRecord j;
   j.id = q.integer(0);
@@ -141,7 +115,7 @@ JobRecord read_job(const Statement& q) {
   j.cancel_requested = q.integer(10) != 0;
   j.error = q.optional_text(11);
   j.message = q.optional_text(12);
-  j.settings = parse_settings(q.text(13));
+  j.settings = io::stored_read_card(q.text(13));
   j.last_row = q.optional_text(14);
   j.slurm_job_id = q.optional_text(15);
   j.slurm_state = q.optional_text(16);
@@ -205,32 +179,6 @@ void change_state(Connection& db, std::int64_t job, JobState state, const std::o
 }  // namespace detail
 
 using namespace detail;
-
-const char* to_string(JobState state) {
-  switch (state) {
-    case JobState::queued: return "queued";
-    case JobState::running: return "running";
-    case JobState::converged: return "converged";
-    case JobState::not_converged: return "not_converged";
-    case JobState::failed: return "failed";
-    case JobState::cancelled: return "cancelled";
-    case JobState::interrupted: return "interrupted";
-  }
-  return "failed";
-}
-
-std::optional<JobState> parse_job_state(std::string_view text) {
-  for (JobState s : {JobState::queued, JobState::running, JobState::converged, JobState::not_converged,
-                     JobState::failed, JobState::cancelled, JobState::interrupted}) {
-    if (text == to_string(s)) return s;
-  }
-  return std::nullopt;
-}
-
-bool is_finished(JobState state) {
-  return state == JobState::converged || state == JobState::not_converged || state == JobState::failed ||
-         state == JobState::cancelled;
-}
 
 std::string utc_now() { return utc_text(std::chrono::system_clock::now()); }
 
@@ -384,7 +332,7 @@ void JobStore::hand_on(std::int64_t id, int attempt, const StoreError& why) {
     auto db = pool_->lease();
     WriteTransaction tx(*db);
     const JobRecord job = require_job(*db, id);
-    if (job.state != JobState::running || job.attempts != attempt) return;
+    if (!accepts(job.state, JobAction::interrupt) || job.attempts != attempt) return;  // another run holds it
     interrupt(*db, id, what, max_interruptions_, false);
     tx.commit();
     log_error("job_interrupted", {{"job", id}, {"attempt", attempt}, {"reason", what}});
@@ -408,7 +356,7 @@ void JobStore::record_handed_on() {
   WriteTransaction tx(*db);
   for (const auto& [id, run] : pending) {
     const std::optional<JobRecord> job = find_job(*db, id);
-    if (job && job->state == JobState::running && job->attempts == run.attempt) {
+    if (job && accepts(job->state, JobAction::interrupt) && job->attempts == run.attempt) {
       interrupt(*db, id, run.what, max_interruptions_, run.counted);
     }
   }
@@ -499,19 +447,21 @@ JobStore::Submitted JobStore::insert_job(const std::string& model, const std::st
     }
   }
   const std::string now = utc_now();
+  const char* state = to_string(*find_transition(std::nullopt, JobAction::submit)->to);
   db->prepare(
         "INSERT INTO jobs (state, title, created_at, updated_at, max_iterations, idempotency_key, request_digest)"
-        " VALUES ('queued', ?, ?, ?, ?, ?, ?)")
-      .bind(1, title)
-      .bind(2, now)
+        " VALUES (?, ?, ?, ?, ?, ?, ?)")
+      .bind(1, state)
+      .bind(2, title)
       .bind(3, now)
-      .bind(4, max_iterations)
-      .bind(5, idempotency_key)
-      .bind(6, request_digest)
+      .bind(4, now)
+      .bind(5, max_iterations)
+      .bind(6, idempotency_key)
+      .bind(7, request_digest)
       .run();
   const std::int64_t id = db->last_insert_id();
   db->prepare("INSERT INTO models (job_id, document) VALUES (?, ?)").bind(1, id).bind(2, model).run();
-  add_event(*db, id, "state", io::json_text(json{{"job", id}, {"state", "queued"}, {"iteration", 0}}));
+  add_event(*db, id, "state", io::json_text(json{{"job", id}, {"state", state}, {"iteration", 0}}));
   JobRecord job = require_job(*db, id);
   tx.commit();
   return {job, false};
@@ -632,7 +582,7 @@ std::vector<JobEvent> JobStore::events(std::int64_t id, std::int64_t after_event
 
 int JobStore::queue_length() {
   auto db = pool_->lease();
-  Statement q = db->prepare("SELECT COUNT(*) FROM jobs WHERE state IN ('queued', 'interrupted')");
+  Statement q = db->prepare("SELECT COUNT(*) FROM jobs WHERE state IN (" + sql_states_accepting(JobAction::claim) + ")");
   q.step();
   return static_cast<int>(q.integer(0));
 }
@@ -650,7 +600,8 @@ std::optional<ClaimedJob> JobStore::claim(const std::string& worker, bool with_t
   try {
     auto db = pool_->lease();
     WriteTransaction tx(*db);
-    Statement next = db->prepare("SELECT id FROM jobs WHERE state IN ('queued', 'interrupted') ORDER BY id LIMIT 1");
+    Statement next = db->prepare("SELECT id FROM jobs WHERE state IN (" + sql_states_accepting(JobAction::claim) +
+                                 ") ORDER BY id LIMIT 1");
     if (!next.step()) return std::nullopt;
     ClaimedJob claimed = start_run(*db, next.integer(0), worker, with_ticket);
     tx.commit();
@@ -723,8 +674,10 @@ void JobStore::finish(std::int64_t id, JobState state, const std::optional<std::
   try {
     auto db = pool_->lease();
     WriteTransaction tx(*db);
-    attempt = require_job(*db, id).attempts;
+    const JobRecord job = require_job(*db, id);
+    attempt = job.attempts;
     if (lease && !check_lease(*db, id, *lease, std::nullopt, finish_digest)) return;  // finished before: a retry
+    const JobState outcome = *next_state(id, job.state, JobAction::finish, {.outcome = state});
     add_commit_seconds(*db, id, last_commit);
     if (result) {
       db->prepare("INSERT OR REPLACE INTO results (job_id, document) VALUES (?, ?)").bind(1, id).bind(2, *result).run();
@@ -734,7 +687,7 @@ void JobStore::finish(std::int64_t id, JobState state, const std::optional<std::
         .bind(1, lease ? std::optional<std::string>(spent_lease(lease->secret, finish_digest)) : std::nullopt)
         .bind(2, id)
         .run();
-    change_state(*db, id, state, message, error);
+    change_state(*db, id, outcome, message, error);
     tx.commit();
   } catch (const StoreError& e) {
     note_failure(e);
@@ -753,45 +706,32 @@ JobRecord JobStore::cancel(std::int64_t id) {
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   const JobRecord job = require_job(*db, id);
-  switch (job.state) {
-    case JobState::queued:
-    case JobState::interrupted:
-      change_state(*db, id, JobState::cancelled, "cancelled before it ran again");
-      break;
-    case JobState::running:
-      db->prepare("UPDATE jobs SET cancel_requested = 1, updated_at = ? WHERE id = ?").bind(1, utc_now()).bind(2, id).run();
-      break;
-    default:
-      throw JobConflict("job " + std::to_string(id) + " is " + to_string(job.state) + "; only queued, running or "
-                        "interrupted jobs can be cancelled");
+  const JobState next = *next_state(id, job.state, JobAction::request_cancel);
+  if (next == job.state) {
+    // A run holds the job: it stops at its next iteration boundary.
+    db->prepare("UPDATE jobs SET cancel_requested = 1, updated_at = ? WHERE id = ?").bind(1, utc_now()).bind(2, id).run();
+  } else {
+    change_state(*db, id, next, "cancelled before it ran again");
   }
   JobRecord updated = require_job(*db, id);
   tx.commit();
   return updated;
 }
 
-JobRecord JobStore::resume(std::int64_t id, const RunSettings& changes) {
+JobRecord JobStore::resume(std::int64_t id, const ResumeOptions& changes) {
   require_writable();
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   const JobRecord job = require_job(*db, id);
-  if (job.state == JobState::queued || job.state == JobState::running || job.state == JobState::converged) {
-    throw JobConflict("job " + std::to_string(id) + " is " + to_string(job.state) + "; only cancelled, "
-                      "not_converged, interrupted or failed jobs can be resumed");
-  }
-  RunSettings settings = job.settings;
-  if (changes.tensile_schedule) {
-    settings.tensile_schedule = changes.tensile_schedule;
-    settings.restart_schedule = true;
-  }
-  if (changes.max_iterations) settings.max_iterations = changes.max_iterations;
-  if (changes.extrapolation_factor) settings.extrapolation_factor = changes.extrapolation_factor;
+  const JobState next = *next_state(id, job.state, JobAction::resume);
+  ResumeOptions settings = job.settings;
+  settings.apply(changes);
   db->prepare("UPDATE jobs SET settings = ?, max_iterations = COALESCE(?, max_iterations), interruptions = 0 WHERE id = ?")
-      .bind(1, io::json_text(settings_json(settings)))
+      .bind(1, io::stored_read_card_text(settings))
       .bind(2, changes.max_iterations)
       .bind(3, id)
       .run();
-  change_state(*db, id, JobState::queued, "resumed from iteration " + std::to_string(job.iteration));
+  change_state(*db, id, next, "resumed from iteration " + std::to_string(job.iteration));
   JobRecord updated = require_job(*db, id);
   tx.commit();
   return updated;
@@ -803,9 +743,7 @@ void JobStore::remove(std::int64_t id) {
     auto db = pool_->lease();
     WriteTransaction tx(*db);
     const JobRecord job = require_job(*db, id);
-    if (!is_finished(job.state)) {
-      throw JobConflict("job " + std::to_string(id) + " is " + to_string(job.state) + "; cancel it before deleting");
-    }
+    next_state(id, job.state, JobAction::remove);
     db->prepare("DELETE FROM jobs WHERE id = ?").bind(1, id).run();
     tx.commit();
   }
@@ -818,9 +756,8 @@ int JobStore::remove_finished_before(const std::string& cutoff) {
   {
     auto db = pool_->lease();
     WriteTransaction tx(*db);
-    db->prepare(
-          "DELETE FROM jobs WHERE state IN ('converged', 'not_converged', 'failed', 'cancelled')"
-          " AND finished_at IS NOT NULL AND finished_at < ?")
+    db->prepare("DELETE FROM jobs WHERE state IN (" + sql_states_accepting(JobAction::remove) +
+                ") AND finished_at IS NOT NULL AND finished_at < ?")
         .bind(1, cutoff)
         .run();
     removed = db->changes();
@@ -832,10 +769,7 @@ int JobStore::remove_finished_before(const std::string& cutoff) {
 
 std::vector<std::pair<JobState, int>> JobStore::count_by_state() {
   std::vector<std::pair<JobState, int>> counts;
-  for (JobState s : {JobState::queued, JobState::running, JobState::converged, JobState::not_converged,
-                     JobState::failed, JobState::cancelled, JobState::interrupted}) {
-    counts.emplace_back(s, 0);
-  }
+  for (JobState s : all_job_states) counts.emplace_back(s, 0);
   auto db = pool_->lease();
   Statement q = db->prepare("SELECT state, COUNT(*) FROM jobs GROUP BY state");
   while (q.step()) {
@@ -860,7 +794,8 @@ int JobStore::recover_interrupted(bool keep_slurm_jobs) {
   {
     auto db = pool_->lease();
     Statement q = db->prepare(
-        "SELECT id, attempts FROM jobs WHERE state = 'running' AND NOT (? AND slurm_job_id IS NOT NULL)");
+        "SELECT id, attempts FROM jobs WHERE state IN (" + sql_states_accepting(JobAction::interrupt) +
+        ") AND NOT (? AND slurm_job_id IS NOT NULL)");
     q.bind(1, keep_slurm_jobs ? 1 : 0);
     while (q.step()) orphans.emplace_back(q.integer(0), static_cast<int>(q.integer(1)));
   }

@@ -17,26 +17,16 @@
 #include <string>
 #include <vector>
 
+#include "resume_options.hpp"
+#include "service/job_states.hpp"
 #include "service/sqlite.hpp"
 
 namespace saasgaps::service {
-
-enum class JobState { queued, running, converged, not_converged, failed, cancelled, interrupted };
-
-const char* to_string(JobState state);
-std::optional<JobState> parse_job_state(std::string_view text);
-bool is_finished(JobState state);  ///< converged, not_converged, failed, cancelled
 
 /// The job does not exist.
 class JobNotFound : public std::runtime_error {
  public:
   explicit JobNotFound(std::int64_t id) : std::runtime_error("no job " + std::to_string(id)) {}
-};
-
-/// The request does not fit the job's state (resume while running, result while running, ...).
-class JobConflict : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
 };
 
 /// The store is open read-only (it could not write at start-up, e.g. a full disk): reads work,
@@ -46,14 +36,6 @@ class StoreUnavailable : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// What a restart may change (the report's READ card), as the service keeps it: the settings in
-/// force for the job from now on, and whether a new schedule still has to start afresh.
-struct RunSettings {
-  std::optional<std::vector<double>> tensile_schedule;
-  std::optional<int> max_iterations;
-  std::optional<double> extrapolation_factor;
-  bool restart_schedule = false;  ///< a new schedule not yet used by any committed iteration
-};
 
 struct JobRecord {
   std::int64_t id = 0;
@@ -70,7 +52,9 @@ struct JobRecord {
   std::optional<std::string> error;
   std::optional<std::string> message;
   std::optional<std::string> last_row;  ///< JSON of the last history row
-  RunSettings settings;
+  /// The READ-card changes in force for the job from now on (restart_schedule: a new schedule not
+  /// yet used by any committed iteration).
+  ResumeOptions settings;
   std::optional<std::string> slurm_job_id;  ///< the Slurm job running it (executor slurm)
   std::optional<std::string> slurm_state;   ///< that Slurm job's state as squeue last showed it
 };
@@ -217,7 +201,7 @@ class JobStore {
   JobRecord cancel(std::int64_t id);
   /// Queues a cancelled, not_converged, interrupted or failed job to continue from its last saved
   /// iteration with the given changes. JobConflict when queued, running or converged.
-  JobRecord resume(std::int64_t id, const RunSettings& changes);
+  JobRecord resume(std::int64_t id, const ResumeOptions& changes);
   /// Deletes a finished job and all its rows, and gives the freed pages back to the file system.
   /// JobConflict when not finished.
   void remove(std::int64_t id);
@@ -311,10 +295,6 @@ class DatabaseLock {
  private:
   int fd_ = -1;
 };
-
-/// Run settings as the store keeps them (JSON text), for sending them to a remote worker.
-std::string settings_to_text(const RunSettings& settings);
-RunSettings settings_from_text(const std::string& text);
 
 /// Current UTC time, ISO 8601 with milliseconds.
 std::string utc_now();

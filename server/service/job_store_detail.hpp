@@ -94,8 +94,6 @@ class JobStore::Pool {
 
 namespace detail {
 
-nlohmann::json settings_json(const RunSettings& s);
-RunSettings parse_settings(const std::string& text);
 JobRecord require_job(Connection& db, std::int64_t id);
 /// Sets a job's state (and optional message / error) and records the state event.
 void change_state(Connection& db, std::int64_t job, JobState state, const std::optional<std::string>& message = {},

@@ -37,13 +37,14 @@ void load_run_input(Connection& db, ClaimedJob& claimed) {
   if (state.step()) claimed.state = state.blob(0);
 }
 
-/// A running job cancelled without its run's say (its Slurm job ended or was scancelled): the lease
-/// is revoked, so the run can write nothing more.
-void cancel_revoked(Connection& db, const JobRecord& job, const std::string& why) {
+/// A running job cancelled without its run's say (its Slurm job ended or was scancelled, or the
+/// server died after acknowledging its cancel): the lease is revoked, so the run can write nothing
+/// more. The caller asked the table (job_states.hpp).
+void cancel_revoked(Connection& db, const JobRecord& job, JobState cancelled, const std::string& why) {
   db.prepare("UPDATE jobs SET lease_owner = NULL, lease_secret = NULL, lease_ticket = NULL, cancel_requested = 0 WHERE id = ?")
       .bind(1, job.id)
       .run();
-  change_state(db, job.id, JobState::cancelled, "cancelled after iteration " + std::to_string(job.iteration) + "; " + why);
+  change_state(db, job.id, cancelled, "cancelled after iteration " + std::to_string(job.iteration) + "; " + why);
 }
 
 }  // namespace
@@ -51,6 +52,7 @@ void cancel_revoked(Connection& db, const JobRecord& job, const std::string& why
 namespace detail {
 
 ClaimedJob start_run(Connection& db, std::int64_t id, const std::string& worker, bool with_ticket) {
+  const JobState running = *next_state(id, require_job(db, id).state, JobAction::claim);
   const std::string now = utc_now();
   const std::string secret = new_lease_secret();
   // A run handed to Slurm holds a ticket, not yet a lease: only the worker sbatch started can
@@ -66,7 +68,7 @@ ClaimedJob start_run(Connection& db, std::int64_t id, const std::string& worker,
       .bind(5, with_ticket ? std::optional<std::string>(secret) : std::nullopt)
       .bind(6, id)
       .run();
-  change_state(db, id, JobState::running);
+  change_state(db, id, running);
   ClaimedJob claimed;
   claimed.job = require_job(db, id);
   (with_ticket ? claimed.ticket : claimed.lease) = {claimed.job.attempts, secret};
@@ -114,10 +116,10 @@ bool check_lease(Connection& db, std::int64_t id, const Lease& lease, std::optio
                         "); this run must stop");
   }
   if (!iteration) {
-    if (state == JobState::running) return true;
+    if (accepts(state, JobAction::finish)) return true;
     throw LeaseConflict(job + " is " + to_string(state) + "; attempt " + std::to_string(attempts) + " cannot finish it");
   }
-  if (state != JobState::running) {
+  if (!accepts(state, JobAction::iteration)) {
     throw LeaseConflict(job + " is " + to_string(state) + "; attempt " + std::to_string(attempts) +
                         " cannot record iteration " + std::to_string(*iteration));
   }
@@ -139,25 +141,30 @@ void interrupt(Connection& db, std::int64_t id, const std::string& what, int max
       .bind(2, id)
       .run();
   const JobRecord job = require_job(db, id);
-  if (job.cancel_requested) {
-    // The cancel was acknowledged (202) and committed: honour it rather than resume the job. Its
-    // restart state stays, so it can still be resumed by hand.
-    cancel_revoked(db, job, what);
-  } else if (counted && job.interruptions > max_interruptions) {
-    change_state(db, id, JobState::failed, std::nullopt,
-                 what + "; interrupted " + std::to_string(job.interruptions) +
-                     " times, it is not resumed again automatically (resume it by hand to try once more)");
-  } else {
-    change_state(db, id, JobState::interrupted, what + "; resumes from iteration " + std::to_string(job.iteration));
+  const JobState next = *next_state(id, job.state, JobAction::interrupt,
+                                    {.cancel_requested = job.cancel_requested,
+                                     .counted = counted,
+                                     .interruptions = job.interruptions,
+                                     .max_interruptions = max_interruptions});
+  switch (next) {
+    case JobState::cancelled:
+      // The cancel was acknowledged (202) and committed: honour it rather than resume the job. Its
+      // restart state stays, so it can still be resumed by hand.
+      cancel_revoked(db, job, next, what);
+      break;
+    case JobState::failed:
+      change_state(db, id, next, std::nullopt,
+                   what + "; interrupted " + std::to_string(job.interruptions) +
+                       " times, it is not resumed again automatically (resume it by hand to try once more)");
+      break;
+    default:
+      change_state(db, id, next, what + "; resumes from iteration " + std::to_string(job.iteration));
   }
 }
 
 }  // namespace detail
 
 // Remote workers and the Slurm executor.
-
-std::string settings_to_text(const RunSettings& settings) { return settings_json(settings).dump(); }
-RunSettings settings_from_text(const std::string& text) { return parse_settings(text); }
 
 Lease JobStore::redeem_ticket(std::int64_t id, const Lease& ticket, const std::string& worker) {
   require_writable();
@@ -247,7 +254,7 @@ void JobStore::slurm_run_ended(std::int64_t id, int attempt, const std::string& 
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   const JobRecord job = require_job(*db, id);
-  if (job.state != JobState::running || job.attempts != attempt || !job.slurm_job_id) return;
+  if (!accepts(job.state, JobAction::interrupt) || job.attempts != attempt || !job.slurm_job_id) return;
   db->prepare("UPDATE jobs SET slurm_state = ? WHERE id = ?").bind(1, slurm_state).bind(2, id).run();
   const std::string what = "Slurm job " + *job.slurm_job_id + " ended (" + slurm_state + ") before its worker finished";
   interrupt(*db, id, what, max_interruptions_);  // a requested cancel ends cancelled
@@ -259,7 +266,7 @@ void JobStore::interrupt_run(std::int64_t id, int attempt, const std::string& wh
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   const JobRecord job = require_job(*db, id);
-  if (job.state != JobState::running || job.attempts != attempt) return;
+  if (!accepts(job.state, JobAction::interrupt) || job.attempts != attempt) return;  // another run holds it
   interrupt(*db, id, what, max_interruptions_);
   tx.commit();
 }
@@ -269,9 +276,9 @@ void JobStore::slurm_run_cancelled(std::int64_t id, int attempt, const std::stri
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   const JobRecord job = require_job(*db, id);
-  if (job.state != JobState::running || job.attempts != attempt) return;
+  if (!accepts(job.state, JobAction::revoke) || job.attempts != attempt) return;  // another run holds it
   db->prepare("UPDATE jobs SET slurm_state = 'CANCELLED' WHERE id = ?").bind(1, id).run();
-  cancel_revoked(*db, job, why);
+  cancel_revoked(*db, job, *next_state(id, job.state, JobAction::revoke), why);
   tx.commit();
 }
 

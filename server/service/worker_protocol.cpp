@@ -7,6 +7,7 @@
 
 #include "io/json_limits.hpp"
 
+#include "io/read_card.hpp"
 #include "io/state_codec.hpp"
 
 namespace saasgaps::service::worker_protocol {
@@ -87,7 +88,7 @@ std::string encode_work(const ClaimedJob& claimed) {
             {"attempt", claimed.lease.attempt},
             {"model", claimed.model},
             {"state", claimed.state ? json::binary(*claimed.state) : json(nullptr)},
-            {"settings", settings_to_text(claimed.job.settings)}};
+            {"settings", io::stored_read_card_text(claimed.job.settings)}};
   const std::vector<std::uint8_t> cbor = json::to_cbor(j);
   return {cbor.begin(), cbor.end()};
 }
@@ -99,7 +100,7 @@ Work decode_work(const std::string& body) {
   work.attempt = field<int>(j, "attempt");
   work.input.model = field<std::string>(j, "model");
   if (!j.at("state").is_null()) work.input.state = bytes(j, "state");
-  work.input.settings = settings_from_text(field<std::string>(j, "settings"));
+  work.input.settings = io::stored_read_card(field<std::string>(j, "settings"));
   work.input.job = work.job;
   return work;
 }
