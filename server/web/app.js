@@ -170,7 +170,9 @@ async function showJob(id) {
     addWatchHeader(row);
     const tr = document.createElement("tr");
     tr.dataset.iteration = row.iteration;
-    for (const [text, digits] of [[row.iteration, 0], [row.tensile_modulus, 4], [row.closed_gaps, 0],
+    // A stepped model's row says where on the load path it is: "7 (2/3)" is iteration 7, step 2, increment 3.
+    const iteration = row.step ? `${row.iteration} (${row.step}/${row.increment})` : row.iteration;
+    for (const [text, digits] of [[iteration, 0], [row.tensile_modulus, 4], [row.closed_gaps, 0],
                                   [row.iteration === 1 ? "-" : row.nonconverged_gaps, 0], [row.average_closure, 1],
                                   [row.max_closure, 1], [row.yielded_elements, 0], [row.nonconverged_plastic, 0]]) {
       cell(tr, typeof text === "number" && digits > 0 ? number(text, digits) : String(text));
