@@ -41,9 +41,7 @@ class Recorder : public IterationObserver {
 
 Model exact_ring_fit() {
   Model m = testing::quarter_ring_fit(AnalysisType::plane_stress, 3, 8);
-  m.gaps->method = GapMethod::exact;
-  m.gaps->initial_modulus = 100.0;
-  m.gaps->tensile_schedule = {20.0, 5.0, 1.0};
+  testing::use_exact_contact(m);
   return m;
 }
 
