@@ -68,12 +68,12 @@ struct Evaluation {
 /// components), the solid laws (temperatures), K and f, the contact method built on them, and the
 /// factorization. A model without steps has one, built on the model itself.
 struct IncrementSystem {
-  IncrementSystem(const Model& model, const GapSettings* gaps, const ContactMethodFactory& make_contact)
-      : model(model),
-        dofs(model),
-        materials(model),
-        system(model, dofs),
-        contact(make_contact({model, gaps, dofs, system.pattern()})),
+  IncrementSystem(const Model& solved, const GapSettings* gaps, const ContactMethodFactory& make_contact)
+      : model(solved),
+        dofs(solved),
+        materials(solved),
+        system(solved, dofs),
+        contact(make_contact({solved, gaps, dofs, system.pattern()})),
         u_free(static_cast<std::size_t>(dofs.size()), 0.0) {}
 
   const Model& model;  // the model itself, or the increment's (LoadSchedule::increment_model)
@@ -83,6 +83,10 @@ struct IncrementSystem {
   std::unique_ptr<ContactMethod> contact;
   std::future<std::unique_ptr<SparseCholesky>> analysed;  // the symbolic analysis under way
   std::unique_ptr<SparseCholesky> cholesky;               // symbolic analysis once, at the first solve
+  /// Stepped runs: the pattern `cholesky` analysed, owned apart from `system` (the factorization
+  /// refers to it), so that the analysis passes on to the next increment when its numbering is the
+  /// same. Null without steps: the analysis is of system.pattern().
+  std::unique_ptr<CscPattern> analysed_pattern;
   MaterialState assembled_materials;
   bool assembled_solids = false;
   std::vector<double> u_free;
@@ -151,13 +155,32 @@ class GapContactAnalysis {
   /// Builds the system of the state's increment: the model itself without steps.
   void begin_increment(const RestartState& state) {
     const GapSettings* gaps = gap_settings_ ? &*gap_settings_ : nullptr;
-    now_.reset();  // its contact method refers to increment_model_
-    if (state.position) {
-      increment_model_ = schedule_.increment_model(*state.position);
-      now_ = std::make_unique<IncrementSystem>(increment_model_, gaps, make_contact_);
-    } else {
+    if (!state.position) {
       now_ = std::make_unique<IncrementSystem>(model_, gaps, make_contact_);
+      return;
     }
+    // The last increment's system is only read below (its numbering and analysis), while the model
+    // it was built on takes the new increment's values.
+    increment_model_ = schedule_.increment_model(*state.position);
+    auto next = std::make_unique<IncrementSystem>(increment_model_, gaps, make_contact_);
+    if (now_ && now_->cholesky && same_numbering(now_->dofs, next->dofs)) {
+      // Same prescribed components, so the same pattern: its symbolic analysis holds.
+      next->analysed_pattern = std::move(now_->analysed_pattern);
+      next->cholesky = std::move(now_->cholesky);
+    } else {
+      next->analysed_pattern = std::make_unique<CscPattern>(next->system.pattern());
+    }
+    now_ = std::move(next);
+  }
+
+  bool same_numbering(const DofMap& a, const DofMap& b) const {
+    if (a.size() != b.size()) return false;
+    for (std::size_t n = 0; n < model_.nodes.size(); ++n) {
+      for (int dir = 0; dir < 2; ++dir) {
+        if (a.equation(static_cast<int>(n), dir) != b.equation(static_cast<int>(n), dir)) return false;
+      }
+    }
+    return true;
   }
 
   /// After a converged increment: the next one, carrying the materials', contact and gap history of
@@ -212,7 +235,8 @@ class GapContactAnalysis {
     IncrementSystem& now = *now_;
     if (!now.cholesky) {
       now.analysed = std::async(std::launch::async, [this, &now] {
-        return std::make_unique<SparseCholesky>(now.system.pattern(), now.dofs.node_of_equation(), ordering_cache_);
+        const CscPattern& pattern = now.analysed_pattern ? *now.analysed_pattern : now.system.pattern();
+        return std::make_unique<SparseCholesky>(pattern, now.dofs.node_of_equation(), ordering_cache_);
       });
     }
     if (!now.assembled_solids || state.materials != now.assembled_materials) {
