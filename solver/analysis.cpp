@@ -9,6 +9,7 @@
 
 #include "dof_map.hpp"
 #include "element_data.hpp"
+#include "load_schedule.hpp"
 #include "errors.hpp"
 #include "material_state.hpp"
 #include "sparse_cholesky.hpp"
@@ -21,6 +22,15 @@ const char* to_string(RunStatus status) {
     case RunStatus::converged: return "converged";
     case RunStatus::not_converged: return "not_converged";
     case RunStatus::stopped: return "stopped";
+  }
+  return "?";
+}
+
+const char* to_string(StepStatus status) {
+  switch (status) {
+    case StepStatus::converged: return "converged";
+    case StepStatus::not_converged: return "not_converged";
+    case StepStatus::failed: return "failed";
   }
   return "?";
 }
@@ -54,6 +64,34 @@ struct Evaluation {
   bool converged = false;  ///< the materials' verdict AND the contact method's
 };
 
+/// Everything one increment's loads and constraints determine: the numbering (prescribed
+/// components), the solid laws (temperatures), K and f, the contact method built on them, and the
+/// factorization. A model without steps has one, built on the model itself.
+struct IncrementSystem {
+  IncrementSystem(const Model& solved, const GapSettings* gaps, const ContactMethodFactory& make_contact)
+      : model(solved),
+        dofs(solved),
+        materials(solved),
+        system(solved, dofs),
+        contact(make_contact({solved, gaps, dofs, system.pattern()})),
+        u_free(static_cast<std::size_t>(dofs.size()), 0.0) {}
+
+  const Model& model;  // the model itself, or the increment's (LoadSchedule::increment_model)
+  DofMap dofs;
+  SolidMaterials materials;
+  StiffnessSystem system;
+  std::unique_ptr<ContactMethod> contact;
+  std::future<std::unique_ptr<SparseCholesky>> analysed;  // the symbolic analysis under way
+  std::unique_ptr<SparseCholesky> cholesky;               // symbolic analysis once, at the first solve
+  /// Stepped runs: the pattern `cholesky` analysed, owned apart from `system` (the factorization
+  /// refers to it), so that the analysis passes on to the next increment when its numbering is the
+  /// same. Null without steps: the analysis is of system.pattern().
+  std::unique_ptr<CscPattern> analysed_pattern;
+  MaterialState assembled_materials;
+  bool assembled_solids = false;
+  std::vector<double> u_free;
+};
+
 class GapContactAnalysis {
  public:
   GapContactAnalysis(const Model& model, const ResumeOptions& options, const OrderingCache* cache,
@@ -62,22 +100,24 @@ class GapContactAnalysis {
         ordering_cache_(cache),
         max_iterations_(options.max_iterations.value_or(model.solver.max_iterations)),
         gap_settings_(effective_gap_settings(model, options)),
-        dofs_(model),
-        materials_(model),
-        system_(model, dofs_),
-        contact_(make_contact({model, gap_settings_ ? &*gap_settings_ : nullptr, dofs_, system_.pattern()})),
-        u_free_(static_cast<std::size_t>(dofs_.size()), 0.0) {
+        make_contact_(make_contact),
+        schedule_(model) {
     schedule_changed_ = options.tensile_schedule.has_value() && options.restart_schedule;
   }
 
+  /// Per increment (a model without steps has one): the bounded contact and material iteration
+  /// until both verdicts hold; then the next increment starts from this one's state.
   Solution run(IterationObserver* observer, const RestartState* resume) {
     RestartState state = resume ? resumed(*resume) : fresh();
+    begin_increment(state);
     Evaluation& eval = eval_;
     if (state.iteration > 0) evaluate(state, eval);
 
     for (;;) {
-      if (state.iteration > 0 && eval.converged) return finish(state, eval, RunStatus::converged);
-      if (state.iteration >= max_iterations_) return finish(state, eval, RunStatus::not_converged);
+      if (increment_iterations(state) > 0 && eval.converged) {
+        if (!next_increment(state)) return finish(state, eval, RunStatus::converged);
+      }
+      if (increment_iterations(state) >= max_iterations_) return finish(state, eval, RunStatus::not_converged);
       if (state.iteration > 0 && observer != nullptr && observer->stop_requested()) {
         return finish(state, eval, RunStatus::stopped);
       }
@@ -87,7 +127,7 @@ class GapContactAnalysis {
       // iteration's values; the evaluation keeps the old ones to overwrite. No per-element allocation
       // from one iteration to the next.
       if (state.iteration == 0) {
-        state.materials = materials_.initial();
+        state.materials = now_->materials.initial();
       } else {
         std::swap(state.materials, eval.materials.next);
       }
@@ -95,10 +135,11 @@ class GapContactAnalysis {
       assemble(state);
       solve_linear_system(state);
       state.iteration += 1;
+      if (state.position) state.position->iterations += 1;
       store_displacements(state.displacement);
 
       evaluate(state, eval);
-      contact_->check_solved(state, eval.contact);
+      now_->contact->check_solved(state, eval.contact);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
       state.history.push_back(record(state, eval, seconds));
       if (observer != nullptr) observer->on_iteration(state.history.back(), state);
@@ -106,8 +147,56 @@ class GapContactAnalysis {
   }
 
  private:
+  /// Iterations of the current increment (a model without steps: of the run).
+  static int increment_iterations(const RestartState& state) {
+    return state.position ? state.position->iterations : state.iteration;
+  }
+
+  /// Builds the system of the state's increment: the model itself without steps.
+  void begin_increment(const RestartState& state) {
+    const GapSettings* gaps = gap_settings_ ? &*gap_settings_ : nullptr;
+    if (!state.position) {
+      now_ = std::make_unique<IncrementSystem>(model_, gaps, make_contact_);
+      return;
+    }
+    // The last increment's system is only read below (its numbering and analysis), while the model
+    // it was built on takes the new increment's values.
+    increment_model_ = schedule_.increment_model(*state.position);
+    auto next = std::make_unique<IncrementSystem>(increment_model_, gaps, make_contact_);
+    if (now_ && now_->cholesky && same_numbering(now_->dofs, next->dofs)) {
+      // Same prescribed components, so the same pattern: its symbolic analysis holds.
+      next->analysed_pattern = std::move(now_->analysed_pattern);
+      next->cholesky = std::move(now_->cholesky);
+    } else {
+      next->analysed_pattern = std::make_unique<CscPattern>(next->system.pattern());
+    }
+    now_ = std::move(next);
+  }
+
+  bool same_numbering(const DofMap& a, const DofMap& b) const {
+    if (a.size() != b.size()) return false;
+    for (std::size_t n = 0; n < model_.nodes.size(); ++n) {
+      for (int dir = 0; dir < 2; ++dir) {
+        if (a.equation(static_cast<int>(n), dir) != b.equation(static_cast<int>(n), dir)) return false;
+      }
+    }
+    return true;
+  }
+
+  /// After a converged increment: the next one, carrying the materials', contact and gap history of
+  /// this one in the state. False after the last.
+  bool next_increment(RestartState& state) {
+    if (!state.position || !schedule_.advance(*state.position, state.displacement)) return false;
+    begin_increment(state);
+    return true;
+  }
+
   RestartState fresh() const {
     RestartState s;
+    if (schedule_.stepped()) {
+      s.version = RestartState::stepped_version;
+      s.position = schedule_.first();
+    }
     s.node_count = model_.nodes.size();
     s.element_count = model_.elements.size();
     s.gap_count = model_.gap_count();
@@ -115,9 +204,14 @@ class GapContactAnalysis {
   }
 
   RestartState resumed(const RestartState& saved) {
-    if (saved.version != RestartState::current_version) {
+    const int expected = schedule_.stepped() ? RestartState::stepped_version : RestartState::plain_version;
+    if (saved.version != expected) {
       throw SolverError("restart state version " + std::to_string(saved.version) + " is not supported (expected " +
-                        std::to_string(RestartState::current_version) + ")");
+                        std::to_string(expected) + (schedule_.stepped() ? " for a model with steps)" : ")"));
+    }
+    if (saved.position.has_value() != schedule_.stepped() ||
+        (saved.position && !schedule_.holds(*saved.position, model_.nodes.size()))) {
+      throw SolverError("the restart state does not belong to this model (its load steps differ)");
     }
     if (saved.node_count != model_.nodes.size() || saved.element_count != model_.elements.size() ||
         saved.gap_count != model_.gap_count() || saved.displacement.size() != 2 * model_.nodes.size() ||
@@ -138,36 +232,39 @@ class GapContactAnalysis {
   /// part. The symbolic analysis needs only the pattern: the first time, it runs on a second core
   /// while this one assembles.
   void assemble(RestartState& state) {
-    if (!cholesky_) {
-      analysed_ = std::async(std::launch::async, [this] {
-        return std::make_unique<SparseCholesky>(system_.pattern(), dofs_.node_of_equation(), ordering_cache_);
+    IncrementSystem& now = *now_;
+    if (!now.cholesky) {
+      now.analysed = std::async(std::launch::async, [this, &now] {
+        const CscPattern& pattern = now.analysed_pattern ? *now.analysed_pattern : now.system.pattern();
+        return std::make_unique<SparseCholesky>(pattern, now.dofs.node_of_equation(), ordering_cache_);
       });
     }
-    if (!assembled_solids_ || state.materials != assembled_materials_) {
+    if (!now.assembled_solids || state.materials != now.assembled_materials) {
       SolidMaterials::LawMemo memo;
-      system_.assemble_solids([&](std::size_t e) { return materials_.law(e, state.materials, memo); });
-      assembled_materials_ = state.materials;
-      assembled_solids_ = true;
+      now.system.assemble_solids([&](std::size_t e) { return now.materials.law(e, state.materials, memo); });
+      now.assembled_materials = state.materials;
+      now.assembled_solids = true;
     }
-    contact_->begin_iteration(state, system_);
-    if (analysed_.valid()) cholesky_ = analysed_.get();
+    now.contact->begin_iteration(state, now.system);
+    if (now.analysed.valid()) now.cholesky = now.analysed.get();
   }
 
-  /// K u = f into u_free_, contact enforced by the method.
+  /// K u = f into the increment's u_free, contact enforced by the method.
   void solve_linear_system(RestartState& state) {
+    IncrementSystem& now = *now_;
     try {
-      contact_->solve(*cholesky_, system_.values(), system_.rhs(), state, u_free_);
+      now.contact->solve(*now.cholesky, now.system.values(), now.system.rhs(), state, now.u_free);
     } catch (const NotPositiveDefinite& e) {
       throw singular_model(e);
     }
-    for (double u : u_free_) {
+    for (double u : now.u_free) {
       if (!std::isfinite(u)) throw SolverError("the solution has non-finite displacements");
     }
   }
 
   SingularModelError singular_model(const NotPositiveDefinite& e) const {
     std::vector<NodeDof> where;
-    for (Index column : e.columns()) where.push_back(dofs_.node_dof(column));
+    for (Index column : e.columns()) where.push_back(now_->dofs.node_dof(column));
     std::ostringstream text;
     text << e.what() << ": the model is not restrained (a free body or an unconnected node) at ";
     const std::size_t shown = std::min<std::size_t>(where.size(), 12);
@@ -179,11 +276,12 @@ class GapContactAnalysis {
   }
 
   void store_displacements(std::vector<double>& u) const {
+    const IncrementSystem& now = *now_;
     u.resize(2 * model_.nodes.size());  // every entry is written below
     for (std::size_t n = 0; n < model_.nodes.size(); ++n) {
       for (int dir = 0; dir < 2; ++dir) {
-        const Index eq = dofs_.equation(static_cast<int>(n), dir);
-        u[2 * n + dir] = eq >= 0 ? u_free_[eq] : dofs_.prescribed(static_cast<int>(n), dir);
+        const Index eq = now.dofs.equation(static_cast<int>(n), dir);
+        u[2 * n + dir] = eq >= 0 ? now.u_free[eq] : now.dofs.prescribed(static_cast<int>(n), dir);
       }
     }
   }
@@ -191,22 +289,27 @@ class GapContactAnalysis {
   /// Recovers stresses of iteration K and the contact method's measurements, and judges convergence.
   /// The same code runs after a solve and after a resume, which is what makes a restart exact.
   void evaluate(RestartState& state, Evaluation& v) const {
+    const IncrementSystem& now = *now_;
     v.solids.resize(model_.elements.size());
     SolidMaterials::LawMemo memo;
     for (std::size_t e = 0; e < model_.elements.size(); ++e) {
       const Element& el = model_.elements[e];
-      const ElementData data = solid_element_data(model_, e, materials_.law(e, state.materials, memo));
+      const ElementData data = solid_element_data(now.model, e, now.materials.law(e, state.materials, memo));
       v.solids[e] = element_state(data, element_displacements(state.displacement, el.nodes, el.node_count));
     }
-    materials_.update(state.materials, v.solids, model_.solver.plastic_tolerance, v.materials);
+    now.materials.update(state.materials, v.solids, model_.solver.plastic_tolerance, v.materials);
     const bool materials_converged = v.materials.nonconverged_count == 0 && v.materials.bimodulus_changes == 0;
-    contact_->evaluate(state, v.contact);
+    now.contact->evaluate(state, v.contact);
     v.converged = materials_converged && v.contact.converged();
   }
 
   IterationRecord record(const RestartState& state, const Evaluation& v, double seconds) const {
     IterationRecord row;
     row.iteration = state.iteration;
+    if (state.position) {
+      row.step = state.position->step + 1;
+      row.increment = state.position->increment;
+    }
     row.attempt = state.attempt;
     row.seconds = seconds;
     row.yielded_elements = v.materials.yielded_count;
@@ -219,7 +322,7 @@ class GapContactAnalysis {
     row.max_closure = c.max_closure;
     row.gap_closures.reserve(c.gaps.size());
     for (const GapResult& g : c.gaps) row.gap_closures.push_back(g.closure);
-    contact_->add_columns(state, row);
+    now_->contact->add_columns(state, row);
     for (int e : model_.output.watch_elements) {
       const Vec4& s = v.solids[e].stress;
       row.watch_elements.push_back({model_.elements[e].id, s[rr], s[zz], s[rz], s[th], von_mises(s)});
@@ -250,20 +353,40 @@ class GapContactAnalysis {
       }
       s.gaps = v.contact.gaps;
     }
+    s.steps = step_results(state, status);
     s.message = message(state, v, status);
     return s;
+  }
+
+  /// Steps before the state's are done; the state's is done only when the run converged.
+  std::vector<StepResult> step_results(const RestartState& state, RunStatus status) const {
+    std::vector<StepResult> steps;
+    if (!state.position) return steps;
+    for (std::size_t k = 0; k < model_.steps.size(); ++k) {
+      const int current = state.position->step;
+      const bool done = static_cast<int>(k) < current || (static_cast<int>(k) == current && status == RunStatus::converged);
+      steps.push_back({model_.steps[k].name, model_.steps[k].increments,
+                       done ? StepStatus::converged : StepStatus::not_converged});
+    }
+    return steps;
   }
 
   std::string message(const RestartState& state, const Evaluation& v, RunStatus status) const {
     std::ostringstream text;
     switch (status) {
       case RunStatus::converged:
-        text << "converged in " << state.iteration << " iterations" << contact_->converged_note(state, v.contact);
+        text << "converged in " << state.iteration << " iterations" << now_->contact->converged_note(state, v.contact);
         return text.str();
       case RunStatus::stopped: text << "stopped on request after iteration " << state.iteration; break;
       case RunStatus::not_converged:
-        text << "not converged after " << state.iteration << " iterations (max_iterations " << max_iterations_ << ")";
+        text << "not converged after " << state.iteration << " iterations (max_iterations " << max_iterations_
+             << (state.position ? " per increment" : "") << ")";
         break;
+    }
+    if (state.position) {
+      const Step& step = model_.steps[static_cast<std::size_t>(state.position->step)];
+      text << " in step " << state.position->step + 1 << " \"" << step.name << "\", increment "
+           << state.position->increment << " of " << step.increments;
     }
     if (state.iteration == 0) return text.str();
     // Say which gaps and elements still fail, and which test.
@@ -297,16 +420,11 @@ class GapContactAnalysis {
   int max_iterations_;
   std::optional<GapSettings> gap_settings_;  // the model's, with the restart's changes
   bool schedule_changed_ = false;
-  DofMap dofs_;
-  SolidMaterials materials_;
-  StiffnessSystem system_;
-  std::unique_ptr<ContactMethod> contact_;
-  std::future<std::unique_ptr<SparseCholesky>> analysed_;  // the symbolic analysis under way
-  std::unique_ptr<SparseCholesky> cholesky_;  // symbolic analysis once, at the first solve
-  Evaluation eval_;                           // per-element buffers, reused every iteration
-  MaterialState assembled_materials_;
-  bool assembled_solids_ = false;
-  std::vector<double> u_free_;
+  ContactMethodFactory make_contact_;
+  LoadSchedule schedule_;
+  Model increment_model_;                 // stepped models: the current increment's
+  std::unique_ptr<IncrementSystem> now_;  // the current increment's system
+  Evaluation eval_;                       // per-element buffers, reused every iteration
 };
 
 }  // namespace

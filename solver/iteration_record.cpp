@@ -21,7 +21,7 @@ bool same_rows(const std::vector<T>& a, const std::vector<T>& b) {
 }  // namespace
 
 bool IterationRecord::same_numbers(const IterationRecord& o) const {
-  return iteration == o.iteration && tensile_modulus == o.tensile_modulus && closed_gaps == o.closed_gaps &&
+  return iteration == o.iteration && step == o.step && increment == o.increment && tensile_modulus == o.tensile_modulus && closed_gaps == o.closed_gaps &&
          nonconverged_gaps == o.nonconverged_gaps && average_closure == o.average_closure &&
          max_closure == o.max_closure && yielded_elements == o.yielded_elements &&
          nonconverged_plastic == o.nonconverged_plastic && bimodulus_changes == o.bimodulus_changes &&

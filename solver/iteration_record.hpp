@@ -22,7 +22,11 @@ struct WatchedGap {
 };
 
 struct IterationRecord {
-  int iteration = 0;
+  int iteration = 0;           ///< counts over the whole run, across steps and increments
+  /// Stepped models only: the step (1-based index into Model::steps) and the increment (1-based
+  /// within the step) the iteration belongs to; 0 for a model without steps (no such columns).
+  int step = 0;
+  int increment = 0;
   double tensile_modulus = 0.0;
   int closed_gaps = 0;         ///< closure > 100 %
   int nonconverged_gaps = 0;   ///< GAP-CONV? = NO

@@ -136,6 +136,15 @@ struct SolverOptions {
   double plastic_tolerance = 0.01;  ///< relative stress change that marks N-L/CONV? = NO
 };
 
+/// One load step (model.steps). Its loads and constraints are the values at its end, reached
+/// linearly over its increments from the end of the previous step (load_schedule.hpp).
+struct Step {
+  std::string name;
+  int increments = 1;                   ///< >= 1
+  std::optional<Loads> loads;           ///< nullopt: the previous step's (step 1: the model's loads)
+  std::vector<Constraint> constraints;  ///< components prescribed at the step's end (others keep theirs)
+};
+
 /// Indices tracked in every iteration's history row.
 struct OutputOptions {
   std::vector<int> watch_elements;  ///< indices into Model::elements
@@ -164,6 +173,7 @@ struct Model {
   std::optional<GapSettings> gaps;
   std::vector<Constraint> constraints;
   Loads loads;
+  std::vector<Step> steps;  ///< empty: one step of one increment with `loads` (no step output at all)
   SolverOptions solver;
   OutputOptions output;
 

@@ -3,17 +3,23 @@
 /// iteration, a complete snapshot of everything the next iteration depends on. Resuming from it
 /// with nothing changed reproduces the uninterrupted run to the last digit.
 
+#include <optional>
 #include <vector>
 
 #include "exact_contact.hpp"
 #include "gap_closure.hpp"
 #include "iteration_record.hpp"
+#include "load_schedule.hpp"
 #include "material_state.hpp"
 
 namespace saasgaps {
 
+/// Version 1: a model without steps (written exactly as before steps existed). Version 2: a stepped
+/// model's state, which also records its position on the load path.
 struct RestartState {
-  static constexpr int current_version = 1;
+  static constexpr int plain_version = 1;
+  static constexpr int stepped_version = 2;
+  static constexpr int current_version = plain_version;  ///< of a state without position
   int version = current_version;
   int iteration = 0;               ///< K: iterations finished (0: nothing solved yet)
   int attempt = 1;                 ///< run that produced iteration K (1, then +1 per resume)
@@ -22,6 +28,8 @@ struct RestartState {
   std::vector<double> displacement;  ///< (u_r, u_z) per node of iteration K, prescribed ones included
   ContactState contact;            ///< exact mode: pair forces and active set of iteration K (empty in classic)
   std::vector<IterationRecord> history;  ///< rows 1..K
+  /// Stepped models only (version 2): the increment of iteration K (K counts over the whole run).
+  std::optional<StepPosition> position;
 
   /// Model dimensions the state belongs to, checked on resume.
   std::size_t node_count = 0;

@@ -52,6 +52,19 @@ struct GapResult {
   GapFailure failure = GapFailure::none;
 };
 
+/// One load step of a stepped model: converged when its last increment converged; not_converged
+/// when the run ended (max_iterations, or a stop on request) before it did or before it began.
+/// (failed is the service's word for a run that threw; a finished run never says it.)
+enum class StepStatus { converged, not_converged, failed };
+
+const char* to_string(StepStatus status);
+
+struct StepResult {
+  std::string name;
+  int increments = 1;
+  StepStatus status = StepStatus::not_converged;
+};
+
 struct Solution {
   RunStatus status = RunStatus::not_converged;
   int iterations = 0;
@@ -60,6 +73,7 @@ struct Solution {
   std::vector<NodeResult> nodes;
   std::vector<ElementResult> elements;
   std::vector<GapResult> gaps;
+  std::vector<StepResult> steps;  ///< stepped models only, one per Model::steps entry; else empty
 };
 
 }  // namespace saasgaps

@@ -30,6 +30,7 @@ std::string live_line(std::int64_t job, const JobView& view) {
   std::string line = "job " + std::to_string(job) + "  " + view.state + "  iteration " + std::to_string(view.iteration);
   if (view.row) {
     const IterationRecord& r = *view.row;
+    if (r.step > 0) line += "  step " + std::to_string(r.step) + " increment " + std::to_string(r.increment);
     char text[200];
     if (r.active_set_iterations > 0) {
       std::snprintf(text, sizeof text, "  closed %d  pairs %d  complement. %.1e  max clos %.1f %%  %.2f s", r.closed_gaps,

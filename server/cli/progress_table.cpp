@@ -20,10 +20,11 @@ std::string number(const char* format, double value) {
   return text;
 }
 
-// Column widths. The compact line is at most 5+11+8+9+12+12+8+13+7+12+5+9 = 111 characters with
-// every column a run can show (exact mode drops the tensile modulus and non-converged gaps), which
-// leaves room for numbers wider than their header.
+// Column widths. The compact line is at most 5+9+11+8+9+12+12+8+13+7+12+5+9 = 120 characters with
+// every column a run can show (exact mode drops the tensile modulus and non-converged gaps; only
+// stepped models show step/increment), which leaves room for numbers wider than their header.
 constexpr int iteration_width = 5;
+constexpr int step_width = 9;
 constexpr int modulus_width = 11;
 constexpr int count_width = 8;
 constexpr int nonconverged_width = 9;
@@ -48,6 +49,7 @@ bool ProgressTable::classic_columns(const IterationRecord& row) const { return w
 
 std::string ProgressTable::header_text(const IterationRecord& row) const {
   std::string line = column("iter", iteration_width);
+  if (row.step > 0) line += column("step/inc", step_width);
   if (classic_columns(row)) line += column("E tension", modulus_width);
   line += column("closed", count_width);
   if (classic_columns(row)) line += column("non-conv", nonconverged_width);
@@ -72,6 +74,7 @@ std::string ProgressTable::row_text(const IterationRecord& row) const {
   // The report prints "-" for the non-converged count of iteration 1: there is nothing to compare with.
   const std::string nonconverged = row.iteration == 1 ? "-" : std::to_string(row.nonconverged_gaps);
   std::string line = column(std::to_string(row.iteration) + (row.extrapolated ? "x" : ""), iteration_width);
+  if (row.step > 0) line += column(std::to_string(row.step) + "/" + std::to_string(row.increment), step_width);
   if (classic_columns(row)) line += column(number("%.5g", row.tensile_modulus), modulus_width);
   line += column(std::to_string(row.closed_gaps), count_width);
   if (classic_columns(row)) line += column(nonconverged, nonconverged_width);

@@ -1,6 +1,7 @@
 #pragma once
 /// The iteration table on stderr, with the columns of the report's Tables I-V. Compact by default,
-/// at most 120 characters wide whatever the model: iteration, tensile modulus, closed gaps,
+/// at most 120 characters wide whatever the model: iteration, step/increment (stepped models only),
+/// tensile modulus, closed gaps,
 /// non-converged gaps, average and maximum closure, yielded and non-converged plastic elements,
 /// wall time; in exact contact mode the tensile modulus and non-converged gaps (classic-mode
 /// notions) give way to the pairs in contact, the complementarity residual and the active sets

@@ -8,6 +8,8 @@ void write_history_row(JsonWriter& out, const IterationRecord& r) {
   // Exact contact mode only (classic rows have no pairs): active sets, complementarity, pairs in
   // contact, each in its alphabetical place like every member.
   const bool exact = r.active_set_iterations > 0;
+  // Stepped models only (a model without steps writes its rows exactly as before).
+  const bool stepped = r.step > 0;
   out.begin_object();
   if (exact) out.field("active_set_iterations", r.active_set_iterations);
   out.field("attempt", r.attempt)
@@ -15,14 +17,15 @@ void write_history_row(JsonWriter& out, const IterationRecord& r) {
       .field("bimodulus_changes", r.bimodulus_changes)
       .field("closed_gaps", r.closed_gaps);
   if (exact) out.field("complementarity", r.complementarity).field("contact_pairs", r.contact_pairs);
-  out.field("extrapolated", r.extrapolated)
-      .field("gap_closures", r.gap_closures)
-      .field("iteration", r.iteration)
+  out.field("extrapolated", r.extrapolated).field("gap_closures", r.gap_closures);
+  if (stepped) out.field("increment", r.increment);
+  out.field("iteration", r.iteration)
       .field("max_closure", r.max_closure)
       .field("nonconverged_gaps", r.nonconverged_gaps)
       .field("nonconverged_plastic", r.nonconverged_plastic)
-      .field("seconds", r.seconds)
-      .field("tensile_modulus", r.tensile_modulus);
+      .field("seconds", r.seconds);
+  if (stepped) out.field("step", r.step);
+  out.field("tensile_modulus", r.tensile_modulus);
   out.key("watch").begin_object().key("elements").begin_array();
   for (const WatchedElement& e : r.watch_elements) {
     out.begin_object()
@@ -90,6 +93,10 @@ json history_row_json(const IterationRecord& r) {
     row["complementarity"] = r.complementarity;
     row["active_set_iterations"] = r.active_set_iterations;
   }
+  if (r.step > 0) {
+    row["step"] = r.step;
+    row["increment"] = r.increment;
+  }
   return row;
 }
 
@@ -111,6 +118,8 @@ IterationRecord history_row_from_json(const json& j) {
   r.contact_pairs = j.value("contact_pairs", 0);
   r.complementarity = j.value("complementarity", 0.0);
   r.active_set_iterations = j.value("active_set_iterations", 0);
+  r.step = j.value("step", 0);
+  r.increment = j.value("increment", 0);
   for (const json& e : j.at("watch").at("elements")) {
     r.watch_elements.push_back({e.at("id").get<int>(), e.at("sigma_r").get<double>(), e.at("sigma_z").get<double>(),
                                 e.at("tau_rz").get<double>(), e.at("sigma_theta").get<double>(),

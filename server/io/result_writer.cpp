@@ -2,6 +2,7 @@
 
 #include "element_data.hpp"
 #include "io/history_json.hpp"
+#include "load_schedule.hpp"
 #include "io/result_annotations.hpp"
 
 namespace saasgaps::io {
@@ -28,7 +29,7 @@ void write_node_ids(JsonWriter& out, const Model& model, const std::array<int, 4
 
 void write_node(JsonWriter& out, const Model& model, const NodeResult& n, std::size_t index) {
   out.begin_object()
-      .field("T", model.loads.node_temperature[index])
+      .field("T", final_loads(model).node_temperature[index])
       .field("id", n.id)
       .field("r", model.nodes[index].r)
       .field("u_r", n.u_r)
@@ -95,8 +96,19 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s) {
   for (std::size_t n = 0; n < s.nodes.size(); ++n) write_node(out, model, s.nodes[n], n);
   out.end_array();
   out.field("reference_temperature", model.reference_temperature)
-      .field("status", s.status == RunStatus::converged ? "converged" : "not_converged")
-      .field("title", model.title);
+      .field("status", s.status == RunStatus::converged ? "converged" : "not_converged");
+  if (!s.steps.empty()) {  // stepped models only
+    out.key("steps").begin_array();
+    for (const StepResult& step : s.steps) {
+      out.begin_object()
+          .field("increments", step.increments)
+          .field("name", step.name)
+          .field("status", to_string(step.status))
+          .end_object();
+    }
+    out.end_array();
+  }
+  out.field("title", model.title);
   write_units(out, model.units);  // "units" sorts last
   out.end_object();
 }

@@ -12,4 +12,8 @@ namespace saasgaps::io {
 /// 10^9 only lets a run that never converges hold a worker forever.
 inline constexpr int max_iterations_limit = 100000;
 
+/// The most increments one load step may have (`steps[k].increments`): each increment is at least
+/// one full linear solve, so this is already far beyond a run that finishes in reasonable time.
+inline constexpr int max_increments_limit = 100000;
+
 }  // namespace saasgaps::io

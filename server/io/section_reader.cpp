@@ -10,12 +10,12 @@ namespace {
 
 constexpr std::array<std::string_view, section_count> section_keys{
     "schema_version", "title", "description", "units", "analysis", "nodes", "materials",
-    "elements", "gaps", "constraints", "loads", "solver", "output"};
+    "elements", "gaps", "constraints", "loads", "solver", "output", "steps"};
 
 constexpr std::array<std::string_view, 7> required_root_keys{"schema_version", "title", "analysis", "nodes",
                                                             "materials", "elements", "constraints"};
-constexpr std::array<std::string_view, 6> optional_root_keys{"description", "units", "gaps", "loads", "solver",
-                                                            "output"};
+constexpr std::array<std::string_view, 7> optional_root_keys{"description", "units", "gaps", "loads", "solver",
+                                                            "output", "steps"};
 
 }  // namespace
 
@@ -37,6 +37,8 @@ std::span<const Section> dependencies(Section s) {
   static constexpr std::array<Section, 1> on_nodes{Section::nodes};
   static constexpr std::array<Section, 3> on_loads{Section::analysis, Section::nodes, Section::elements};
   static constexpr std::array<Section, 2> on_all_elements{Section::elements, Section::gaps};
+  static constexpr std::array<Section, 4> on_loads_and_constraints{Section::analysis, Section::nodes,
+                                                                   Section::elements, Section::constraints};
   switch (s) {
     case Section::nodes: return on_analysis;
     case Section::elements: return on_nodes_and_materials;
@@ -44,6 +46,7 @@ std::span<const Section> dependencies(Section s) {
     case Section::constraints: return on_nodes;
     case Section::loads: return on_loads;
     case Section::output: return on_all_elements;
+    case Section::steps: return on_loads_and_constraints;
     default: return {};
   }
 }
@@ -96,6 +99,7 @@ void SectionReader::read_section(Section s, const json* value) {
     case Section::loads: read_loads(root); break;
     case Section::solver: read_solver(root); break;
     case Section::output: read_output(root); break;
+    case Section::steps: read_steps(root); break;
     case Section::nodes:
     case Section::elements:
     case Section::constraints: read_item_section(s, root); break;
@@ -345,7 +349,13 @@ void SectionReader::read_gaps(const Obj& root) {
 
 /// One of a non-empty array of {node, r?, z?} with r and/or z; no component of a node twice.
 void SectionReader::read_constraint(const json& item, const std::string& pointer) {
-  if (!object(item, pointer, {"node"}, {"r", "z"})) return;
+  if (auto c = read_constraint_item(item, pointer, prescribed_)) model_.constraints.push_back(*c);
+}
+
+/// {node, r?, z?} with r and/or z; a component of a node not already in `seen` (which it joins).
+std::optional<Constraint> SectionReader::read_constraint_item(const json& item, const std::string& pointer,
+                                                              PrescribedAt& seen) {
+  if (!object(item, pointer, {"node"}, {"r", "z"})) return std::nullopt;
   const Obj o{&item, pointer};
   const json* node_id = o.find("node");
   const Entry* node = node_id == nullptr ? nullptr : resolve_node(*node_id, Where(o.pointer, "node"));
@@ -356,18 +366,18 @@ void SectionReader::read_constraint(const json& item, const std::string& pointer
     report(pointer, "the constraint of node " + (node_id ? quote(*node_id) : std::string("?")) +
                         " prescribes neither r nor z; give r and/or z (the prescribed displacement)");
   }
-  if (node == nullptr) return;
+  if (node == nullptr) return std::nullopt;
   c.node = node->index;
   for (const char component : {'r', 'z'}) {
     const std::string_view key = component == 'r' ? "r" : "z";
     if (o.find(key) == nullptr) continue;
-    const auto [first, fresh] = prescribed_.emplace(std::pair{node->index, component}, o.at(key));
+    const auto [first, fresh] = seen.emplace(std::pair{node->index, component}, o.at(key));
     if (!fresh) {
       report(o.at(key), std::string(key) + " of node " + quote(*node_id) + " is already prescribed at " +
                             first->second + "; prescribe each component once");
     }
   }
-  model_.constraints.push_back(c);
+  return c;
 }
 
 void SectionReader::read_loads(const Obj& root) {
@@ -377,15 +387,20 @@ void SectionReader::read_loads(const Obj& root) {
   if (v == nullptr || !object(*v, root.at("loads"), {}, {"nodal_forces", "pressures", "temperatures", "body_force"})) {
     return;
   }
-  const Obj loads{v, root.at("loads")};
-  read_nodal_forces(loads);
-  read_pressures(loads);
-  read_temperatures(loads);
-  read_body_force(loads);
+  read_loads_object(Obj{v, root.at("loads")}, model_.loads);
+}
+
+/// The members of a loads object (checked by the caller) into `into`, whose node temperatures are
+/// already the default.
+void SectionReader::read_loads_object(const Obj& loads, Loads& into) {
+  read_nodal_forces(loads, into);
+  read_pressures(loads, into);
+  read_temperatures(loads, into);
+  read_body_force(loads, into);
 }
 
 /// {node, fr?, fz?}; forces on one node add up.
-void SectionReader::read_nodal_forces(const Obj& loads) {
+void SectionReader::read_nodal_forces(const Obj& loads, Loads& into) {
   const json* list = array_field(loads, "nodal_forces", 0);
   if (list == nullptr) return;
   for (std::size_t i = 0; i < list->size(); ++i) {
@@ -399,12 +414,12 @@ void SectionReader::read_nodal_forces(const Obj& loads) {
     f.f_z = number_field(o, "fz").value_or(0.0);
     if (node == nullptr) continue;
     f.node = node->index;
-    model_.loads.nodal_forces.push_back(f);
+    into.nodal_forces.push_back(f);
   }
 }
 
 /// {nodes: [a, b], normal?, shear?} on an edge of exactly one solid element.
-void SectionReader::read_pressures(const Obj& loads) {
+void SectionReader::read_pressures(const Obj& loads, Loads& into) {
   const json* list = array_field(loads, "pressures", 0);
   if (list == nullptr) return;
   // Solid elements owning each edge, keyed by the ordered pair of node indices. Gap elements never
@@ -448,17 +463,17 @@ void SectionReader::read_pressures(const Obj& loads) {
     p.element = found->second.front();
     p.node_a = edge->nodes[0];
     p.node_b = edge->nodes[1];
-    model_.loads.pressures.push_back(p);
+    into.pressures.push_back(p);
   }
 }
 
 /// {default?, nodal?: [{node, T}]}; one temperature per node.
-void SectionReader::read_temperatures(const Obj& loads) {
+void SectionReader::read_temperatures(const Obj& loads, Loads& into) {
   const json* v = loads.find("temperatures");
   if (v == nullptr || !object(*v, loads.at("temperatures"), {}, {"default", "nodal"})) return;
   const Obj temperatures{v, loads.at("temperatures")};
   if (const auto fallback = number_field(temperatures, "default")) {
-    model_.loads.node_temperature.assign(model_.nodes.size(), *fallback);
+    into.node_temperature.assign(model_.nodes.size(), *fallback);
   }
   const json* list = array_field(temperatures, "nodal", 0);
   if (list == nullptr) return;
@@ -481,16 +496,16 @@ void SectionReader::read_temperatures(const Obj& loads) {
       continue;
     }
     first = i;
-    if (T) model_.loads.node_temperature[static_cast<std::size_t>(node->index)] = *T;
+    if (T) into.node_temperature[static_cast<std::size_t>(node->index)] = *T;
   }
 }
 
 /// {accel_r?, accel_z?, omega?}; omega != 0 only in axisymmetric analyses.
-void SectionReader::read_body_force(const Obj& loads) {
+void SectionReader::read_body_force(const Obj& loads, Loads& into) {
   const json* v = loads.find("body_force");
   if (v == nullptr || !object(*v, loads.at("body_force"), {}, {"accel_r", "accel_z", "omega"})) return;
   const Obj o{v, loads.at("body_force")};
-  BodyForce& b = model_.loads.body_force;
+  BodyForce& b = into.body_force;
   b.accel_r = number_field(o, "accel_r").value_or(0.0);
   b.accel_z = number_field(o, "accel_z").value_or(0.0);
   b.omega = number_field(o, "omega").value_or(0.0);

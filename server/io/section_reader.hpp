@@ -5,7 +5,8 @@
 /// it each item of nodes, elements and constraints as a small tree of its own and every other
 /// section whole; both give the same issues in the same order.
 ///
-/// Files: section_reader.cpp (the sections, in document order), section_checks.cpp (generic
+/// Files: section_reader.cpp (the sections, in document order), section_steps.cpp (load steps),
+/// section_checks.cpp (generic
 /// value checks and temperature tables), section_references.cpp (ids, references and element
 /// shapes), section_items.cpp (the typed fast path of valid items), value_quote.cpp (how values
 /// are quoted in messages).
@@ -170,9 +171,9 @@ inline int as_index(std::size_t i) { return static_cast<int>(i); }
 /// The top-level members of a model document, in the order the reader judges them.
 enum class Section {
   schema_version, title, description, units, analysis, nodes, materials, elements, gaps, constraints, loads,
-  solver, output
+  solver, output, steps
 };
-constexpr std::size_t section_count = 13;
+constexpr std::size_t section_count = 14;
 
 /// The member name of a section.
 std::string_view section_key(Section s);
@@ -339,14 +340,21 @@ class SectionReader {
   void read_element(const json& item, const std::string& pointer);
   void read_gaps(const Obj& root);
   void read_constraint(const json& item, const std::string& pointer);
+  /// (node index, component) -> pointer of the value that prescribed it.
+  using PrescribedAt = std::map<std::pair<int, char>, std::string>;
+  std::optional<Constraint> read_constraint_item(const json& item, const std::string& pointer, PrescribedAt& seen);
   void read_loads(const Obj& root);
-  void read_nodal_forces(const Obj& loads);
-  void read_pressures(const Obj& loads);
-  void read_temperatures(const Obj& loads);
-  void read_body_force(const Obj& loads);
+  void read_loads_object(const Obj& loads, Loads& into);
+  void read_nodal_forces(const Obj& loads, Loads& into);
+  void read_pressures(const Obj& loads, Loads& into);
+  void read_temperatures(const Obj& loads, Loads& into);
+  void read_body_force(const Obj& loads, Loads& into);
   void read_solver(const Obj& root);
   void read_output(const Obj& root);
   std::vector<int> read_watch_list(const Obj& output, std::string_view key, bool gaps);
+  // section_steps.cpp
+  void read_steps(const Obj& root);
+  std::optional<Step> read_step(const json& item, const std::string& pointer);
 
   struct RankedIssue {
     int rank = 0;  ///< -1 repeated keys, 0 the root object, 1 + Section: found reading that section
@@ -370,7 +378,7 @@ class SectionReader {
   // State of a streamed array between begin_items and end_items.
   const Range* radius_ = &any_number;  ///< nodes: the range of r
   std::size_t item_ = 0;               ///< index of the item being read
-  std::map<std::pair<int, char>, std::string> prescribed_;  ///< constraints: (node index, component) -> pointer
+  PrescribedAt prescribed_;  ///< constraints: (node index, component) -> pointer
 };
 
 }  // namespace saasgaps::io

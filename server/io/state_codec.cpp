@@ -95,6 +95,14 @@ json state_to_json(const RestartState& s, const std::string& digest) {
   if (!s.contact.empty()) {
     document["contact"] = {{"force", s.contact.force}, {"active", s.contact.active}};
   }
+  // Version 2 (stepped models) only: the increment of iteration K.
+  if (s.position) {
+    const StepPosition& p = *s.position;
+    document["position"] = {{"step", p.step},
+                            {"increment", p.increment},
+                            {"iterations", p.iterations},
+                            {"step_start", p.step_start}};
+  }
   return document;
 }
 
@@ -105,9 +113,10 @@ RestartState state_from_json(const json& j, const std::string& expected_digest) 
     }
     RestartState s;
     s.version = j.at("version").get<int>();
-    if (s.version != RestartState::current_version) {
+    if (s.version != RestartState::plain_version && s.version != RestartState::stepped_version) {
       throw SolverError("restart state version " + std::to_string(s.version) + " is not supported (expected " +
-                        std::to_string(RestartState::current_version) + ")");
+                        std::to_string(RestartState::plain_version) + " or " +
+                        std::to_string(RestartState::stepped_version) + ")");
     }
     if (!expected_digest.empty() && j.at("model_digest").get<std::string>() != expected_digest) {
       throw SolverError("the restart state was saved for a different model (digest " +
@@ -139,6 +148,13 @@ RestartState state_from_json(const json& j, const std::string& expected_digest) 
       if (s.contact.force.size() != s.contact.active.size()) {
         throw SolverError("malformed restart state: contact force and active set differ in length");
       }
+    }
+    if (s.version == RestartState::stepped_version) {
+      const json& p = j.at("position");
+      s.position = StepPosition{p.at("step").get<int>(), p.at("increment").get<int>(), p.at("iterations").get<int>(),
+                                p.at("step_start").get<std::vector<double>>()};
+    } else if (j.contains("position")) {
+      throw SolverError("malformed restart state: version 1 has no load-step position");
     }
     return s;
   } catch (const json::exception& e) {

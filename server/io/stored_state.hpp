@@ -10,6 +10,8 @@
 /// than JSON-to-CBOR alone. Doubles round-trip exactly, so a resume is still exact.
 ///
 /// Version 1, still read: plain CBOR of state_to_json (a CBOR map, first byte 0xa0-0xbf, never "S").
+/// (These are versions of the storage encoding; the state inside has its own version, state_codec.hpp:
+/// 2 for a stepped model, whose position on the load path rides along as a plain array.)
 
 #include <cstdint>
 #include <span>

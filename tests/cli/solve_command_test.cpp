@@ -151,3 +151,69 @@ TEST_F(SolveCommand, ExactModeGapThatCannotBePairedIsABadModel) {
   EXPECT_NE(r.err.find("/gaps/elements/2"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("gap element 83 cannot be paired"), std::string::npos) << r.err;
 }
+
+namespace {
+
+/// Report problem 3 case 2 (a plastic beam on a foundation, classic gaps) with a load path: loaded in
+/// 3 increments, unloaded in 2, reloaded in 2. Its increments take several iterations each.
+nlohmann::json stepped_beam(const nlohmann::json& model) {
+  nlohmann::json m = model;
+  m["steps"] = nlohmann::json::array({{{"name", "load"}, {"increments", 3}},
+                                      {{"name", "unload"}, {"increments", 2}, {"loads", nlohmann::json::object()}},
+                                      {{"name", "reload"}, {"increments", 2}, {"loads", model["loads"]}}});
+  return m;
+}
+
+}  // namespace
+
+TEST_F(SolveCommand, SteppedRunShowsStepsAndResumesMidStepToTheLastDigit) {
+  std::ofstream(path("stepped.json")) << stepped_beam(json_of(example("report-problem3-case2.json"))).dump();
+  const Outcome full = saasgaps("solve " + path("stepped.json") + " -o " + path("full.json"));
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  EXPECT_NE(full.err.find("step/inc"), std::string::npos) << full.err;
+  std::istringstream table(full.err);
+  for (std::string line; std::getline(table, line);) {
+    if (line.rfind("converged", 0) != 0) EXPECT_LE(line.size(), 120U) << line;
+  }
+  const nlohmann::json result = json_of(path("full.json"));
+  ASSERT_EQ(result["steps"].size(), 3U);
+  for (const auto& step : result["steps"]) EXPECT_EQ(step["status"], "converged") << step;
+  EXPECT_EQ(result["steps"][0], (nlohmann::json{{"name", "load"}, {"increments", 3}, {"status", "converged"}}));
+  // Rows carry step and increment; iterations count over the whole run.
+  const nlohmann::json& history = result["history"];
+  ASSERT_GE(history.size(), 7U);
+  for (std::size_t k = 0; k < history.size(); ++k) {
+    EXPECT_EQ(history[k]["iteration"], k + 1);
+    EXPECT_TRUE(history[k].contains("step") && history[k].contains("increment")) << history[k];
+  }
+  EXPECT_EQ(history.back()["step"], 3);
+  EXPECT_EQ(history.back()["increment"], 2);
+
+  // Stopped inside step 2 (after the first iteration that belongs to it, inside its first increment),
+  // resumed from the file.
+  int k = 0;
+  while (history[static_cast<std::size_t>(k)]["step"] != 2) ++k;
+  const int stop_after = k + 1;
+  const Outcome stopped = saasgaps("solve " + path("stepped.json") + " -q --stop-after " + std::to_string(stop_after) +
+                                   " --state-out " + path("state.json") + " -o " + path("stopped.json"));
+  EXPECT_EQ(stopped.exit_code, 3) << stopped.err;
+  const nlohmann::json state = json_of(path("state.json"));
+  EXPECT_EQ(state["version"], 2);
+  EXPECT_EQ(state["position"]["step"], 1);  // 0-based in the state
+  EXPECT_EQ(state["position"]["increment"], 1);
+  EXPECT_EQ(state["position"]["iterations"], 1);
+  ASSERT_EQ(history[static_cast<std::size_t>(k + 1)]["step"], 2);  // the increment had more to do
+  ASSERT_EQ(history[static_cast<std::size_t>(k + 1)]["increment"], 1);
+  const nlohmann::json partial = json_of(path("stopped.json"));
+  EXPECT_EQ(partial["steps"][0]["status"], "converged");
+  EXPECT_EQ(partial["steps"][1]["status"], "not_converged");
+  const Outcome resumed = saasgaps("solve " + path("stepped.json") + " -q --resume " + path("state.json") + " -o " +
+                                   path("resumed.json"));
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(numbers(json_of(path("resumed.json"))), numbers(result));
+
+  // A model without steps refuses the stepped state, and the reverse.
+  const Outcome foreign = saasgaps("solve " + example("report-problem3-case2.json") + " -q --resume " +
+                                   path("state.json"));
+  EXPECT_NE(foreign.exit_code, 0);
+}

@@ -124,7 +124,7 @@ std::string in_contract_order(const json& document) {
   if (!document.is_object()) return document.dump();
   std::string text = "{";
   for (const char* key : {"schema_version", "title", "description", "units", "analysis", "nodes", "materials",
-                          "elements", "gaps", "constraints", "loads", "solver", "output"}) {
+                          "elements", "gaps", "constraints", "loads", "solver", "output", "steps"}) {
     if (!document.contains(key)) continue;
     text += (text.size() > 1 ? ",\"" : "\"") + std::string(key) + "\":" + document[key].dump();
   }
@@ -1120,6 +1120,88 @@ TEST(ModelReaderRules, RepeatedKeysAreFoundInEverySection) {
   EXPECT_TRUE(has_issue(issues, "/extra", {"unknown key"})) << listing(issues);
   EXPECT_TRUE(has_issue(issues, "/solver", {"\"solver\"", "more than once"})) << listing(issues);
   EXPECT_EQ(issues.size(), 4U) << listing(issues);
+
+
+// ------------------------------------------------------------------------------------------------
+// Load steps (the spec's third round): read into Model::steps, bad input at its pointer
+
+json with_steps() {
+  json m = valid_model();
+  m["steps"] = json::parse(R"([
+    {"name": "fit"},
+    {"name": "push", "increments": 20,
+     "loads": {"nodal_forces": [{"node": 6, "fz": -50}], "pressures": [{"nodes": [5, 4], "normal": 7}]},
+     "constraints": [{"node": 5, "z": -0.002}, {"node": 7, "r": 0.001}]}
+  ])");
+  return m;
+}
+
+TEST(ModelReader, StepsAreReadWithTheirLoadsAndConstraints) {
+  const Model m = read_model(with_steps());
+  ASSERT_EQ(m.steps.size(), 2u);
+  EXPECT_EQ(m.steps[0].name, "fit");
+  EXPECT_EQ(m.steps[0].increments, 1);
+  EXPECT_FALSE(m.steps[0].loads.has_value());  // keeps the top-level loads
+  EXPECT_TRUE(m.steps[0].constraints.empty());
+  const Step& push = m.steps[1];
+  EXPECT_EQ(push.increments, 20);
+  ASSERT_TRUE(push.loads.has_value());
+  ASSERT_EQ(push.loads->nodal_forces.size(), 1u);
+  EXPECT_EQ(push.loads->nodal_forces[0].node, 5);
+  EXPECT_EQ(push.loads->nodal_forces[0].f_z, -50.0);
+  ASSERT_EQ(push.loads->pressures.size(), 1u);
+  EXPECT_EQ(push.loads->pressures[0].element, 0);
+  // What a step's loads omit is absent: no temperature load means the stress-free temperature.
+  EXPECT_EQ(push.loads->node_temperature, std::vector<double>(11, 70.0));
+  ASSERT_EQ(push.constraints.size(), 2u);
+  EXPECT_EQ(push.constraints[0].node, 4);
+  EXPECT_EQ(push.constraints[0].u_z, -0.002);
+  EXPECT_FALSE(push.constraints[0].u_r.has_value());
+  EXPECT_EQ(push.constraints[1].u_r, 0.001);
+  // A model without steps has none.
+  EXPECT_TRUE(read_model(valid_model()).steps.empty());
+}
+
+TEST(ModelReaderRules, StepsAreANonEmptyArrayOfNamedSteps) {
+  EXPECT_TRUE(rejects(with(valid_model(), "/steps", json::array()), "/steps", {"steps"}));
+  EXPECT_TRUE(rejects(without(with_steps(), "/steps/0/name"), "/steps/0", {"name"}));
+  EXPECT_TRUE(rejects(with(with_steps(), "/steps/0/name", ""), "/steps/0/name", {"non-empty"}));
+  EXPECT_TRUE(rejects(with(with_steps(), "/steps/1/name", "fit"), "/steps/1/name", {"\"fit\"", "/steps/0"}));
+  EXPECT_TRUE(rejects(with(with_steps(), "/steps/0/repeat", 2), "/steps/0/repeat", {"repeat"}));
+}
+
+TEST(ModelReaderRules, StepIncrementsAreAtLeastOne) {
+  EXPECT_TRUE(rejects(with(with_steps(), "/steps/1/increments", 0), "/steps/1/increments", {"0"}));
+  EXPECT_TRUE(rejects(with(with_steps(), "/steps/1/increments", 2.5), "/steps/1/increments", {"2.5"}));
+  EXPECT_TRUE(rejects(with(with_steps(), "/steps/1/increments", 100001), "/steps/1/increments", {"100001"}));
+}
+
+TEST(ModelReaderRules, StepConstraintsNameDefinedNodesEachComponentOnce) {
+  EXPECT_TRUE(rejects(with(with_steps(), "/steps/1/constraints/0/node", 99), "/steps/1/constraints/0/node", {"99"}));
+  EXPECT_TRUE(rejects(with(with_steps(), "/steps/1/constraints/1", json{{"node", 5}, {"z", 0.0}}),
+                      "/steps/1/constraints/1/z", {"/steps/1/constraints/0/z"}));
+  EXPECT_TRUE(rejects(with(with_steps(), "/steps/1/constraints/0", json{{"node", 5}}), "/steps/1/constraints/0",
+                      {"neither r nor z"}));
+  // A component a step prescribes may be one the top-level constraints also prescribe.
+  EXPECT_NO_THROW(read_model(with(with_steps(), "/steps/1/constraints/1", json{{"node", 8}, {"z", 0.001}})));
+}
+
+TEST(ModelReaderRules, StepLoadsFollowTheRulesOfTheTopLevelLoads) {
+  EXPECT_TRUE(rejects(with(with_steps(), "/steps/1/loads/nodal_forces/0/node", 99),
+                      "/steps/1/loads/nodal_forces/0/node", {"99"}));
+  EXPECT_TRUE(rejects(with(with_steps(), "/steps/1/loads/pressures/0/nodes", json{1, 3}),
+                      "/steps/1/loads/pressures/0/nodes", {"no solid element has the edge"}));
+  EXPECT_TRUE(rejects(with(with_steps(), "/steps/1/loads/body_force", json{{"omega", 3}}),
+                      "/steps/1/loads/body_force/omega", {"axisymmetric"}));
+  EXPECT_TRUE(rejects(with(with_steps(), "/steps/1/loads/wind", 1), "/steps/1/loads/wind", {"wind"}));
+}
+
+TEST(ModelReader, StepsChangeTheModelDigestAndAModelWithoutThemKeepsIts) {
+  const json plain = valid_model();
+  EXPECT_NE(model_digest(with_steps()), model_digest(plain));
+  std::string digest;
+  (void)parse_model(with_steps().dump(), &digest);
+  EXPECT_EQ(digest, model_digest(with_steps()));
 }
 
 }  // namespace

@@ -188,6 +188,11 @@ def schema_expressible_cases(base):
         ("plastic tolerance 0", edits(m, ("/solver/plastic_tolerance", 0)), "/solver/plastic_tolerance"),
         ("watched id as a string", edits(m, ("/output/watch_elements/0", "1")), "/output/watch_elements/0"),
         ("watched twice", edits(m, ("/output/watch_elements/1", 1)), "/output/watch_elements/1"),
+        ("no steps", edits(m, ("/steps", [])), "/steps"),
+        ("step without a name", edits(m, ("/steps", [{"increments": 2}])), "/steps/0"),
+        ("step increments 0", edits(m, ("/steps", [{"name": "a", "increments": 0}])), "/steps/0/increments"),
+        ("step loads with an unknown member", edits(m, ("/steps", [{"name": "a", "loads": {"wind": 1}}])),
+         "/steps/0/loads/wind"),
     ]
     return [(name, json.dumps(doc, indent=1), pointer) for name, doc, pointer in cases]
 
@@ -223,6 +228,12 @@ def semantic_cases(base):
         ("id written 1.0", edits(m, ("/nodes/0/id", 1.0)), "/nodes/0/id"),
         ("schema_version written 1.0", edits(m, ("/schema_version", 1.0)), "/schema_version"),
         ("max_iterations written 3.0", edits(m, ("/solver/max_iterations", 3.0)), "/solver/max_iterations"),
+        ("step constraint node not defined",
+         edits(m, ("/steps", [{"name": "a", "constraints": [{"node": 99, "z": 0.1}]}])), "/steps/0/constraints/0/node"),
+        ("step names repeated", edits(m, ("/steps", [{"name": "a"}, {"name": "a"}])), "/steps/1/name"),
+        ("step load on an undefined node",
+         edits(m, ("/steps", [{"name": "a", "loads": {"nodal_forces": [{"node": 99, "fz": 1.0}]}}])),
+         "/steps/0/loads/nodal_forces/0/node"),
     ]
     texts = [(name, json.dumps(doc, indent=1), pointer) for name, doc, pointer in cases]
     # Text-level cases: Python's json reads 1e400 as inf and keeps the last of repeated keys, so

@@ -28,6 +28,8 @@ inline void expect_identical(const Solution& a, const Solution& b) {
     EXPECT_EQ(a.elements[e].yielded, b.elements[e].yielded);
     EXPECT_EQ(a.elements[e].plastic_converged, b.elements[e].plastic_converged);
   }
+  ASSERT_EQ(a.steps.size(), b.steps.size());
+  for (std::size_t k = 0; k < a.steps.size(); ++k) EXPECT_EQ(a.steps[k].status, b.steps[k].status) << "step " << k + 1;
   ASSERT_EQ(a.gaps.size(), b.gaps.size());
   for (std::size_t g = 0; g < a.gaps.size(); ++g) {
     EXPECT_EQ(a.gaps[g].eps_m, b.gaps[g].eps_m) << "gap " << a.gaps[g].id;

@@ -77,4 +77,10 @@ void assemble_with_gaps_at_floor(const Model& model, StiffnessSystem& system) {
   system.assemble_gaps([&](std::size_t g) { return gaps.law(g, floor, model.analysis); });
 }
 
+void use_exact_contact(Model& model) {
+  model.gaps->method = GapMethod::exact;
+  model.gaps->initial_modulus = 100.0;
+  model.gaps->tensile_schedule = {20.0, 5.0, 1.0};
+}
+
 }  // namespace saasgaps::testing

@@ -31,6 +31,10 @@ std::function<Vec2(double, double)> quarter_annulus(double r0, double r1);
 /// outer ring's bore a2 + e delta angle / 90), so that contact covers only part of the interface.
 Model quarter_ring_fit(AnalysisType analysis, int radial, int hoop, double eccentricity = 0.0);
 
+/// Switches a ring fit's gaps to the exact method with the schedule the exact-contact tests use
+/// (E0 100, then 20, 5, 1: the floor modulus 1).
+void use_exact_contact(Model& model);
+
 /// The axisymmetric version: a slice `height` high of both rings, radial quads per ring, one gap
 /// element (M along r), every node held in z (the rings in plane strain along z).
 Model axisymmetric_ring_fit(int radial, double height);

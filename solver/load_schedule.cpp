@@ -1,0 +1,140 @@
+#include "load_schedule.hpp"
+
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+namespace saasgaps {
+
+namespace {
+
+constexpr double free_component = std::numeric_limits<double>::quiet_NaN();
+
+/// (1 - lambda) a + lambda b, and b itself at lambda = 1 (a step's last increment solves its own
+/// values to the last digit).
+double between(double a, double b, double lambda) { return lambda == 1.0 ? b : (1.0 - lambda) * a + lambda * b; }
+
+void prescribe(std::vector<double>& values, const std::vector<Constraint>& constraints) {
+  for (const Constraint& c : constraints) {
+    if (c.u_r) values[2 * static_cast<std::size_t>(c.node)] = *c.u_r;
+    if (c.u_z) values[2 * static_cast<std::size_t>(c.node) + 1] = *c.u_z;
+  }
+}
+
+}  // namespace
+
+const Loads& final_loads(const Model& model) {
+  const Loads* last = &model.loads;
+  for (const Step& step : model.steps) {
+    if (step.loads) last = &*step.loads;
+  }
+  return *last;
+}
+
+LoadSchedule::LoadSchedule(const Model& model) : model_(model) {
+  std::vector<double> prescribed(2 * model.nodes.size(), free_component);
+  prescribe(prescribed, model.constraints);
+  const Loads* previous = &model.loads;
+  for (const Step& step : model.steps) {
+    if (step.loads) previous = &*step.loads;
+    end_loads_.push_back(*previous);
+    prescribe(prescribed, step.constraints);
+    end_prescribed_.push_back(prescribed);
+  }
+}
+
+StepPosition LoadSchedule::first() const {
+  StepPosition p;
+  p.step_start.assign(2 * model_.nodes.size(), 0.0);
+  return p;
+}
+
+bool LoadSchedule::advance(StepPosition& position, std::span<const double> displacement) const {
+  assert(stepped());
+  position.iterations = 0;
+  if (position.increment < model_.steps[static_cast<std::size_t>(position.step)].increments) {
+    position.increment += 1;
+    return true;
+  }
+  if (position.step + 1 >= static_cast<int>(model_.steps.size())) return false;
+  position.step += 1;
+  position.increment = 1;
+  position.step_start.assign(displacement.begin(), displacement.end());
+  return true;
+}
+
+bool LoadSchedule::holds(const StepPosition& p, std::size_t node_count) const {
+  return p.step >= 0 && p.step < static_cast<int>(model_.steps.size()) && p.increment >= 1 &&
+         p.increment <= model_.steps[static_cast<std::size_t>(p.step)].increments && p.iterations >= 0 &&
+         p.step_start.size() == 2 * node_count;
+}
+
+double LoadSchedule::factor(const StepPosition& position) const {
+  const int n = model_.steps[static_cast<std::size_t>(position.step)].increments;
+  return position.increment == n ? 1.0 : static_cast<double>(position.increment) / n;
+}
+
+double LoadSchedule::temperature(const Loads& loads, std::size_t node) const {
+  // Loads built in code may leave the temperatures out: the stress-free one (as the reader's default).
+  return node < loads.node_temperature.size() ? loads.node_temperature[node] : model_.reference_temperature;
+}
+
+Loads LoadSchedule::unloaded() const {
+  Loads l;
+  l.node_temperature.assign(model_.nodes.size(), model_.reference_temperature);
+  return l;
+}
+
+Model LoadSchedule::increment_model(const StepPosition& position) const {
+  const auto k = static_cast<std::size_t>(position.step);
+  const double lambda = factor(position);
+  const Loads start = k == 0 ? unloaded() : end_loads_[k - 1];
+  const Loads& end = end_loads_[k];
+
+  Model m = model_;
+  m.steps.clear();  // the increment's model is one plain load case
+  Loads& l = m.loads;
+  l = Loads{};
+  // Forces and tractions are linear in their values: the start's scaled by 1 - lambda and the
+  // end's by lambda, side by side (the system adds them up).
+  const auto add_scaled = [&l](const Loads& from, double weight) {
+    if (weight == 0.0) return;
+    for (NodalForce f : from.nodal_forces) {
+      f.f_r *= weight;
+      f.f_z *= weight;
+      l.nodal_forces.push_back(f);
+    }
+    for (EdgePressure p : from.pressures) {
+      p.normal *= weight;
+      p.shear *= weight;
+      l.pressures.push_back(p);
+    }
+  };
+  add_scaled(start, lambda == 1.0 ? 0.0 : 1.0 - lambda);
+  add_scaled(end, lambda);
+  l.node_temperature.resize(model_.nodes.size());
+  for (std::size_t n = 0; n < model_.nodes.size(); ++n) {
+    l.node_temperature[n] = between(temperature(start, n), temperature(end, n), lambda);
+  }
+  l.body_force.accel_r = between(start.body_force.accel_r, end.body_force.accel_r, lambda);
+  l.body_force.accel_z = between(start.body_force.accel_z, end.body_force.accel_z, lambda);
+  l.body_force.omega = lambda == 1.0 ? end.body_force.omega
+                                     : std::sqrt(between(start.body_force.omega * start.body_force.omega,
+                                                         end.body_force.omega * end.body_force.omega, lambda));
+
+  m.constraints.clear();
+  const std::vector<double>& prescribed = end_prescribed_[k];
+  for (std::size_t n = 0; n < model_.nodes.size(); ++n) {
+    Constraint c;
+    c.node = static_cast<int>(n);
+    for (int dir = 0; dir < 2; ++dir) {
+      const double value = prescribed[2 * n + dir];
+      if (std::isnan(value)) continue;
+      (dir == 0 ? c.u_r : c.u_z) = between(position.step_start[2 * n + dir], value, lambda);
+    }
+    if (c.u_r || c.u_z) m.constraints.push_back(c);
+  }
+  return m;
+}
+
+}  // namespace saasgaps
