@@ -1120,7 +1120,7 @@ TEST(ModelReaderRules, RepeatedKeysAreFoundInEverySection) {
   EXPECT_TRUE(has_issue(issues, "/extra", {"unknown key"})) << listing(issues);
   EXPECT_TRUE(has_issue(issues, "/solver", {"\"solver\"", "more than once"})) << listing(issues);
   EXPECT_EQ(issues.size(), 4U) << listing(issues);
-
+}
 
 // ------------------------------------------------------------------------------------------------
 // Load steps (the spec's third round): read into Model::steps, bad input at its pointer
