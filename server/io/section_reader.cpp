@@ -324,13 +324,15 @@ void SectionReader::read_gaps(const Obj& root) {
     GapElement e;
     const auto id = new_element_id(o);
     const auto corners = read_corners(o);
-    e.angle_deg = number_field(o, "angle").value_or(0.0);
+    const auto angle = number_field(o, "angle");
+    e.angle_deg = angle.value_or(0.0);
     if (!id) continue;
     e.id = *id;
     if (corners) {
       e.nodes = corners->nodes;
       e.node_count = corners->count;
     }
+    if (angle && corners) check_gap_axis(e, *corners, Where(o.pointer, "angle"));
     elements_.emplace(*id, Entry{as_index(s.elements.size()), true, as_index(i)});
     s.elements.push_back(e);
   }

@@ -229,6 +229,9 @@ class SectionReader {
   std::optional<NodeList> read_corners(const Obj& o);
   /// Counter-clockwise with positive area; for a quadrilateral, each triangle around the centre.
   void check_shape(const NodeList& corners, const json& ids, const Where& pointer);
+  /// A gap element's M axis runs across it (solver/gap_faces.hpp: gap_axis_problem), judged when its
+  /// corners are placed and its shape is valid.
+  void check_gap_axis(const GapElement& gap, const NodeList& corners, const Where& pointer);
 
   // Tables.
   /// An object with exactly the keys of fields, each a number in its range.

@@ -1,6 +1,8 @@
 #include "io/section_reader.hpp"
 
+#include "element_data.hpp"
 #include "element_kernel.hpp"
+#include "gap_faces.hpp"
 #include "io/value_quote.hpp"
 
 namespace saasgaps::io {
@@ -112,6 +114,15 @@ void SectionReader::check_shape(const NodeList& corners, const json& ids, const 
                         "); the SAAS element needs all 4 triangles between its edges and the centre of its "
                         "corners to have positive area, counter-clockwise");
   }
+}
+
+void SectionReader::check_gap_axis(const GapElement& gap, const NodeList& corners, const Where& pointer) {
+  if (!corners.complete()) return;
+  const auto placed = [&](int n) { return node_placed_[static_cast<std::size_t>(n)]; };
+  if (!std::all_of(corners.nodes.begin(), corners.nodes.begin() + corners.count, placed)) return;
+  // A shape check_shape refused has no faces to judge.
+  if (!(min_twice_area(corners.count, corner_coordinates(model_, corners.nodes, corners.count)) > 0.0)) return;
+  if (const auto problem = gap_axis_problem(model_, gap)) report(pointer, *problem);
 }
 
 }  // namespace saasgaps::io

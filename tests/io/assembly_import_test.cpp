@@ -15,6 +15,7 @@
 #include <string>
 
 #include "errors.hpp"
+#include "gap_faces.hpp"
 #include "io/assembly_reader.hpp"
 #include "io/gap_generator.hpp"
 #include "io/model_reader.hpp"
@@ -397,6 +398,40 @@ TEST(GapGenerator, SlantedFacesPairAlongTheNormal) {
   const io::GapGeneration fewer = io::generate_gaps(a, b, x, ids, 0.1);
   ASSERT_FALSE(fewer.problems.empty());
   EXPECT_NE(fewer.problems.front().find("node 1 at (0, 0)"), std::string::npos) << fewer.problems.front();
+}
+
+/// Generated angles pass the model reader's rule (solver/gap_faces.hpp): the slanted gap above does; a
+/// clearance wider than the elements along it are long would give gap elements whose M runs along
+/// them, and is a problem of the generation naming the nodes.
+TEST(GapGenerator, GeneratedAnglesRunAcrossTheGapOrTheClearanceIsNamed) {
+  const auto faces = [](double clearance, std::vector<Vec2>& x) {
+    x.clear();
+    for (int k = 0; k < 3; ++k) x.emplace_back(0.5 * k, 0.0);        // A: z = 0, 0.5 between nodes
+    for (int k = 0; k < 3; ++k) x.emplace_back(0.5 * k, clearance);  // B above it
+  };
+  const std::vector<int> ids{1, 2, 3, 11, 12, 13};
+  io::FaceChain a, b;
+  a.nodes = {0, 1, 2};
+  b.nodes = {3, 4, 5};
+  a.outward.assign(2, Vec2(0, 1));
+  b.outward.assign(2, Vec2(0, -1));
+  std::vector<Vec2> x;
+  faces(0.5, x);  // as long as wide: still across
+  const io::GapGeneration square = io::generate_gaps(a, b, x, ids, 0.1);
+  ASSERT_TRUE(square.problems.empty()) << square.problems.front();
+  for (const io::GeneratedGap& gap : square.gaps) {
+    std::array<Vec2, 4> corners{};
+    for (std::size_t i = 0; i < 4; ++i) corners[i] = x[static_cast<std::size_t>(gap.nodes[i])];
+    EXPECT_TRUE(runs_across(gap_faces(corners, 4, gap.angle_deg)));
+  }
+  faces(0.8, x);
+  const io::GapGeneration wide = io::generate_gaps(a, b, x, ids, 0.1);
+  ASSERT_EQ(wide.problems.size(), 2U);
+  EXPECT_TRUE(wide.gaps.empty());
+  EXPECT_NE(wide.problems.front().find("between nodes 1-2 and 11-12"), std::string::npos) << wide.problems.front();
+  EXPECT_NE(wide.problems.front().find("the clearance there (0.8) must not exceed the elements' length along it (0.5)"),
+            std::string::npos)
+      << wide.problems.front();
 }
 
 }  // namespace
