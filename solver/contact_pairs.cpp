@@ -36,7 +36,9 @@ struct RawPair {
 
 class Pairer {
  public:
-  Pairer(const Model& model, std::size_t g) : model_(model), gap_(model.gaps->elements[g]), g_(g) {
+  /// axis_problem: gap_axis_problems' verdict on this gap.
+  Pairer(const Model& model, std::size_t g, std::optional<std::string> axis_problem)
+      : model_(model), gap_(model.gaps->elements[g]), g_(g), axis_problem_(std::move(axis_problem)) {
     x_ = corner_coordinates(model, gap_.nodes, gap_.node_count);
     const double angle = gap_.angle_deg * std::numbers::pi / 180.0;
     n_ = Vec2(std::cos(angle), std::sin(angle));
@@ -45,8 +47,8 @@ class Pairer {
   /// The element's pairs, or the reason there are none.
   std::optional<std::vector<RawPair>> pairs(std::string& why) {
     // Faces across M, and M across the gap: the model reader's rule too (gap_faces.hpp).
-    if (const auto problem = gap_axis_problem(model_, gap_)) {
-      why = *problem;
+    if (axis_problem_) {
+      why = *axis_problem_;
       return std::nullopt;
     }
     const GapFaces faces = gap_faces(x_, gap_.node_count, gap_.angle_deg);
@@ -142,6 +144,7 @@ class Pairer {
   std::size_t g_;
   std::array<Vec2, 4> x_{};
   Vec2 n_;
+  std::optional<std::string> axis_problem_;
 };
 
 /// Pairs of the same nodes (and edge) are one constraint: the key is the sorted node list.
@@ -164,9 +167,10 @@ ContactPairs build(const Model& model, std::vector<PairingIssue>& issues) {
   out.share_count.assign(gaps, 0);
   std::map<std::vector<int>, int> index;
   std::vector<Vec2> normal_sum;
+  std::vector<std::optional<std::string>> axis_problems = gap_axis_problems(model, model.gaps->elements);
   for (std::size_t g = 0; g < gaps; ++g) {
     std::string why;
-    const auto raw = Pairer(model, g).pairs(why);
+    const auto raw = Pairer(model, g, std::move(axis_problems[g])).pairs(why);
     if (!raw) {
       issues.push_back({g, "gap element " + std::to_string(model.gaps->elements[g].id) + " cannot be paired: " + why});
       continue;

@@ -1,8 +1,13 @@
 #include "gap_faces.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <sstream>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
 
 #include "element_data.hpp"
 #include "element_kernel.hpp"
@@ -98,30 +103,102 @@ GapFaces gap_faces(const std::array<Vec2, 4>& x, int node_count, double angle_de
   return triangle_faces(x, best, m);
 }
 
-bool runs_across(const GapFaces& faces) {
-  // Rule (2) with a margin of round-off: a square gap is as long as it is wide either way.
-  return faces.lean <= max_face_lean && faces.separation <= faces.length * (1.0 + 1.0e-9);
+bool runs_across(const GapFaces& faces) { return faces.lean <= max_face_lean; }
+
+namespace {
+
+/// An edge by its node indices, either order.
+std::uint64_t edge_key(int a, int b) {
+  const auto lo = static_cast<std::uint32_t>(std::min(a, b)), hi = static_cast<std::uint32_t>(std::max(a, b));
+  return (std::uint64_t{hi} << 32) | lo;
 }
 
-std::optional<std::string> gap_axis_problem(const Model& model, const GapElement& gap) {
+/// Per edge of the gap elements: how many gap elements have it, and whether a solid element has it.
+/// One pass over the solids; memory O(gap elements), not O(elements).
+struct GapEdges {
+  std::unordered_map<std::uint64_t, int> gaps;
+  std::unordered_set<std::uint64_t> on_solid;
+
+  GapEdges(const Model& model, std::span<const GapElement> list) {
+    for (const GapElement& g : list) {
+      for (int k = 0; k < g.node_count; ++k) ++gaps[edge_key(g.nodes[k], g.nodes[(k + 1) % g.node_count])];
+    }
+    for (const Element& e : model.elements) {
+      for (int k = 0; k < e.node_count; ++k) {
+        const std::uint64_t key = edge_key(e.nodes[k], e.nodes[(k + 1) % e.node_count]);
+        if (gaps.count(key)) on_solid.insert(key);
+      }
+    }
+  }
+  [[nodiscard]] bool shared(const GapElement& g, int p, int q) const { return gaps.at(edge_key(g.nodes[p], g.nodes[q])) > 1; }
+  [[nodiscard]] bool solid(const GapElement& g, int p, int q) const { return on_solid.count(edge_key(g.nodes[p], g.nodes[q])) > 0; }
+};
+
+/// The sides of a gap other than its faces f: a quadrilateral's other pair, a triangle's other edges.
+std::vector<std::array<int, 2>> other_sides(const GapFaces& f, int node_count) {
+  std::vector<std::array<int, 2>> out;
+  for (int k = 0; k < node_count; ++k) {
+    const std::array<int, 2> e{k, (k + 1) % node_count};
+    const auto same = [&](const std::array<int, 2>& g) {
+      return (g[0] == e[0] && g[1] == e[1]) || (g[0] == e[1] && g[1] == e[0]);
+    };
+    if (!same(f.one) && !(f.two[0] != f.two[1] && same(f.two))) out.push_back(e);
+  }
+  return out;
+}
+
+std::optional<std::string> axis_problem(const Model& model, const GapElement& gap, const GapEdges& edges) {
   const std::array<Vec2, 4> x = corner_coordinates(model, gap.nodes, gap.node_count);
   const GapFaces faces = gap_faces(x, gap.node_count, gap.angle_deg);
-  if (runs_across(faces)) return std::nullopt;
-  const bool across = faces.lean <= max_face_lean;
-  const GapFaces right = long_sides_of(x, gap.node_count, axis(gap.angle_deg));
+  const auto id = [&](int corner) { return model.nodes[gap.nodes[corner]].id; };
+  std::vector<std::array<int, 2>> crossed{faces.one};
+  if (faces.two[0] != faces.two[1]) crossed.push_back(faces.two);
+  const std::vector<std::array<int, 2>> others = other_sides(faces, gap.node_count);
+  // Rule (2): an edge another gap element shares is where the gap runs on (an end), not a face; and
+  // when the other sides lie on solid elements and a crossed edge does not, those sides are the faces.
+  std::string why;
+  for (const auto& e : crossed) {
+    if (edges.shared(gap, e[0], e[1])) {
+      why = "its edge " + std::to_string(id(e[0])) + "-" + std::to_string(id(e[1])) +
+            " is also an edge of another gap element, so the gap runs on through it and M runs along the gap";
+      break;
+    }
+  }
+  if (why.empty() && faces.two[0] != faces.two[1]) {
+    const bool crossed_on_solids = edges.solid(gap, faces.one[0], faces.one[1]) && edges.solid(gap, faces.two[0], faces.two[1]);
+    const bool others_on_solids = std::all_of(others.begin(), others.end(), [&](const auto& e) { return edges.solid(gap, e[0], e[1]); });
+    if (others_on_solids && !crossed_on_solids) {
+      why = "its other sides lie on solid elements and the edges M crosses do not, so M runs along the gap";
+    }
+  }
+  if (runs_across(faces) && why.empty()) return std::nullopt;
+  // The faces M should cross: the sides that are not ends, else the thinner pair.
+  GapFaces right = long_sides_of(x, gap.node_count, axis(gap.angle_deg));
+  if (!why.empty() && gap.node_count == 4) {
+    right = quad_faces(x, faces.one == std::array<int, 2>{1, 2}, axis(gap.angle_deg));
+  }
   std::ostringstream text;
   text << "angle " << gap.angle_deg << " does not run across gap element " << gap.id << ": ";
-  if (!across) {
+  if (why.empty()) {
     text << "no " << (gap.node_count == 4 ? "two opposite edges lie" : "edge lies")
          << " within 30 degrees of perpendicular to M";
   } else {
-    text << "M crosses " << faces_text(model, gap, faces) << ", which are " << faces.separation
-         << " apart but only " << faces.length << " long, so M runs along the gap";
+    text << "M crosses " << faces_text(model, gap, faces) << ", but " << why;
   }
-  text << "; the gap's faces are its long sides, " << faces_text(model, gap, right)
+  text << "; the gap's faces are " << faces_text(model, gap, right)
        << ", and M must be within 30 degrees of perpendicular to them: angle " << angle_across(x, right)
        << " (or that plus or minus 180)";
   return text.str();
+}
+
+}  // namespace
+
+std::vector<std::optional<std::string>> gap_axis_problems(const Model& model, std::span<const GapElement> gaps) {
+  const GapEdges edges(model, gaps);
+  std::vector<std::optional<std::string>> out;
+  out.reserve(gaps.size());
+  for (const GapElement& gap : gaps) out.push_back(axis_problem(model, gap, edges));
+  return out;
 }
 
 double gap_face_area(const Model& model, const GapElement& gap) {

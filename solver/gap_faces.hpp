@@ -9,19 +9,22 @@
 /// one[k] faces corner two[k]). A triangle's face is its edge most nearly perpendicular to M; the lone
 /// corner opposite it is the other side.
 ///
-/// The rule (gap_axis_problem). M runs across the gap when
-///   (1) each face is within 30 degrees of perpendicular to M: lean = |cos(face, M)| <= 1/2, and
-///   (2) the faces are the gap's long sides: their separation s (quadrilateral: the distance between
-///       the faces' midpoints; triangle: the lone corner's distance from the face's line) is at most
-///       their mean length L.
-/// A gap element fills a thin clearance between two faces; (2) is what tells its faces from its ends.
-/// A horizontal strip 0.5 long and 0.01 thick given angle 0 passes (1) with its short ends as "faces"
-/// and fails (2): s = 0.5, L = 0.01. A clearance wider than the elements along it are long fails (2)
-/// too: such a gap is meshed with elements at least as long as the clearance is wide.
+/// The rule (gap_axis_problems). M runs across the gap when
+///   (1) each face is within 30 degrees of perpendicular to M: lean = |cos(face, M)| <= 1/2
+///       (runs_across), and
+///   (2) the edges M crosses are faces, not ends: no other gap element has one of them (a gap runs on
+///       through its ends into its neighbours), and when a quadrilateral's other two sides both lie on
+///       solid elements, so do the edges M crosses.
+/// A strip of horizontal gaps given angle 0 passes (1) with its short ends as "faces" and fails (2):
+/// its neighbours share those ends. Geometry alone cannot tell faces from ends (a curved gap is
+/// wider than its elements are long far from contact, as in Hertz's problem); the mesh can. (2)
+/// cannot judge a lone gap element between constrained nodes: there only (1) holds.
 
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "model.hpp"
 #include "voigt.hpp"
@@ -42,12 +45,13 @@ struct GapFaces {
 /// The faces of the gap element with corners x[0..node_count) and M at angle_deg from +r.
 GapFaces gap_faces(const std::array<Vec2, 4>& x, int node_count, double angle_deg);
 
-/// Rules (1) and (2): M runs across the gap whose faces (from gap_faces) these are.
+/// Rule (1): the faces (from gap_faces) lie across M.
 [[nodiscard]] bool runs_across(const GapFaces& faces);
 
-/// Why M does not run across gap element `gap` (rules (1) and (2)), with its faces' nodes by id and the
-/// angle across its long sides; nothing when it does.
-std::optional<std::string> gap_axis_problem(const Model& model, const GapElement& gap);
+/// Per gap element of `gaps` (node indices into model.nodes; model.elements are the solids): why M does
+/// not run across it (rules (1) and (2)), naming the edges M crosses, the faces and the angle across
+/// them; nothing when it does. One pass over the solids, memory O(gaps).
+std::vector<std::optional<std::string>> gap_axis_problems(const Model& model, std::span<const GapElement> gaps);
 
 /// The area of the gap's contact face, the one its normal stress acts on: the mean of its two faces'
 /// areas for a quadrilateral, half its face's for a triangle (in a strip of triangles alternating sides

@@ -116,13 +116,19 @@ void SectionReader::check_shape(const NodeList& corners, const json& ids, const 
   }
 }
 
-void SectionReader::check_gap_axis(const GapElement& gap, const NodeList& corners, const Where& pointer) {
-  if (!corners.complete()) return;
+bool SectionReader::gap_axis_judgeable(const NodeList& corners) const {
+  if (!corners.complete()) return false;
   const auto placed = [&](int n) { return node_placed_[static_cast<std::size_t>(n)]; };
-  if (!std::all_of(corners.nodes.begin(), corners.nodes.begin() + corners.count, placed)) return;
+  if (!std::all_of(corners.nodes.begin(), corners.nodes.begin() + corners.count, placed)) return false;
   // A shape check_shape refused has no faces to judge.
-  if (!(min_twice_area(corners.count, corner_coordinates(model_, corners.nodes, corners.count)) > 0.0)) return;
-  if (const auto problem = gap_axis_problem(model_, gap)) report(pointer, *problem);
+  return min_twice_area(corners.count, corner_coordinates(model_, corners.nodes, corners.count)) > 0.0;
+}
+
+void SectionReader::check_gap_axes(std::span<const GapElement> gaps, std::span<const std::string> angle_pointers) {
+  const std::vector<std::optional<std::string>> problems = gap_axis_problems(model_, gaps);
+  for (std::size_t k = 0; k < problems.size(); ++k) {
+    if (problems[k]) report(angle_pointers[k], *problems[k]);
+  }
 }
 
 }  // namespace saasgaps::io
