@@ -10,6 +10,7 @@
 #include "cli/http_client.hpp"
 #include "cli/job_watch.hpp"
 #include "cli/usage.hpp"
+#include "plural.hpp"
 
 namespace saasgaps::cli {
 

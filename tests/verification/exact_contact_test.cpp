@@ -305,11 +305,12 @@ TEST(ExactInput, AGapWhoseMAxisIsNotAcrossItIsAModelErrorAtItsAngleInBothMethods
 
 TEST(ExactInput, ZeroSeparationAndANodeFacingNothingAreNamed) {
   Model m;
-  m.nodes = {{1, 0.0, 0.0}, {2, 1.0, 0.0}, {3, 1.0, 0.01}, {4, 0.0, 0.0}, {5, 3.0, 0.01}, {6, 0.0, 0.01}};
+  m.nodes = {{1, 0.0, 0.0}, {2, 1.0, 0.0}, {3, 1.0, 0.01}, {4, 0.0, 0.0}, {5, 3.0, 0.01}, {6, 0.0, 0.01},
+             {7, 0.0, 0.0}, {8, 1.0, 0.0}};
   m.gaps.emplace();
   m.gaps->tensile_schedule = {1.0};
   m.gaps->elements.push_back({7, {0, 1, 2, 3}, 4, 90.0});  // nodes 1 and 4 coincide
-  m.gaps->elements.push_back({8, {0, 1, 4, 5}, 4, 90.0});  // node 2 "faces" node 5, two lengths away
+  m.gaps->elements.push_back({8, {6, 7, 4, 5}, 4, 90.0});  // node 8 "faces" node 5, two lengths away
   const std::vector<PairingIssue> issues = contact_pairing_issues(m);
   ASSERT_EQ(issues.size(), 2U);
   EXPECT_EQ(issues[0].gap, 0U);
