@@ -12,6 +12,7 @@
 #include "load_schedule.hpp"
 #include "errors.hpp"
 #include "material_state.hpp"
+#include "plural.hpp"
 #include "sparse_cholesky.hpp"
 #include "stiffness_system.hpp"
 
@@ -375,11 +376,11 @@ class GapContactAnalysis {
     std::ostringstream text;
     switch (status) {
       case RunStatus::converged:
-        text << "converged in " << state.iteration << " iterations" << now_->contact->converged_note(state, v.contact);
+        text << "converged in " << plural(state.iteration, "iteration") << now_->contact->converged_note(state, v.contact);
         return text.str();
       case RunStatus::stopped: text << "stopped on request after iteration " << state.iteration; break;
       case RunStatus::not_converged:
-        text << "not converged after " << state.iteration << " iterations (max_iterations " << max_iterations_
+        text << "not converged after " << plural(state.iteration, "iteration") << " (max_iterations " << max_iterations_
              << (state.position ? " per increment" : "") << ")";
         break;
     }
@@ -403,8 +404,7 @@ class GapContactAnalysis {
       }
     }
     if (v.materials.bimodulus_changes > 0) {
-      reasons.push_back(std::to_string(v.materials.bimodulus_changes) +
-                        " elements switched tension/compression properties");
+      reasons.push_back(plural(v.materials.bimodulus_changes, "element") + " switched tension/compression properties");
     }
     if (!reasons.empty()) {
       text << ": ";

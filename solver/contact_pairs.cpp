@@ -9,14 +9,12 @@
 
 #include "element_data.hpp"
 #include "element_kernel.hpp"
+#include "gap_faces.hpp"
 
 namespace saasgaps {
 
 namespace {
 
-/// Opposite faces must not lean more than this toward M: |sin| of the angle between a face and
-/// the direction perpendicular to M (0.5: 30 degrees).
-constexpr double max_face_lean = 0.5;
 /// A node faces another when their offset across M is within this fraction of the face length.
 constexpr double max_facing_offset = 0.5;
 /// Separations below this fraction of the face length count as zero.
@@ -38,7 +36,9 @@ struct RawPair {
 
 class Pairer {
  public:
-  Pairer(const Model& model, std::size_t g) : model_(model), gap_(model.gaps->elements[g]), g_(g) {
+  /// axis_problem: gap_axis_problems' verdict on this gap.
+  Pairer(const Model& model, std::size_t g, std::optional<std::string> axis_problem)
+      : model_(model), gap_(model.gaps->elements[g]), g_(g), axis_problem_(std::move(axis_problem)) {
     x_ = corner_coordinates(model, gap_.nodes, gap_.node_count);
     const double angle = gap_.angle_deg * std::numbers::pi / 180.0;
     n_ = Vec2(std::cos(angle), std::sin(angle));
@@ -46,28 +46,21 @@ class Pairer {
 
   /// The element's pairs, or the reason there are none.
   std::optional<std::vector<RawPair>> pairs(std::string& why) {
-    return gap_.node_count == 4 ? quad_pairs(why) : triangle_pairs(why);
+    // Faces across M, and M across the gap: the model reader's rule too (gap_faces.hpp).
+    if (axis_problem_) {
+      why = *axis_problem_;
+      return std::nullopt;
+    }
+    const GapFaces faces = gap_faces(x_, gap_.node_count, gap_.angle_deg);
+    return gap_.node_count == 4 ? quad_pairs(faces, why) : triangle_pairs(faces, why);
   }
 
  private:
   int id(int corner) const { return model_.nodes[gap_.nodes[corner]].id; }
 
-  /// |sin| of the angle between edge p-q and the direction perpendicular to M.
-  double lean(int p, int q) const { return std::abs((x_[q] - x_[p]).normalized().dot(n_)); }
-
-  std::optional<std::vector<RawPair>> quad_pairs(std::string& why) {
-    // Faces 0-1 / 2-3 (node 0 faces 3, 1 faces 2) or 1-2 / 3-0 (1 faces 0, 2 faces 3): CCW order
-    // makes opposite edges run opposite ways.
-    const double lean_a = std::max(lean(0, 1), lean(2, 3));
-    const double lean_b = std::max(lean(1, 2), lean(3, 0));
-    const bool first = lean_a <= lean_b;
-    if (std::min(lean_a, lean_b) > max_face_lean) {
-      why = "no two opposite edges lie across the M axis (angle " + format(gap_.angle_deg) +
-            " degrees): the faces must be within 30 degrees of perpendicular to M";
-      return std::nullopt;
-    }
-    const std::array<std::array<int, 2>, 2> facing =
-        first ? std::array<std::array<int, 2>, 2>{{{0, 3}, {1, 2}}} : std::array<std::array<int, 2>, 2>{{{1, 0}, {2, 3}}};
+  std::optional<std::vector<RawPair>> quad_pairs(const GapFaces& faces, std::string& why) {
+    // Corner one[k] of one face faces corner two[k] of the other.
+    const std::array<std::array<int, 2>, 2> facing{{{faces.one[0], faces.two[0]}, {faces.one[1], faces.two[1]}}};
     // Face one: the first corners of each facing pair; face two: the second.
     const auto area_one = face_areas(model_, x_[facing[0][0]], x_[facing[1][0]]);
     const auto area_two = face_areas(model_, x_[facing[0][1]], x_[facing[1][1]]);
@@ -108,18 +101,9 @@ class Pairer {
     return out;
   }
 
-  std::optional<std::vector<RawPair>> triangle_pairs(std::string& why) {
+  std::optional<std::vector<RawPair>> triangle_pairs(const GapFaces& faces, std::string& why) {
     // The face is the edge most nearly perpendicular to M, the lone node the corner opposite it.
-    int best = 0;
-    for (int e = 1; e < 3; ++e) {
-      if (lean(e, (e + 1) % 3) < lean(best, (best + 1) % 3)) best = e;
-    }
-    const int e0 = best, e1 = (best + 1) % 3, lone = (best + 2) % 3;
-    if (lean(e0, e1) > max_face_lean) {
-      why = "no edge lies across the M axis (angle " + format(gap_.angle_deg) +
-            " degrees): one edge must be within 30 degrees of perpendicular to M";
-      return std::nullopt;
-    }
+    const int e0 = faces.one[0], e1 = faces.one[1], lone = faces.two[0];
     // The point of the edge x_e0 + s (x_e1 - x_e0) on the line through the lone node along M.
     const Vec2 edge = x_[e1] - x_[e0];
     const double length = edge.norm();
@@ -160,6 +144,7 @@ class Pairer {
   std::size_t g_;
   std::array<Vec2, 4> x_{};
   Vec2 n_;
+  std::optional<std::string> axis_problem_;
 };
 
 /// Pairs of the same nodes (and edge) are one constraint: the key is the sorted node list.
@@ -182,9 +167,10 @@ ContactPairs build(const Model& model, std::vector<PairingIssue>& issues) {
   out.share_count.assign(gaps, 0);
   std::map<std::vector<int>, int> index;
   std::vector<Vec2> normal_sum;
+  std::vector<std::optional<std::string>> axis_problems = gap_axis_problems(model, model.gaps->elements);
   for (std::size_t g = 0; g < gaps; ++g) {
     std::string why;
-    const auto raw = Pairer(model, g).pairs(why);
+    const auto raw = Pairer(model, g, std::move(axis_problems[g])).pairs(why);
     if (!raw) {
       issues.push_back({g, "gap element " + std::to_string(model.gaps->elements[g].id) + " cannot be paired: " + why});
       continue;

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "errors.hpp"
+#include "plural.hpp"
 
 namespace saasgaps {
 
@@ -241,7 +242,8 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
     if (iteration >= max_active_set_iterations) {
       std::ostringstream text;
       text << "the exact contact solve did not settle after " << max_active_set_iterations
-           << " active-set iterations: " << changes << " pairs still change, the worst between nodes "
+           << " active-set iterations: " << plural(changes, "pair") << (changes == 1 ? " still changes" : " still change")
+           << ", the worst between nodes "
            << model_.nodes[pairs_.pairs[worst_pair].node[0]].id << " and "
            << model_.nodes[pairs_.pairs[worst_pair].node[1]].id;
       throw SolverError(text.str());

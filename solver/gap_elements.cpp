@@ -1,16 +1,50 @@
 #include "gap_elements.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "element_data.hpp"
 #include "errors.hpp"
+#include "gap_faces.hpp"
 #include "stiffness_system.hpp"
 
 namespace saasgaps {
 
 GapElements::GapElements(const Model& model, const GapSettings& settings)
-    : model_(model), settings_(settings), closure_(settings_) {}
+    : model_(model), settings_(settings), closure_(settings_) {
+  face_area_.reserve(settings_.elements.size());
+  for (const GapElement& gap : settings_.elements) face_area_.push_back(gap_face_area(model_, gap));
+}
+
+double load_norm(std::span<const double> rhs) {
+  double sum = 0.0;
+  for (double f : rhs) sum += std::abs(f);
+  return sum;
+}
+
+void GapElements::check_floor_share(std::vector<FloorLoad> floor, double carried, double largest_share,
+                                    const ContactOutcome& outcome, std::string_view which) const {
+  double floor_force = 0.0;
+  for (const FloorLoad& f : floor) floor_force += f.force;
+  if (!(floor_force > largest_share * carried)) return;
+  std::sort(floor.begin(), floor.end(), [](const FloorLoad& a, const FloorLoad& b) { return a.force > b.force; });
+  std::ostringstream text;
+  text << "the contact problem has no solution: " << 100.0 * floor_force / carried
+       << " % of the load is carried by the floor stiffness of " << which << " (";
+  const std::size_t shown = std::min<std::size_t>(floor.size(), 6);
+  for (std::size_t k = 0; k < shown; ++k) {
+    const GapElement& gap = settings_.elements[floor[k].gap];
+    text << (k ? "; " : "") << "gap " << gap.id << " at nodes";
+    for (int a = 0; a < gap.node_count; ++a) text << ' ' << model_.nodes[gap.nodes[a]].id;
+    text << ", closure " << outcome.gaps[floor[k].gap].closure << " %";
+  }
+  if (floor.size() > shown) text << "; and " << floor.size() - shown << " more";
+  text << "): a body is pushed away from every support, or the floor modulus " << closure_.floor_modulus()
+       << " (the last tensile_schedule value) is not negligible";
+  throw SolverError(text.str());
+}
 
 GapModuli GapElements::floor_moduli() const {
   GapModuli m;

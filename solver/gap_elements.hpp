@@ -6,12 +6,24 @@
 /// only by gaps.
 
 #include <span>
+#include <string_view>
+#include <vector>
 
 #include "contact_method.hpp"
 #include "gap_closure.hpp"
 #include "model.hpp"
 
 namespace saasgaps {
+
+
+/// The load a gap's floor spring carries: |sigma_m| times its face area (gap_face_area), gap index.
+struct FloorLoad {
+  double force = 0.0;
+  std::size_t gap = 0;
+};
+
+/// |f|_1, the load of one solve: the sum of the magnitudes of the right-hand side's entries.
+double load_norm(std::span<const double> rhs);
 
 class GapElements {
  public:
@@ -41,6 +53,18 @@ class GapElements {
   /// belongs to another model.
   void keep_strains(const ContactOutcome& outcome, GapHistory& history) const;
 
+  /// The area gap g's normal stress acts on (gap_faces.hpp: gap_face_area).
+  [[nodiscard]] double face_area(std::size_t g) const { return face_area_[g]; }
+
+  /// The floor springs of gaps that do not touch are there to hold bodies supported only by gaps, not
+  /// to carry load. The contact problem has no solution when the floor springs of the gaps in `floor`
+  /// carry more than `largest_share` of `carried` (the load: |f|_1 plus what contact carries): a body
+  /// is pushed away from every support, or the floor modulus is not negligible. Then throws
+  /// SolverError "the contact problem has no solution" naming the share and the gaps carrying the most
+  /// (`which` says what they are), with their nodes and closures.
+  void check_floor_share(std::vector<FloorLoad> floor, double carried, double largest_share,
+                         const ContactOutcome& outcome, std::string_view which) const;
+
   /// The gap columns every gap-element method fills: the tensile modulus and the extrapolation flag.
   static void add_columns(const GapHistory& history, IterationRecord& row);
 
@@ -48,6 +72,7 @@ class GapElements {
   const Model& model_;
   GapSettings settings_;
   GapClosure closure_;
+  std::vector<double> face_area_;
 };
 
 }  // namespace saasgaps

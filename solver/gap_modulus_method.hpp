@@ -15,9 +15,18 @@ class GapModulusMethod final : public ContactMethod {
 
   /// (a) iteration 1 at E0, (b)-(d) and Fig. 19 after it.
   void begin_iteration(RestartState& state, StiffnessSystem& system) override;
+  /// Factorize and solve (the default), keeping |f|_1 for check_solved.
+  void solve(SparseCholesky& cholesky, std::span<const double> values, std::span<const double> rhs,
+             RestartState& state, std::span<double> u) override;
   /// The gap elements' closures and stresses; state by closure: open (eps_M >= 0), partial, closed
   /// (within closure_tolerance of contact), overclosed; the verdict of test (e).
   void evaluate(RestartState& state, ContactOutcome& outcome) const override;
+  /// A body held only by the floor springs has no equilibrium: once the tensile schedule has begun
+  /// (iteration 2 on), the gaps open at the floor modulus (eps_M >= 0, E_M at most the floor) must carry
+  /// at most 10 % of the load, |f|_1 plus the forces of the gaps in compression, or SolverError "the
+  /// contact problem has no solution" (GapElements::check_floor_share). A gap open at the floor is a
+  /// fixed point of the iteration, so test (e) would otherwise accept the floor springs' answer.
+  void check_solved(const RestartState& state, const ContactOutcome& outcome) const override;
   void add_columns(const RestartState& state, IterationRecord& row) const override;
   /// The warning about loaded gaps that do not touch (loaded_open_gaps), or nothing.
   [[nodiscard]] std::string converged_note(const RestartState& state, const ContactOutcome& outcome) const override;
@@ -31,6 +40,7 @@ class GapModulusMethod final : public ContactMethod {
   [[nodiscard]] std::string loaded_open_gaps(const RestartState& state, const ContactOutcome& outcome) const;
 
   GapElements gaps_;
+  double load_norm_ = 0.0;  // |f|_1 of the last solve
 };
 
 }  // namespace saasgaps

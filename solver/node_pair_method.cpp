@@ -2,16 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <sstream>
 
 #include "errors.hpp"
+#include "plural.hpp"
 
 namespace saasgaps {
 
 NodePairMethod::NodePairMethod(const Model& model, const GapSettings& settings, const DofMap& dofs,
                                const CscPattern& pattern)
-    : model_(model), gaps_(model, settings), exact_(model, dofs, pattern, contact_pairs(model)) {}
+    : gaps_(model, settings), exact_(model, dofs, pattern, contact_pairs(model)) {}
 
 void NodePairMethod::begin_iteration(RestartState& state, StiffnessSystem& system) {
   GapElements::advance(state.gaps, gaps_.floor_moduli(), state.iteration);
@@ -21,8 +21,7 @@ void NodePairMethod::begin_iteration(RestartState& state, StiffnessSystem& syste
 void NodePairMethod::solve(SparseCholesky& cholesky, std::span<const double> values, std::span<const double> rhs,
                            RestartState& state, std::span<double> u) {
   report_ = exact_.solve(cholesky, values, rhs, state.contact, u);
-  load_norm_ = 0.0;
-  for (double f : rhs) load_norm_ += std::abs(f);
+  load_norm_ = load_norm(rhs);
 }
 
 void NodePairMethod::evaluate(RestartState& state, ContactOutcome& outcome) const {
@@ -75,35 +74,15 @@ void touching_verdict(ContactOutcome& outcome) {
 }
 
 void NodePairMethod::check_solved(const RestartState& state, const ContactOutcome& outcome) const {
-  const ContactPairs& cp = exact_.pairs();
-  constexpr double largest_floor_share = 0.01;
   double carried = load_norm_;
   for (double lambda : state.contact.force) carried += std::max(0.0, lambda);
-  std::vector<std::pair<double, std::size_t>> open;  // floor force, gap
-  double open_force = 0.0;
+  std::vector<FloorLoad> open;
   for (std::size_t g = 0; g < outcome.gaps.size(); ++g) {
     if (outcome.gaps[g].state == GapState::closed) continue;
-    double area = 0.0;
-    for (int k = 0; k < cp.share_count[g]; ++k) area += cp.of_gap[g][k].area;
-    const double force = std::abs(outcome.gaps[g].sigma_m) * area;
-    open_force += force;
-    open.emplace_back(force, g);
+    open.push_back({std::abs(outcome.gaps[g].sigma_m) * gaps_.face_area(g), g});
   }
-  if (!(open_force > largest_floor_share * carried)) return;
-  std::sort(open.begin(), open.end(), std::greater<>());
-  std::ostringstream text;
-  text << "the contact problem has no solution: " << 100.0 * open_force / carried
-       << " % of the load is carried by the floor stiffness of gaps that do not touch (";
-  const std::size_t shown = std::min<std::size_t>(open.size(), 6);
-  for (std::size_t k = 0; k < shown; ++k) {
-    const GapElement& gap = gaps_.settings().elements[open[k].second];
-    text << (k ? "; " : "") << "gap " << gap.id << " at nodes";
-    for (int a = 0; a < gap.node_count; ++a) text << ' ' << model_.nodes[gap.nodes[a]].id;
-  }
-  if (open.size() > shown) text << "; and " << open.size() - shown << " more";
-  text << "): a body is pushed away from every support, or the floor modulus " << gaps_.closure().floor_modulus()
-       << " (the last tensile_schedule value) is not negligible";
-  throw SolverError(text.str());
+  constexpr double largest_floor_share = 0.01;
+  gaps_.check_floor_share(std::move(open), carried, largest_floor_share, outcome, "gaps that do not touch");
 }
 
 void NodePairMethod::add_columns(const RestartState& state, IterationRecord& row) const {
@@ -115,8 +94,9 @@ void NodePairMethod::add_columns(const RestartState& state, IterationRecord& row
 
 std::string NodePairMethod::converged_note(const RestartState& state, const ContactOutcome&) const {
   std::ostringstream text;
-  text << " (exact contact: " << state.history.back().contact_pairs << " of " << exact_.pairs().pairs.size()
-       << " node pairs in contact, complementarity residual " << state.history.back().complementarity << ")";
+  text << " (exact contact: " << state.history.back().contact_pairs << " of "
+       << plural(static_cast<long long>(exact_.pairs().pairs.size()), "node pair")
+       << " in contact, complementarity residual " << state.history.back().complementarity << ")";
   return text.str();
 }
 

@@ -37,7 +37,6 @@ class NodePairMethod final : public ContactMethod {
   [[nodiscard]] std::string converged_note(const RestartState& state, const ContactOutcome& outcome) const override;
 
  private:
-  const Model& model_;
   GapElements gaps_;
   ExactContact exact_;
   ContactReport report_;   // of the last solve

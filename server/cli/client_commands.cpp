@@ -11,6 +11,7 @@
 #include "cli/job_watch.hpp"
 #include "cli/usage.hpp"
 #include "io/read_card.hpp"
+#include "plural.hpp"
 
 namespace saasgaps::cli {
 

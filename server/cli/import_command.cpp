@@ -9,6 +9,7 @@
 #include "cli/usage.hpp"
 #include "io/assembly_reader.hpp"
 #include "io/model_reader.hpp"
+#include "plural.hpp"
 
 namespace saasgaps::cli {
 

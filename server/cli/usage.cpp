@@ -7,6 +7,7 @@
 #include "cli/http_client.hpp"
 #include "errors.hpp"
 #include "io/gmsh_mesh.hpp"
+#include "plural.hpp"
 
 namespace saasgaps::cli {
 
@@ -169,10 +170,6 @@ int run_command(const std::function<int()>& command, const std::string& document
     std::cerr << "error: " << e.what() << '\n';
     return exit_code::failure;
   }
-}
-
-std::string plural(long long count, const std::string& noun) {
-  return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
 }
 
 CLI::Validator number_rule(const std::function<bool(double)>& allowed, const std::string& rule,

@@ -40,9 +40,6 @@ std::optional<std::string> nearest(const std::string& word, const std::vector<st
 /// anything else 1.
 int run_command(const std::function<int()>& command, const std::string& document = "model");
 
-/// "1 iteration", "3 iterations": a count with its noun, plural unless the count is 1 (nouns that
-/// take an s only).
-std::string plural(long long count, const std::string& noun);
 
 /// A validator of a number by a rule (e.g. io/read_card.hpp's): `allowed` decides; a refusal says
 /// `rule` and the text ("must be a number > 0, got \"abc\""). type_name shows in the help.

@@ -6,6 +6,7 @@
 #include "cli/usage.hpp"
 #include "io/model_reader.hpp"
 #include "io/restraint_issues.hpp"
+#include "plural.hpp"
 
 namespace saasgaps::cli {
 

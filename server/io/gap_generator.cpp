@@ -8,6 +8,8 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "gap_faces.hpp"
+
 namespace saasgaps::io {
 
 namespace {
@@ -239,6 +241,18 @@ GapGeneration generate_gaps(const FaceChain& a, const FaceChain& b, std::span<co
     if (twice_area < 0.0) g.nodes = {a0, b0, b1, a1};
     const Vec2 m = (pos(b0) - pos(a0)) + (pos(b1) - pos(a1));
     g.angle_deg = std::atan2(m.y(), m.x()) * 180.0 / std::numbers::pi;
+    // The model reader's rule (1) for M (solver/gap_faces.hpp), said here in the assembly's terms. (Its
+    // rule (2) holds by construction: the faces lie on the two curves, the ends are shared.)
+    std::array<Vec2, 4> corners{};
+    for (std::size_t i = 0; i < 4; ++i) corners[i] = pos(g.nodes[i]);
+    if (!runs_across(gap_faces(corners, 4, g.angle_deg))) {
+      out.problems.push_back("the gap element between nodes " + id(a0) + "-" + id(a1) + " and " + id(b0) + "-" + id(b1) +
+                             " would have its M axis (" + length(g.angle_deg) + " degrees, the mean direction from " +
+                             id(a0) + " to " + id(b0) + " and " + id(a1) + " to " + id(b1) +
+                             ") more than 30 degrees off perpendicular to its faces: the facing nodes are offset "
+                             "along the faces; give both curves the same node distribution");
+      continue;
+    }
     out.gaps.push_back(g);
   }
   for (std::size_t k = 0; k < a.nodes.size(); ++k) out.pairs.emplace_back(a.nodes[k], b.nodes[partner[k]]);

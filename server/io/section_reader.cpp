@@ -328,6 +328,8 @@ void SectionReader::read_gaps(const Obj& root) {
   const json* list = array_field(g, "elements", 1);
   gaps_complete_ = list != nullptr;
   if (list == nullptr) return;
+  std::vector<GapElement> judged;  // the gaps whose M axis can be judged, and their angles' pointers
+  std::vector<std::string> angle_pointers;
   for (std::size_t i = 0; i < list->size(); ++i) {
     const std::string item = pointer_append(g.at("elements"), i);
     if (!object((*list)[i], item, {"id", "nodes", "angle"})) continue;
@@ -335,16 +337,22 @@ void SectionReader::read_gaps(const Obj& root) {
     GapElement e;
     const auto id = new_element_id(o);
     const auto corners = read_corners(o);
-    e.angle_deg = number_field(o, "angle").value_or(0.0);
+    const auto angle = number_field(o, "angle");
+    e.angle_deg = angle.value_or(0.0);
     if (!id) continue;
     e.id = *id;
     if (corners) {
       e.nodes = corners->nodes;
       e.node_count = corners->count;
     }
+    if (angle && corners && gap_axis_judgeable(*corners)) {
+      judged.push_back(e);
+      angle_pointers.push_back(o.at("angle"));
+    }
     elements_.emplace(*id, Entry{as_index(s.elements.size()), true, as_index(i)});
     s.elements.push_back(e);
   }
+  check_gap_axes(judged, angle_pointers);
 }
 
 /// One of a non-empty array of {node, r?, z?} with r and/or z; no component of a node twice.

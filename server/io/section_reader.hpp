@@ -317,6 +317,11 @@ class SectionReader {
   std::optional<NodeList> read_corners(const Obj& o);
   /// Counter-clockwise with positive area; for a quadrilateral, each triangle around the centre.
   void check_shape(const NodeList& corners, const json& ids, const Where& pointer);
+  /// A gap element's M axis can be judged: its corners are placed and its shape is valid.
+  [[nodiscard]] bool gap_axis_judgeable(const NodeList& corners) const;
+  /// Each gap's M axis runs across it (solver/gap_faces.hpp: gap_axis_problems, which needs every
+  /// solid element and every gap at once), else an issue at its angle's pointer.
+  void check_gap_axes(std::span<const GapElement> gaps, std::span<const std::string> angle_pointers);
 
   // Tables.
   /// An object with exactly the keys of fields, each a number in its range.

@@ -1,6 +1,8 @@
 #include "io/section_reader.hpp"
 
+#include "element_data.hpp"
 #include "element_kernel.hpp"
+#include "gap_faces.hpp"
 #include "io/value_quote.hpp"
 
 namespace saasgaps::io {
@@ -110,6 +112,21 @@ void SectionReader::check_shape(const NodeList& corners, const json& ids, const 
                         format_number(smallest) +
                         "); the SAAS element needs all 4 triangles between its edges and the centre of its "
                         "corners to have positive area, counter-clockwise");
+  }
+}
+
+bool SectionReader::gap_axis_judgeable(const NodeList& corners) const {
+  if (!corners.complete()) return false;
+  const auto placed = [&](int n) { return node_placed_[static_cast<std::size_t>(n)]; };
+  if (!std::all_of(corners.nodes.begin(), corners.nodes.begin() + corners.count, placed)) return false;
+  // A shape check_shape refused has no faces to judge.
+  return min_twice_area(corners.count, corner_coordinates(model_, corners.nodes, corners.count)) > 0.0;
+}
+
+void SectionReader::check_gap_axes(std::span<const GapElement> gaps, std::span<const std::string> angle_pointers) {
+  const std::vector<std::optional<std::string>> problems = gap_axis_problems(model_, gaps);
+  for (std::size_t k = 0; k < problems.size(); ++k) {
+    if (problems[k]) report(angle_pointers[k], *problems[k]);
   }
 }
 

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "errors.hpp"
+#include "gap_faces.hpp"
 #include "io/assembly_reader.hpp"
 #include "io/gap_generator.hpp"
 #include "io/model_reader.hpp"
@@ -397,6 +398,44 @@ TEST(GapGenerator, SlantedFacesPairAlongTheNormal) {
   const io::GapGeneration fewer = io::generate_gaps(a, b, x, ids, 0.1);
   ASSERT_FALSE(fewer.problems.empty());
   EXPECT_NE(fewer.problems.front().find("node 1 at (0, 0)"), std::string::npos) << fewer.problems.front();
+}
+
+/// Generated angles pass the model reader's rule (solver/gap_faces.hpp), whatever the clearance; a
+/// pairing whose facing nodes are offset along the faces far more than the clearance would turn M
+/// along the faces, and is a problem of the generation naming the nodes.
+TEST(GapGenerator, GeneratedAnglesRunAcrossTheGapOrTheNodesAreNamed) {
+  const auto faces = [](double clearance, double offset, std::vector<Vec2>& x) {
+    x.clear();
+    for (int k = 0; k < 3; ++k) x.emplace_back(k, 0.0);                  // A: z = 0, 1 between nodes
+    for (int k = 0; k < 3; ++k) x.emplace_back(k + offset, clearance);   // B above it
+  };
+  const std::vector<int> ids{1, 2, 3, 11, 12, 13};
+  io::FaceChain a, b;
+  a.nodes = {0, 1, 2};
+  b.nodes = {3, 4, 5};
+  a.outward.assign(2, Vec2(0, 1));
+  b.outward.assign(2, Vec2(0, -1));
+  std::vector<Vec2> x;
+  for (double clearance : {0.01, 1.0, 3.0}) {  // thin, square and wider than long: all across
+    faces(clearance, 0.0, x);
+    const io::GapGeneration g = io::generate_gaps(a, b, x, ids, 0.1);
+    ASSERT_TRUE(g.problems.empty()) << g.problems.front();
+    for (const io::GeneratedGap& gap : g.gaps) {
+      std::array<Vec2, 4> corners{};
+      for (std::size_t i = 0; i < 4; ++i) corners[i] = x[static_cast<std::size_t>(gap.nodes[i])];
+      EXPECT_TRUE(runs_across(gap_faces(corners, 4, gap.angle_deg)));
+      EXPECT_NEAR(gap.angle_deg, 90.0, 1e-9);
+    }
+  }
+  // Offset 0.09 (within the 0.1 tolerance) across a clearance of 0.01: M at 6.3 degrees, along the faces.
+  faces(0.01, 0.09, x);
+  const io::GapGeneration sheared = io::generate_gaps(a, b, x, ids, 0.1);
+  ASSERT_EQ(sheared.problems.size(), 2U);
+  EXPECT_TRUE(sheared.gaps.empty());
+  EXPECT_NE(sheared.problems.front().find("between nodes 1-2 and 11-12 would have its M axis (6.3"), std::string::npos)
+      << sheared.problems.front();
+  EXPECT_NE(sheared.problems.front().find("more than 30 degrees off perpendicular to its faces"), std::string::npos)
+      << sheared.problems.front();
 }
 
 }  // namespace

@@ -748,6 +748,27 @@ TEST(ModelReaderRules, GapElementsAreNonEmpty) {
   EXPECT_TRUE(rejects(with(valid_model(), "/gaps/elements", json::array()), "/gaps/elements", {"empty"}));
 }
 
+TEST(ModelReaderRules, AGapsMAxisRunsAcrossItsLongSidesInBothMethods) {
+  // Gap 11 is a horizontal strip 1 long and 0.01 thick (nodes 7-8 below, 1-2 above), M at 90 degrees.
+  for (const char* method : {"classic", "exact"}) {
+    const json doc = with(valid_model(), "/gaps/method", method);
+    // angle 0 crosses the strip's 0.01 ends, one of them shared with gap 12: along the gap.
+    EXPECT_TRUE(rejects(with(doc, "/gaps/elements/0/angle", 0), "/gaps/elements/0/angle",
+                        {"angle 0 does not run across gap element 11: M crosses nodes 8-2 and 7-1",
+                         "its edge 8-2 is also an edge of another gap element", "faces are nodes 7-8 and 1-2",
+                         "angle 90 (or that plus or minus 180)"}))
+        << method;
+    // 45 degrees crosses no pair of opposite edges within 30 degrees.
+    EXPECT_TRUE(rejects(with(doc, "/gaps/elements/1/angle", 45), "/gaps/elements/1/angle",
+                        {"angle 45", "gap element 12", "within 30 degrees of perpendicular"}))
+        << method;
+    // Either way across, and up to 30 degrees off, is across.
+    for (double angle : {-90.0, 270.0, 90.0 + 29.0}) {
+      EXPECT_NO_THROW((void)read_model(with(doc, "/gaps/elements/0/angle", angle))) << method << " " << angle;
+    }
+  }
+}
+
 // ------------------------------------------------------------------------------------------------
 // constraints
 

@@ -170,6 +170,29 @@ TEST_F(Service, EveryBadRequestClassGetsItsStatusAndAPointer) {
   problem(client.Post("/v1/jobs/" + std::to_string(job) + "/cancel", "", "application/json"), 409);
 }
 
+/// Issue 22: a body pulled off its gaps is a failed job saying why, never a green "converged"; a gap
+/// angle along the gap is refused with 422 at its pointer.
+TEST_F(Service, APulledOffBodyFailsAndAGapAngleAlongTheGapIs422) {
+  ServerProcess server(database());
+  httplib::Client client = server.client();
+  json pulled = json::parse(example_text("report-problem1.json"));
+  for (auto& p : pulled["loads"]["pressures"]) p["normal"] = -p["normal"].get<double>();
+  const std::int64_t job = submit(client, pulled.dump());
+  const json done = wait_for_state(client, job, {"converged", "not_converged", "failed"});
+  EXPECT_EQ(done["state"], "failed") << done.dump();
+  EXPECT_NE(done["error"].get<std::string>().find("the contact problem has no solution"), std::string::npos)
+      << done.dump();
+
+  json along = json::parse(example_text("report-problem1.json"));
+  along["gaps"]["elements"][3]["angle"] = 0.0;
+  const json refused = problem(client.Post("/v1/jobs", along.dump(), "application/json"), 422);
+  ASSERT_EQ(refused["errors"].size(), 1U) << refused.dump();
+  EXPECT_EQ(refused["errors"][0]["pointer"], "/gaps/elements/3/angle");
+  EXPECT_NE(refused["errors"][0]["detail"].get<std::string>().find("angle 0 does not run across gap element 13"),
+            std::string::npos)
+      << refused.dump();
+}
+
 TEST_F(Service, ConflictsWhileAJobRuns) {
   ServerProcess server(database());
   httplib::Client client = server.client();

@@ -277,30 +277,40 @@ TEST(ExactCrossCheck, PenaltyMethodAgreesOnHertz) {
 
 // ---- Bad input and problems without a solution.
 
-TEST(ExactInput, AGapThatCannotBePairedIsAModelErrorAtItsPointer) {
+TEST(ExactInput, AGapWhoseMAxisIsNotAcrossItIsAModelErrorAtItsAngleInBothMethods) {
   nlohmann::json doc = testing::example_document("report-problem1.json");
-  doc["gaps"]["method"] = "exact";
   doc["gaps"]["elements"][3]["angle"] = 45.0;  // no two opposite edges across M
-  try {
-    io::read_model(doc);
-    FAIL() << "accepted";
-  } catch (const ModelError& e) {
-    ASSERT_EQ(e.issues().size(), 1U);
-    EXPECT_EQ(e.issues()[0].pointer, "/gaps/elements/3");
-    EXPECT_NE(e.issues()[0].detail.find("gap element 13 cannot be paired"), std::string::npos) << e.issues()[0].detail;
+  for (const char* method : {"exact", "classic"}) {
+    doc["gaps"]["method"] = method;
+    try {
+      io::read_model(doc);
+      FAIL() << "accepted in " << method;
+    } catch (const ModelError& e) {
+      ASSERT_EQ(e.issues().size(), 1U);
+      EXPECT_EQ(e.issues()[0].pointer, "/gaps/elements/3/angle");
+      EXPECT_NE(e.issues()[0].detail.find("angle 45 does not run across gap element 13"), std::string::npos)
+          << e.issues()[0].detail;
+    }
   }
-  // The same document in classic mode is fine: pairing is the exact mode's rule.
-  doc["gaps"]["method"] = "classic";
-  EXPECT_NO_THROW(io::read_model(doc));
+  // A model that did not come through the reader: the exact mode's pairing says the same.
+  doc["gaps"]["elements"][3]["angle"] = 90.0;
+  Model m = io::read_model(doc);
+  m.gaps->elements[3].angle_deg = 45.0;
+  const std::vector<PairingIssue> issues = contact_pairing_issues(m);
+  ASSERT_EQ(issues.size(), 1U);
+  EXPECT_EQ(issues[0].gap, 3U);
+  EXPECT_NE(issues[0].detail.find("gap element 13 cannot be paired: angle 45 does not run across"), std::string::npos)
+      << issues[0].detail;
 }
 
 TEST(ExactInput, ZeroSeparationAndANodeFacingNothingAreNamed) {
   Model m;
-  m.nodes = {{1, 0.0, 0.0}, {2, 1.0, 0.0}, {3, 1.0, 0.01}, {4, 0.0, 0.0}, {5, 3.0, 0.01}, {6, 0.0, 0.01}};
+  m.nodes = {{1, 0.0, 0.0}, {2, 1.0, 0.0}, {3, 1.0, 0.01}, {4, 0.0, 0.0}, {5, 3.0, 0.01}, {6, 0.0, 0.01},
+             {7, 0.0, 0.0}, {8, 1.0, 0.0}};
   m.gaps.emplace();
   m.gaps->tensile_schedule = {1.0};
   m.gaps->elements.push_back({7, {0, 1, 2, 3}, 4, 90.0});  // nodes 1 and 4 coincide
-  m.gaps->elements.push_back({8, {0, 1, 4, 5}, 4, 90.0});  // node 2 "faces" node 5, two lengths away
+  m.gaps->elements.push_back({8, {6, 7, 4, 5}, 4, 90.0});  // node 8 "faces" node 5, two lengths away
   const std::vector<PairingIssue> issues = contact_pairing_issues(m);
   ASSERT_EQ(issues.size(), 2U);
   EXPECT_EQ(issues[0].gap, 0U);
