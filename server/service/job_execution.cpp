@@ -96,17 +96,23 @@ std::shared_ptr<const ParsedModel> parse_run_model(const std::string& text) {
 
 void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& shutting_down,
                  const OrderingCache* ordering_cache) {
+  // Declared in this order so that the pipeline, destroyed first, ends the commit in flight while
+  // what it reads (the observer's row and state buffers, the model's digest) still exists, on every
+  // way out: a run that throws after an iteration was posted must not leave that commit reading a
+  // destroyed observer.
+  std::shared_ptr<const ParsedModel> parsed;
+  std::optional<SinkObserver> observer;
   CommitPipeline pipeline;
   try {
     // The service hands over the model its POST read already; otherwise (a resume, a restart, a
     // remote worker) the document is read here.
-    const std::shared_ptr<const ParsedModel> parsed = input.parsed ? input.parsed : parse_run_model(input.model);
+    parsed = input.parsed ? input.parsed : parse_run_model(input.model);
     const Model& model = parsed->model;
     std::optional<RestartState> state;
     if (input.state) state = io::decode_stored_state(*input.state, parsed->digest);
 
-    SinkObserver observer(sink, parsed->digest, shutting_down, pipeline);
-    const Solution solution = solve(model, &observer, state ? &*state : nullptr, input.settings, ordering_cache);
+    observer.emplace(sink, parsed->digest, shutting_down, pipeline);
+    const Solution solution = solve(model, &*observer, state ? &*state : nullptr, input.settings, ordering_cache);
     // Every iteration is committed before the run's end is; a commit that failed ends the run here.
     pipeline.wait();
 
