@@ -94,6 +94,11 @@ class JobStore::Pool {
 
 namespace detail {
 
+/// Schema versions, applied in order (job_store.cpp); PRAGMA user_version records how far a
+/// database has come.
+extern const std::vector<const char*> migrations;
+
+std::optional<JobRecord> find_job(Connection& db, std::int64_t id);
 JobRecord require_job(Connection& db, std::int64_t id);
 /// Sets a job's state (and optional message / error) and records the state event.
 void change_state(Connection& db, std::int64_t job, JobState state, const std::optional<std::string>& message = {},
