@@ -2,6 +2,7 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <cstring>
 #include <nlohmann/json.hpp>
 
@@ -60,7 +61,8 @@ std::vector<std::uint8_t> encode_stored_state(const RestartState& state, const s
   return out;
 }
 
-RestartState decode_stored_state(std::span<const std::uint8_t> bytes, const std::string& expected_digest) {
+RestartState decode_stored_state(std::span<const std::uint8_t> bytes, const std::string& expected_digest,
+                                 std::size_t max_inflated) {
   const bool compressed =
       bytes.size() >= sizeof compressed_magic && std::memcmp(bytes.data(), compressed_magic, sizeof compressed_magic) == 0;
   if (!compressed) return state_from_cbor(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), expected_digest);
@@ -73,7 +75,12 @@ RestartState decode_stored_state(std::span<const std::uint8_t> bytes, const std:
   int status = Z_OK;
   while (status == Z_OK) {
     const std::size_t done = cbor.size();
-    cbor.resize(done + std::max<std::size_t>(1 << 16, 2 * bytes.size()));
+    if (done >= max_inflated) {
+      inflateEnd(&stream);
+      throw SolverError("malformed restart state: it inflates beyond " + std::to_string(max_inflated) +
+                        " bytes, more than any model's state");
+    }
+    cbor.resize(std::min(max_inflated, done + std::max<std::size_t>(1 << 16, 2 * bytes.size())));
     stream.next_out = cbor.data() + done;
     stream.avail_out = static_cast<uInt>(cbor.size() - done);
     status = inflate(&stream, Z_NO_FLUSH);

@@ -13,6 +13,7 @@
 /// (These are versions of the storage encoding; the state inside has its own version, state_codec.hpp:
 /// 2 for a stepped model, whose position on the load path rides along as a plain array.)
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -24,7 +25,14 @@ namespace saasgaps::io {
 
 std::vector<std::uint8_t> encode_stored_state(const RestartState& state, const std::string& digest);
 
-/// Either encoding. Throws SolverError for a damaged or foreign state (see state_from_json).
-RestartState decode_stored_state(std::span<const std::uint8_t> bytes, const std::string& expected_digest);
+/// The most a compressed state may inflate to (1 GiB): a state of 10^7 unknowns is about 100 MB, and
+/// a state comes from a worker's request, so a zlib bomb (zlib reaches about 1000:1) must not be
+/// able to take the service's memory.
+inline constexpr std::size_t max_inflated_state_bytes = std::size_t{1} << 30;
+
+/// Either encoding. Throws SolverError for a damaged or foreign state (see state_from_json), or one
+/// that inflates beyond `max_inflated` bytes.
+RestartState decode_stored_state(std::span<const std::uint8_t> bytes, const std::string& expected_digest,
+                                 std::size_t max_inflated = max_inflated_state_bytes);
 
 }  // namespace saasgaps::io

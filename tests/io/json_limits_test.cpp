@@ -4,12 +4,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <fstream>
 #include <string>
 
 #include "io/json_limits.hpp"
 #include "io/json_subset.hpp"
 #include "io/model_reader.hpp"
+#include "io/stored_state.hpp"
+
+#include <zlib.h>
+
+#include "errors.hpp"
 
 namespace saasgaps::io {
 namespace {
@@ -168,6 +174,30 @@ TEST(JsonLimits, LongPointersAreAbbreviatedReadably) {
   const std::string cut = shown_pointer("/" + key + "/0");
   EXPECT_LE(cut.size(), 160u);
   EXPECT_TRUE(cut.starts_with("/kkkk")) << cut;
+}
+
+TEST(JsonLimits, ACompressedStateThatInflatesBeyondItsLimitIsRefused) {
+  // A zlib bomb in the stored-state encoding: "SGZ1" + zlib of 16 MiB of zeros (about 16 KiB).
+  const std::vector<std::uint8_t> zeros(std::size_t{16} << 20, 0);
+  uLongf size = compressBound(static_cast<uLong>(zeros.size()));
+  std::vector<std::uint8_t> bomb(4 + size);
+  std::memcpy(bomb.data(), "SGZ1", 4);
+  ASSERT_EQ(compress2(bomb.data() + 4, &size, zeros.data(), static_cast<uLong>(zeros.size()), 9), Z_OK);
+  bomb.resize(4 + size);
+  ASSERT_LT(bomb.size(), std::size_t{64} << 10);
+  try {
+    (void)decode_stored_state(bomb, "digest", std::size_t{1} << 20);
+    FAIL() << "a state inflating beyond 1 MiB was decoded";
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("inflates beyond 1048576 bytes"), std::string::npos) << e.what();
+  }
+  // Under the limit it is judged as a state (these zeros are not one), not refused for its size.
+  try {
+    (void)decode_stored_state(bomb, "digest", std::size_t{32} << 20);
+    FAIL() << "zeros were decoded as a restart state";
+  } catch (const SolverError& e) {
+    EXPECT_EQ(std::string(e.what()).find("inflates beyond"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
