@@ -25,7 +25,7 @@ namespace saasgaps::io {
 
 std::vector<std::uint8_t> encode_stored_state(const RestartState& state, const std::string& digest);
 
-/// The most a compressed state may inflate to (1 GiB): a state of 10^7 unknowns is about 100 MB, and
+/// The most a compressed state may inflate to (1 GiB): the displacements of 10^7 unknowns are 80 MB, and
 /// a state comes from a worker's request, so a zlib bomb (zlib reaches about 1000:1) must not be
 /// able to take the service's memory.
 inline constexpr std::size_t max_inflated_state_bytes = std::size_t{1} << 30;
