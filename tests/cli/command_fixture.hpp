@@ -14,13 +14,9 @@
 #include <sstream>
 #include <string>
 
-namespace saasgaps::testing {
+#include "support/captured_command.hpp"
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+namespace saasgaps::testing {
 
 class CommandTest : public ::testing::Test {
  protected:
@@ -37,23 +33,10 @@ class CommandTest : public ::testing::Test {
 
   /// Runs `saasgaps ARGUMENTS` through the shell.
   [[nodiscard]] Outcome saasgaps(const std::string& arguments) const {
-    const std::string out = path("stdout.txt");
-    const std::string err = path("stderr.txt");
-    const std::string command = std::string(SAASGAPS_BINARY) + " " + arguments + " > " + out + " 2> " + err;
-    const int status = std::system(command.c_str());
-    Outcome r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = read(out);
-    r.err = read(err);
-    return r;
+    return run_captured(std::string(SAASGAPS_BINARY) + " " + arguments, path("stdout.txt"), path("stderr.txt"));
   }
 
-  static std::string read(const std::string& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
+  static std::string read(const std::string& file) { return read_text(file); }
 
   static nlohmann::json json_of(const std::string& file) { return nlohmann::json::parse(read(file)); }
 

@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 
 #include "service/job_client.hpp"
+#include "support/captured_command.hpp"
 #include "service/long_job_model.hpp"
 #include "service/server_process.hpp"
 #include "service/service_fixture.hpp"
@@ -20,32 +21,18 @@ using nlohmann::json;
 
 #define EXPECT_CONTAINS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
 
-struct Shell {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
 
 class ClientCommands : public ServiceFixture {
  protected:
   /// Runs a shell command line in the test's directory with `saasgaps` meaning the binary under test,
   /// standard output and error captured apart (not a terminal: one line per event).
-  Shell shell(const std::string& environment, const std::string& line) const {
-    const std::string out = (dir_ / "out.txt").string(), err = (dir_ / "err.txt").string();
-    const std::string command = "cd " + dir_.string() + " && saasgaps() { " + environment + " " + SAASGAPS_BINARY +
-                                " \"$@\"; }; { " + line + "; } > " + out + " 2> " + err;
-    const int status = std::system(command.c_str());
-    Shell r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = read(out);
-    r.err = read(err);
-    return r;
+  Outcome shell(const std::string& environment, const std::string& line) const {
+    return run_captured("cd " + dir_.string() + " && saasgaps() { " + environment + " " + SAASGAPS_BINARY +
+                            " \"$@\"; }; { " + line + "; }",
+                        dir_ / "out.txt", dir_ / "err.txt");
   }
 
-  static std::string read(const std::string& file) {
-    std::ifstream in(file);
-    return {std::istreambuf_iterator<char>(in), {}};
-  }
+  static std::string read(const std::string& file) { return read_text(file); }
 
   static std::string url(const ServerProcess& server) { return "http://127.0.0.1:" + std::to_string(server.port()); }
 };
@@ -55,7 +42,7 @@ TEST_F(ClientCommands, SubmitAndWatchFollowARunToItsEndThenFetchItsParts) {
   std::ofstream(dir_ / "model.json") << example_text("report-problem3-case3.json");
   const std::string server_url = "SAASGAPS_SERVER=" + url(server);
 
-  const Shell run = shell(server_url, "id=$(saasgaps submit model.json) && echo \"job id $id\" && saasgaps watch $id");
+  const Outcome run = shell(server_url, "id=$(saasgaps submit model.json) && echo \"job id $id\" && saasgaps watch $id");
   EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_CONTAINS(run.out, "job id 1\n");
   EXPECT_CONTAINS(run.err, "submitted model.json as job 1 (queued): " + url(server) + "/v1/jobs/1");
@@ -67,16 +54,16 @@ TEST_F(ClientCommands, SubmitAndWatchFollowARunToItsEndThenFetchItsParts) {
   EXPECT_CONTAINS(run.out, "\n" + std::string(5 - iterations.size(), ' ') + iterations + " ");  // the last row
   EXPECT_CONTAINS(run.out, "job 1 converged: converged in " + iterations + " iterations");
 
-  const Shell status = shell(server_url, "saasgaps status 1");
+  const Outcome status = shell(server_url, "saasgaps status 1");
   EXPECT_EQ(status.exit_code, 0) << status.err;
   EXPECT_CONTAINS(status.out, "job 1: converged\n");
   EXPECT_CONTAINS(status.out, "iteration   " + iterations + " of at most");
-  const Shell list = shell(server_url, "saasgaps jobs --state converged && saasgaps jobs --state failed");
+  const Outcome list = shell(server_url, "saasgaps jobs --state converged && saasgaps jobs --state failed");
   EXPECT_EQ(list.exit_code, 0) << list.err;
   EXPECT_CONTAINS(list.out, "converged");
   EXPECT_CONTAINS(list.out, "no failed jobs\n");
 
-  const Shell fetch = shell(server_url, "saasgaps fetch 1 -o result.json && saasgaps fetch 1 --vtu -o result.vtu && "
+  const Outcome fetch = shell(server_url, "saasgaps fetch 1 -o result.json && saasgaps fetch 1 --vtu -o result.vtu && "
                                         "saasgaps fetch 1 --plot convergence -o convergence.svg");
   EXPECT_EQ(fetch.exit_code, 0) << fetch.err;
   const json result = json::parse(read((dir_ / "result.json").string()));
@@ -85,7 +72,7 @@ TEST_F(ClientCommands, SubmitAndWatchFollowARunToItsEndThenFetchItsParts) {
   EXPECT_CONTAINS(read((dir_ / "convergence.svg").string()), "<svg");
 
   // A job that is not there: the server's problem, title and detail, exit 1.
-  const Shell missing = shell(server_url, "saasgaps status 7");
+  const Outcome missing = shell(server_url, "saasgaps status 7");
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_CONTAINS(missing.err, "(HTTP 404)");
   EXPECT_CONTAINS(missing.err, "no job 7");
@@ -98,7 +85,7 @@ TEST_F(ClientCommands, InvalidModelIsExitTwoWithEveryPointer) {
   model["nodes"][0]["r"] = "x";
   model["solver"]["max_iterations"] = 1000000000;  // the command line's limit holds over HTTP too
   std::ofstream(dir_ / "bad.json") << model.dump();
-  const Shell r = shell("", "saasgaps submit bad.json --server " + url(server));
+  const Outcome r = shell("", "saasgaps submit bad.json --server " + url(server));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_EQ(r.out, "");
   EXPECT_CONTAINS(r.err, "error: Invalid model (HTTP 422): 3 errors");
@@ -106,7 +93,7 @@ TEST_F(ClientCommands, InvalidModelIsExitTwoWithEveryPointer) {
   EXPECT_CONTAINS(r.err, "\n/nodes/0/r: ");
   EXPECT_CONTAINS(r.err, "\n/solver/max_iterations: max_iterations = 1000000000 is out of range: need 1 <= max_iterations <= 100000");
   // No server there: exit 1 naming the URL.
-  const Shell away = shell("", "saasgaps jobs --server http://127.0.0.1:" + std::to_string(free_port()));
+  const Outcome away = shell("", "saasgaps jobs --server http://127.0.0.1:" + std::to_string(free_port()));
   EXPECT_EQ(away.exit_code, 1);
   EXPECT_CONTAINS(away.err, "is `saasgaps serve` running there?");
 }
@@ -120,27 +107,27 @@ TEST_F(ClientCommands, CancelThenResumeWithANewReadCard) {
   const std::string environment = "SAASGAPS_SERVER=" + url(server) + " SAASGAPS_TOKEN=s3cret";
 
   // Without the token the server refuses (401), and says so.
-  const Shell refused = shell("SAASGAPS_SERVER=" + url(server), "saasgaps submit long.json");
+  const Outcome refused = shell("SAASGAPS_SERVER=" + url(server), "saasgaps submit long.json");
   EXPECT_EQ(refused.exit_code, 1);
   EXPECT_CONTAINS(refused.err, "(HTTP 401)");
 
-  const Shell submitted = shell(environment, "saasgaps submit long.json");
+  const Outcome submitted = shell(environment, "saasgaps submit long.json");
   ASSERT_EQ(submitted.exit_code, 0) << submitted.err;
   const std::int64_t job = std::stoll(submitted.out);
   const std::string id = std::to_string(job);
   wait_for_running_iteration(client, job, 2);
-  const Shell cancel = shell(environment, "saasgaps cancel " + id + " && saasgaps watch " + id);
+  const Outcome cancel = shell(environment, "saasgaps cancel " + id + " && saasgaps watch " + id);
   EXPECT_EQ(cancel.exit_code, 3) << cancel.out << cancel.err;  // cancelled: it can be resumed
   EXPECT_CONTAINS(cancel.out, "job " + id + ": cancel requested; it stops at the next iteration boundary");
   EXPECT_CONTAINS(cancel.out, "job " + id + " cancelled");
   const int stopped_at = get_json(client, "/v1/jobs/" + id)["iteration"].get<int>();
   ASSERT_GE(stopped_at, 2);
 
-  const Shell bad = shell(environment, "saasgaps resume " + id + " --extrapolation 1");
+  const Outcome bad = shell(environment, "saasgaps resume " + id + " --extrapolation 1");
   EXPECT_EQ(bad.exit_code, 64);
   EXPECT_CONTAINS(bad.err, "--extrapolation: must be a number at least 0 and below 1, got \"1\"");
 
-  const Shell resumed = shell(environment, "saasgaps resume " + id + " --schedule 3,1 --max-iterations 60 --watch");
+  const Outcome resumed = shell(environment, "saasgaps resume " + id + " --schedule 3,1 --max-iterations 60 --watch");
   EXPECT_EQ(resumed.exit_code, 0) << resumed.out << resumed.err;
   EXPECT_CONTAINS(resumed.err, "job " + id + " queued to continue after " + std::to_string(stopped_at) + " iterations");
   EXPECT_CONTAINS(resumed.out, "job " + id + " converged: converged in ");
@@ -151,7 +138,7 @@ TEST_F(ClientCommands, CancelThenResumeWithANewReadCard) {
   EXPECT_EQ(get_json(client, "/v1/jobs/" + id)["max_iterations"], 60);
 
   // A converged job cannot be resumed: the server's 409, title and detail, exit 1.
-  const Shell again = shell(environment, "saasgaps resume " + id);
+  const Outcome again = shell(environment, "saasgaps resume " + id);
   EXPECT_EQ(again.exit_code, 1);
   EXPECT_CONTAINS(again.err, "(HTTP 409)");
   EXPECT_CONTAINS(again.err, "converged");
