@@ -1,5 +1,7 @@
 #include "cli/http_client.hpp"
 
+#include <csignal>
+
 #include <nlohmann/json.hpp>
 
 namespace saasgaps::cli {
@@ -73,6 +75,9 @@ ServiceClient::ServiceClient(const std::string& url, const std::string& token) :
   if (!client_.is_valid() || url.rfind("http://", 0) != 0) {
     throw std::runtime_error("--server " + url + " is not an http://HOST:PORT URL");
   }
+  // cpp-httplib 0.11 sends without MSG_NOSIGNAL: a server that answers before reading the whole
+  // body (a 401, a 413) and closes would end this process with SIGPIPE instead of an error message.
+  std::signal(SIGPIPE, SIG_IGN);
   client_.set_connection_timeout(std::chrono::seconds(10));
   // The event stream sends a keep-alive comment every 15 s; a minute of silence is a dead link.
   client_.set_read_timeout(std::chrono::seconds(60));

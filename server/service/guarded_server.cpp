@@ -208,6 +208,22 @@ void refuse_brotli(httplib::Request& req) {
   }
 }
 
+/// The lingering close: says "no more answers" (FIN), then reads and discards what the client is
+/// still sending until it closes its side or `linger` passes, then closes. Bounded by time, not
+/// size, so a client cannot hold the thread longer than `linger`.
+void drain_then_close(socket_t sock, std::chrono::milliseconds linger) {
+  ::shutdown(sock, SHUT_WR);
+  const Clock::time_point until = Clock::now() + linger;
+  std::array<char, 65536> sink{};
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(until - Clock::now());
+    if (left.count() <= 0 || !wait_for(sock, POLLIN, left)) break;
+    const ssize_t n = ::recv(sock, sink.data(), sink.size(), 0);
+    if (n == 0 || (n < 0 && errno != EINTR)) break;
+  }
+  ::close(sock);
+}
+
 }  // namespace
 
 GuardedServer::GuardedServer(ConnectionLimits limits) : limits_(limits) {
@@ -224,6 +240,7 @@ Clock::time_point GuardedServer::request_started() { return started; }
 bool GuardedServer::process_and_close_socket(socket_t sock) {
   DeadlineStream stream(sock, limits_);
   bool ok = true;
+  bool refused_unread = false;
   for (std::size_t served = 0; served < limits_.max_requests_per_connection && is_running(); ++served) {
     // An idle connection waits for its next request no longer than the keep-alive timeout.
     if (!stream.has_buffered() && !wait_for(sock, POLLIN, limits_.keep_alive_timeout)) break;
@@ -235,11 +252,18 @@ bool GuardedServer::process_and_close_socket(socket_t sock) {
     ok = process_request(stream, last, connection_closed, refuse_brotli);
     // A head that did not arrive in time was answered 400; what the client sends next is not a
     // request either.
-    if (!ok || connection_closed || close_requested || stream.head_failed()) break;
+    if (!ok || connection_closed || close_requested || stream.head_failed()) {
+      refused_unread = close_requested;
+      break;
+    }
   }
   close_requested = false;
-  ::shutdown(sock, SHUT_RDWR);
-  ::close(sock);
+  if (refused_unread) {
+    drain_then_close(sock, limits_.linger);
+  } else {
+    ::shutdown(sock, SHUT_RDWR);
+    ::close(sock);
+  }
   return ok;
 }
 

@@ -23,6 +23,12 @@ struct ConnectionLimits {
   std::chrono::milliseconds keep_alive_timeout{5000};   ///< idle time before a connection is closed
   std::chrono::milliseconds read_timeout{5000};         ///< any one read of a request body
   std::chrono::milliseconds write_timeout{5000};        ///< any one write of a response
+  /// After answering a request refused before its body was read, how long the unread body is
+  /// drained before the socket closes. Closing with unread bytes makes the kernel send a reset,
+  /// which a client still sending its body (most do: they read only after writing) gets instead
+  /// of the answer: a 401 or 415 would arrive as "connection reset" or, without MSG_NOSIGNAL, kill
+  /// the client with SIGPIPE.
+  std::chrono::milliseconds linger{2000};
   std::size_t max_requests_per_connection = 100;
   std::size_t max_threads = 512;  ///< connections served at once; more wait for a thread
 };

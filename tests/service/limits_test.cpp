@@ -5,6 +5,7 @@
 // path has one spelling.
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <string>
 
 #include "service/raw_http.hpp"
@@ -148,6 +149,26 @@ TEST_F(Limits, JobIdsInPathsHaveOneSpelling) {
       raw_exchange(server.port(), "POST /v1/jobs/%31/cancel HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: 0\r\n"
                                   "Connection: close\r\n\r\n");
   EXPECT_EQ(status_of(cancel), 404) << cancel;
+  expect_alive(client);
+}
+
+TEST_F(Limits, ARequestRefusedBeforeItsBodyIsReadStillGetsItsAnswer) {
+  std::ofstream(dir_ / "token") << "s3cret\n";
+  ServerProcess server(database(), {"--token-file", (dir_ / "token").string()});
+  httplib::Client client = server.client();
+  // 8 MB, far beyond the socket buffers: the client is still sending when the server answers. The
+  // server drains the unread body, so the client reads the answer rather than a reset.
+  const std::string body(8u << 20, ' ');
+  std::signal(SIGPIPE, SIG_IGN);  // a reset is a failed expectation here, not the end of the test
+  for (int round = 0; round < 3; ++round) {
+    const httplib::Result unauthorized = client.Post("/v1/jobs", body, "application/json");
+    ASSERT_TRUE(unauthorized) << "no answer: " << httplib::to_string(unauthorized.error());
+    EXPECT_EQ(unauthorized->status, 401) << unauthorized->body;
+  }
+  client.set_bearer_token_auth("s3cret");
+  const httplib::Result not_json = client.Post("/v1/jobs", body, "text/plain");
+  ASSERT_TRUE(not_json) << "no answer: " << httplib::to_string(not_json.error());
+  EXPECT_EQ(not_json->status, 415) << not_json->body;
   expect_alive(client);
 }
 
