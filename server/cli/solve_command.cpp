@@ -10,6 +10,8 @@
 #include "io/json_text.hpp"
 #include "io/model_reader.hpp"
 #include "cli/progress_table.hpp"
+#include "cli/usage.hpp"
+#include "io/read_card.hpp"
 #include "io/result_writer.hpp"
 #include "io/state_codec.hpp"
 #include "io/vtu_writer.hpp"
@@ -84,6 +86,13 @@ int run_solve(const SolveOptions& options) {
   std::string digest;
   const bool restarts = !options.state_out.empty() || !options.resume_from.empty();
   const Model model = io::parse_model(read_file(options.model_path), restarts ? &digest : nullptr);
+
+  // Said by the HTTP resume body too (io/read_card.hpp): ignoring them would run something else
+  // than what was asked.
+  if (!model.gaps && options.changes.tensile_schedule) throw UsageError(std::string("solve --schedule: ") + io::no_gaps_schedule);
+  if (!model.gaps && options.changes.extrapolation_factor) {
+    throw UsageError(std::string("solve --extrapolation: ") + io::no_gaps_extrapolation);
+  }
 
   std::optional<RestartState> resume;
   if (!options.resume_from.empty()) {

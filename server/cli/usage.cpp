@@ -152,6 +152,9 @@ int run_command(const std::function<int()>& command, const std::string& document
       std::cerr << (issue.pointer.empty() ? "(document)" : issue.pointer) << ": " << issue.detail << '\n';
     }
     return e.status() == 422 ? exit_code::bad_model : exit_code::failure;
+  } catch (const UsageError& e) {
+    std::cerr << "saasgaps " << e.what() << '\n';
+    return exit_code::usage;
   } catch (const ModelError& e) {
     std::cerr << "invalid " << document << ": " << plural(static_cast<long long>(e.issues().size()), "error") << '\n';
     for (const InputIssue& issue : e.issues()) {

@@ -8,10 +8,18 @@
 
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace saasgaps::cli {
+
+/// A command line that parsed but does not fit what it names (an option the model cannot use):
+/// reported like a parse error, "saasgaps <what>" (what names the command and option), exit code 64.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 /// Exit codes. 0-3 are the contract of `solve` (service.md); 64 is EX_USAGE of BSD's sysexits.h,
 /// kept apart from 2 so that a script can tell "this model is bad" from "this command line is".

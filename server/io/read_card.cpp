@@ -38,7 +38,7 @@ ResumeOptions read_card_from_json(const json& value, ReadCardForm form, bool mod
   for (const auto& [key, member] : value.items()) {
     const std::string pointer = pointer_append("", key);
     if (key == "tensile_schedule") {
-      if (!model_has_gaps) issues.push_back({pointer, "the model has no gaps, so it has no tensile schedule"});
+      if (!model_has_gaps) issues.push_back({pointer, no_gaps_schedule});
       if (!member.is_array() || member.empty()) {
         issues.push_back({pointer, refusal(tensile_schedule_rule, member)});
         continue;
@@ -60,7 +60,7 @@ ResumeOptions read_card_from_json(const json& value, ReadCardForm form, bool mod
         card.max_iterations = member.get<int>();
       }
     } else if (key == "extrapolation_factor") {
-      if (!model_has_gaps) issues.push_back({pointer, "the model has no gaps, so nothing to extrapolate"});
+      if (!model_has_gaps) issues.push_back({pointer, no_gaps_extrapolation});
       if (!member.is_number() || !extrapolation_factor_allowed(member.get<double>())) {
         issues.push_back({pointer, refusal(extrapolation_factor_rule, member)});
       } else {

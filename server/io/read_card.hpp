@@ -25,6 +25,9 @@ namespace saasgaps::io {
 inline constexpr const char* tensile_modulus_rule = "must be a number > 0";
 inline constexpr const char* tensile_schedule_rule = "must be a non-empty array of numbers > 0";
 inline constexpr const char* extrapolation_factor_rule = "must be a number at least 0 and below 1";
+/// Why a model without gaps takes neither a schedule nor a factor (said by every way in).
+inline constexpr const char* no_gaps_schedule = "the model has no gaps, so it has no tensile schedule";
+inline constexpr const char* no_gaps_extrapolation = "the model has no gaps, so nothing to extrapolate";
 
 /// Which members a JSON form holds.
 enum class ReadCardForm {

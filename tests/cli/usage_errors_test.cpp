@@ -67,6 +67,17 @@ TEST_F(UsageErrors, BadOptionValueNamesTheValue) {
   EXPECT_CONTAINS(schedule.err, "--schedule: must be a number > 0, got \"-1\"");
 }
 
+TEST_F(UsageErrors, ScheduleOrFactorForAModelWithoutGapsIsRefusedNotIgnored) {
+  // A schedule the run would not use is a mistake to say, not to ignore (the HTTP body says so too).
+  const Outcome schedule = saasgaps("solve -o - --schedule 5,6 " + example("report-beam-model-a.json"));
+  EXPECT_EQ(schedule.exit_code, usage);
+  EXPECT_EQ(schedule.err, "saasgaps solve --schedule: the model has no gaps, so it has no tensile schedule\n");
+  EXPECT_EQ(schedule.out, "");
+  const Outcome factor = saasgaps("solve -o - --extrapolation 0.5 " + example("report-beam-model-a.json"));
+  EXPECT_EQ(factor.exit_code, usage);
+  EXPECT_EQ(factor.err, "saasgaps solve --extrapolation: the model has no gaps, so nothing to extrapolate\n");
+}
+
 TEST_F(UsageErrors, VersionAndHelpExitZero) {
   const Outcome version = saasgaps("--version");
   EXPECT_EQ(version.exit_code, 0);
