@@ -212,8 +212,9 @@ class JobStore {
   /// Start-up: jobs left running by a dead server become interrupted (to be resumed by the
   /// workers), or failed once interrupted more than max_interruptions times; a job whose cancel was
   /// acknowledged (cancel_requested committed) becomes cancelled, keeping its restart state.
-  /// Returns how many. keep_slurm_jobs: jobs handed to a Slurm job stay running (the Slurm monitor
-  /// decides), unless their cancel was acknowledged. When the store cannot write (a full disk), the
+  /// Returns how many. keep_slurm_jobs: jobs handed to a Slurm job stay running, whatever their
+  /// cancel flag: the Slurm monitor decides, and it is the one that scancels and records those whose
+  /// cancel was acknowledged (the Slurm job may still be running on the cluster). When the store cannot write (a full disk), the
   /// jobs are shown interrupted from memory and recorded by recover_writes once space returns.
   int recover_interrupted(bool keep_slurm_jobs = false);
 
