@@ -7,6 +7,9 @@
 
 #include <chrono>
 #include <future>
+#include <vector>
+
+#include <unistd.h>
 
 #include "service/service_fixture.hpp"
 
@@ -179,6 +182,58 @@ TEST_F(HostileGeometry, CliImportOfAHostileGeometry) {
   EXPECT_NE(run.output.find("system call the sandbox forbids"), std::string::npos) << run.output;
   EXPECT_FALSE(fs::exists(marker_));
   EXPECT_FALSE(fs::exists(work / "model.json"));
+}
+
+/// `saasgaps import` of the ring-fit assembly with `geo` as its geometry, run as the user nobody
+/// (the sandbox then confines Gmsh inside a user namespace of its own), after `limits` (a prlimit
+/// option, or empty). Needs root to become nobody.
+class UnprivilegedImport : public HostileGeometry {
+ protected:
+  CommandResult import_as_nobody(const std::string& geo, const std::string& limits = "") {
+    work_ = dir_ / "nobody";
+    fs::create_directories(work_);
+    std::ofstream(work_ / "ring-fit.assembly.json") << example_text("assemblies/ring-fit.assembly.json");
+    std::ofstream(work_ / "ring-fit.geo") << geo;
+    fs::permissions(dir_, fs::perms::all, fs::perm_options::add);
+    fs::permissions(work_, fs::perms::all, fs::perm_options::add);
+    std::vector<std::string> argv{"setpriv", "--reuid=65534", "--regid=65534", "--clear-groups"};
+    if (!limits.empty()) argv.insert(argv.end(), {"prlimit", limits});
+    argv.insert(argv.end(), {SAASGAPS_BINARY, "import", (work_ / "ring-fit.assembly.json").string(), "-o",
+                             (work_ / "model.json").string()});
+    return run_command(argv);
+  }
+  void SetUp() override {
+    HostileGeometry::SetUp();
+    if (::geteuid() != 0) GTEST_SKIP() << "becoming the user nobody needs root";
+  }
+  fs::path work_;
+};
+
+TEST_F(UnprivilegedImport, WithoutRootTheSandboxStillRefusesShellCommands) {
+  const CommandResult benign = import_as_nobody(ring_with(""));
+  if (benign.output.find("unshare(CLONE_NEWUSER") != std::string::npos) {
+    // A host (or container) without user namespaces: the sandbox fails closed, as the next test shows.
+    GTEST_SKIP() << "user namespaces are not allowed here: " << benign.output;
+  }
+  ASSERT_EQ(benign.exit_code, 0) << benign.output;
+  EXPECT_TRUE(fs::exists(work_ / "model.json"));
+  fs::remove(work_ / "model.json");
+  const CommandResult hostile = import_as_nobody(ring_with("System \"touch " + (work_ / "marker").string() + "\";"));
+  EXPECT_EQ(hostile.exit_code, 2) << hostile.output;
+  EXPECT_NE(hostile.output.find("system call the sandbox forbids"), std::string::npos) << hostile.output;
+  EXPECT_FALSE(fs::exists(work_ / "marker"));
+  EXPECT_FALSE(fs::exists(work_ / "model.json"));
+}
+
+TEST_F(UnprivilegedImport, ASandboxThatCannotBeSetUpMeshesNothing) {
+  // A hard limit of 32 open files, which nobody cannot raise to the sandbox's 64: setting up the
+  // sandbox fails, and the geometry is not read at all (fail closed), even a benign one.
+  const CommandResult refused = import_as_nobody(ring_with(""), "--nofile=32:32");
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("cannot confine Gmsh to the directory of"), std::string::npos) << refused.output;
+  EXPECT_NE(refused.output.find("setrlimit RLIMIT_NOFILE"), std::string::npos) << refused.output;
+  EXPECT_NE(refused.output.find("a mesh is read only inside that sandbox"), std::string::npos) << refused.output;
+  EXPECT_FALSE(fs::exists(work_ / "model.json"));
 }
 
 }  // namespace
