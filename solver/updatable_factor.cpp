@@ -20,6 +20,7 @@ struct UpdatableFactor::Impl {
   std::vector<Index> colptr, rowind;
   std::vector<double> values;
   std::vector<std::pair<Index, double>> column;
+  std::vector<double> pivots;  // d_j before a downdate
 
   Impl() {
     configure_solver_threads();  // CHOLMOD's OpenMP loops serial on this thread, as for SparseCholesky
@@ -73,9 +74,23 @@ void UpdatableFactor::update(const UpdateColumns& columns, bool add) {
   }
   cholmod_sparse W = cholmod_csc_view(m.L->n, columns.size(), m.rowind.size(), m.colptr.data(), m.rowind.data(),
                                       m.values.data(), 0, CHOLMOD_REAL);
+  // Simplicial LDL': d_j is the first entry of column j. A downdate that removes the only stiffness
+  // of a mode (the last constraint holding a body) leaves its pivot at round-off, not negative:
+  // SparseCholesky's rule (a pivot below singular_pivot_ratio of what it was) catches it.
+  const auto* p = static_cast<const Index*>(m.L->p);
+  const auto pivot = [&m, p](std::size_t j) { return static_cast<const double*>(m.L->x)[p[j]]; };
+  if (!add) {
+    m.pivots.resize(m.L->n);
+    for (std::size_t j = 0; j < m.L->n; ++j) m.pivots[j] = pivot(j);
+  }
   if (!cholmod_l_updown(add, &W, m.L, &m.common)) m.fail("updown");
   if (m.common.status == CHOLMOD_NOT_POSDEF) {
     throw NotPositiveDefinite("a downdate lost positive definiteness", {});
+  }
+  for (std::size_t j = 0; !add && j < m.L->n; ++j) {
+    if (pivot(j) < SparseCholesky::singular_pivot_ratio * m.pivots[j]) {
+      throw NotPositiveDefinite("a downdate left a pivot at round-off", {static_cast<const Index*>(m.L->Perm)[j]});
+    }
   }
 }
 

@@ -1,0 +1,170 @@
+#include "constraint_rows.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+#include "errors.hpp"
+
+namespace saasgaps {
+
+ConstraintRows::ConstraintRows(const DofMap& dofs, const CscPattern& pattern) : dofs_(dofs), pattern_(pattern) {
+  diagonal_.resize(static_cast<std::size_t>(pattern.n));
+  for (Index j = 0; j < pattern.n; ++j) diagonal_[j] = pattern.find(j, j);
+  b_.resize(static_cast<std::size_t>(pattern.n));
+}
+
+std::size_t ConstraintRows::add(std::span<const int> nodes, std::span<const double> weights, const Vec2& direction,
+                                double g0) {
+  assert(nodes.size() == weights.size());
+  Row row;
+  row.first = entries_.size();
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    for (int dir = 0; dir < 2; ++dir) {
+      // cos(90 degrees) is 6e-17, not 0: such a component is no coupling (and would give a row
+      // whose only free unknown is across the direction a vanishing penalty).
+      const double coefficient = weights[k] * direction[dir];
+      if (std::abs(coefficient) <= 1.0e-12 * std::abs(weights[k])) continue;
+      const Index eq = dofs_.equation(nodes[k], dir);
+      if (eq >= 0) {
+        entries_.push_back({eq, coefficient});
+      } else {
+        g0 += coefficient * dofs_.prescribed(nodes[k], dir);
+      }
+    }
+  }
+  row.last = entries_.size();
+  row.prescribed_g0 = row.g0 = g0;
+  row.first_product = positions_.size();
+  const std::span<const Entry> e = std::span<const Entry>(entries_).subspan(row.first, row.last - row.first);
+  for (std::size_t a = 0; a < e.size(); ++a) {
+    for (std::size_t b = a; b < e.size(); ++b) {
+      const Index position = pattern_.find(e[a].equation, e[b].equation);
+      assert(position >= 0 && "the pattern must couple the unknowns of a constraint row");
+      positions_.push_back(position);
+      products_.push_back(e[a].coefficient * e[b].coefficient);
+    }
+  }
+  row.last_product = positions_.size();
+  rows_.push_back(row);
+  return rows_.size() - 1;
+}
+
+double ConstraintRows::value(std::size_t r, std::span<const double> u) const {
+  double g = rows_[r].g0;
+  for (const Entry& e : entries(r)) g += e.coefficient * u[e.equation];
+  return g;
+}
+
+void ConstraintRows::add_load(std::size_t r, double load, std::span<double> b) const {
+  for (const Entry& e : entries(r)) b[e.equation] += e.coefficient * load;
+}
+
+void ConstraintRows::set_penalties(std::span<const double> values) {
+  // c_r^T diag(K) c_r is the stiffness the row's nodes have.
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    Row& row = rows_[r];
+    row.stiffness = 0.0;
+    for (const Entry& e : entries(r)) row.stiffness += e.coefficient * e.coefficient * values[diagonal_[e.equation]];
+    row.rho = penalty_factor * row.stiffness;
+  }
+  factored_.clear();
+  held_.clear();
+  cholesky_ = nullptr;
+}
+
+void ConstraintRows::factor(SparseCholesky& cholesky, std::span<const double> values,
+                            std::span<const std::uint8_t> active) {
+  values_.assign(values.begin(), values.end());
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    if (!active[r]) continue;
+    const Row& row = rows_[r];
+    for (std::size_t k = row.first_product; k < row.last_product; ++k) values_[positions_[k]] += row.rho * products_[k];
+  }
+  cholesky.factorize(values_);
+}
+
+void ConstraintRows::update(std::span<const std::uint8_t> active) {
+  for (const bool add : {true, false}) {
+    columns_.clear();
+    for (std::size_t r = 0; r < rows_.size(); ++r) {
+      if (held_[r] == active[r] || static_cast<bool>(active[r]) != add) continue;
+      // rho_r c_r c_r^T = w w^T with w = sqrt(rho_r) c_r.
+      for (const Entry& e : entries(r)) columns_.add(e.equation, std::sqrt(rows_[r].rho) * e.coefficient);
+      columns_.end_column();
+    }
+    updatable_.update(columns_, add);
+  }
+}
+
+bool ConstraintRows::hold(SparseCholesky& cholesky, std::span<const double> values,
+                          std::span<const std::uint8_t> active) {
+  assert(active.size() == rows_.size());
+  // The step's rank: rows that change from the set the factor (or its updated copy) holds.
+  const std::vector<std::uint8_t>& from = held_.empty() ? factored_ : held_;
+  int distance = 0;
+  for (std::size_t r = 0; r < rows_.size() && !from.empty(); ++r) distance += from[r] != active[r];
+  if (!factored_.empty() && cholesky_ == &cholesky && distance <= max_update_rank) {
+    try {
+      if (held_.empty()) {
+        updatable_.copy(cholesky);
+        held_ = factored_;
+      }
+      update(active);
+      held_.assign(active.begin(), active.end());
+      return false;
+    } catch (const NotPositiveDefinite&) {
+      held_.clear();  // a downdate lost definiteness to round-off: factorize afresh
+    }
+  }
+  factored_.clear();  // a factorization that throws holds nothing
+  held_.clear();
+  factor(cholesky, values, active);
+  cholesky_ = &cholesky;
+  factored_.assign(active.begin(), active.end());
+  return true;
+}
+
+double ConstraintRows::multipliers(std::span<const double> rhs, std::span<const std::uint8_t> active,
+                                   std::span<double> force, std::span<double> u, double length, int& iterations,
+                                   const DependentLoad& dependent) {
+  assert(cholesky_ != nullptr && "hold() before multipliers()");
+  double previous = std::numeric_limits<double>::infinity();
+  double worst = 0.0;
+  int stalled = 0;
+  for (int m = 0; m < max_multiplier_iterations; ++m) {
+    // K_A u = f + p + C_A^T (lambda - rho g0): the penalty's pull toward g = 0 plus the forces so far.
+    std::copy(rhs.begin(), rhs.end(), b_.begin());
+    for (std::size_t r = 0; r < rows_.size(); ++r) {
+      if (active[r]) add_load(r, force[r] - rows_[r].rho * rows_[r].g0, b_);
+    }
+    const double moved = dependent ? dependent(force, b_) : 0.0;
+    if (held_.empty()) {
+      cholesky_->solve(b_, u);
+    } else {
+      updatable_.solve(b_, u);
+    }
+    ++iterations;
+    // lambda <- lambda - rho g(u). With the new lambda, K u = f + p + C_A^T lambda holds exactly: u is
+    // in equilibrium with the updated forces, and g_A is what is left to remove.
+    worst = moved;
+    for (std::size_t r = 0; r < rows_.size(); ++r) {
+      if (!active[r]) continue;
+      const double g = value(r, u);
+      force[r] -= rows_[r].rho * g;
+      worst = std::max(worst, std::abs(g));
+    }
+    if (!std::isfinite(worst)) throw SolverError("the contact solve produced non-finite displacements");
+    double scale = length;
+    for (double x : u) scale = std::max(scale, std::abs(x));
+    if (worst <= round_off * scale) break;
+    // Below round-off nothing more can be gained: stop when two steps in a row fail to halve it.
+    stalled = worst > 0.5 * previous ? stalled + 1 : 0;
+    if (stalled >= 2) break;
+    previous = worst;
+  }
+  return worst;
+}
+
+}  // namespace saasgaps

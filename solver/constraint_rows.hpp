@@ -1,0 +1,126 @@
+#pragma once
+/// Linear constraint rows of any width over the free unknowns, and the equality-constrained solve on
+/// any subset A of them that the exact contact solvers (exact_contact.hpp, frictional_contact.hpp)
+/// repeat for each active set:
+///   row r:   g_r(u) = g0_r + c_r . u,    c_r = d_r . sum_k w_rk u_k   (d_r a unit direction: a
+///            contact normal, or its tangent; prescribed components are folded into g0_r),
+///   find u, lambda_A with   K u = f + C_A^T lambda_A + p(lambda),   g_A(u) = 0,
+/// where p(lambda) is an optional load that depends on the multipliers (friction's slip forces).
+///
+/// The equality problem is solved to round-off by augmented-Lagrangian multiplier (Uzawa)
+/// iterations on ONE factorization of
+///   K_A = K + sum_{r in A} rho_r c_r c_r^T,     rho_r = penalty_factor * k_r,  k_r = c_r^T diag(K) c_r,
+///   K_A u = f + p(lambda) + C_A^T (lambda - rho g0),     lambda_r <- lambda_r - rho_r g_r(u),
+/// each iteration one pair of triangular solves. After each update K u = f + p + C_A^T lambda holds
+/// exactly; g_A is what is left. A change of A by at most max_update_rank rows is a rank-k update
+/// and downdate of a simplicial copy of the factor (updatable_factor.hpp), not a factorization.
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "csc_pattern.hpp"
+#include "dof_map.hpp"
+#include "sparse_cholesky.hpp"
+#include "updatable_factor.hpp"
+#include "voigt.hpp"
+
+namespace saasgaps {
+
+class ConstraintRows {
+ public:
+  /// Multiplier iterations per active set (each one solve).
+  static constexpr int max_multiplier_iterations = 40;
+  /// rho_r / k_r: large enough that each multiplier step gains about four digits, small enough not
+  /// to spoil the factorization's accuracy.
+  static constexpr double penalty_factor = 1.0e4;
+  /// An active-set change of at most this many rows updates the factorization instead of
+  /// refactorizing (at larger ranks an update costs as much as a factorization).
+  static constexpr int max_update_rank = 100;
+  /// Round-off: residuals below this fraction of the length scale are zero.
+  static constexpr double round_off = 1.0e-11;
+
+  struct Entry {
+    Index equation = -1;
+    double coefficient = 0.0;  ///< w_k d_dir: g = g0 + sum coefficient u[equation]
+  };
+
+  /// Loads that depend on the multipliers: adds p(lambda) for the current `force` to b and returns
+  /// how far (length units: force over the row stiffness) they moved since the last call.
+  using DependentLoad = std::function<double(std::span<const double> force, std::span<double> b)>;
+
+  /// pattern: the upper-triangle pattern of K; it must couple the unknowns of every row added.
+  ConstraintRows(const DofMap& dofs, const CscPattern& pattern);
+
+  /// Appends the row g = g0 + direction . sum_k weight_k u_{node_k}; returns its index. Components
+  /// along direction below 1e-12 of the weight are no coupling (cos 90 degrees is 6e-17, not 0).
+  std::size_t add(std::span<const int> nodes, std::span<const double> weights, const Vec2& direction, double g0);
+
+  [[nodiscard]] std::size_t size() const { return rows_.size(); }
+  /// True when every unknown of the row is prescribed: nothing to enforce.
+  [[nodiscard]] bool empty(std::size_t r) const { return rows_[r].first == rows_[r].last; }
+  [[nodiscard]] std::span<const Entry> entries(std::size_t r) const {
+    return std::span<const Entry>(entries_).subspan(rows_[r].first, rows_[r].last - rows_[r].first);
+  }
+  /// g0_r as added plus direction . the prescribed displacements of its nodes (DofMap values).
+  [[nodiscard]] double prescribed_g0(std::size_t r) const { return rows_[r].prescribed_g0; }
+  [[nodiscard]] double g0(std::size_t r) const { return rows_[r].g0; }
+  /// Shifts a row's target: g_r = g0 + c_r . u with a new g0 (friction's stick rows: minus the
+  /// previous increment's tangential position).
+  void set_g0(std::size_t r, double g0) { rows_[r].g0 = g0; }
+  /// g_r(u) for the free displacements u.
+  [[nodiscard]] double value(std::size_t r, std::span<const double> u) const;
+  /// k_r = c_r^T diag(K) c_r of the last set_penalties (force per length).
+  [[nodiscard]] double stiffness(std::size_t r) const { return rows_[r].stiffness; }
+  /// b += load c_r.
+  void add_load(std::size_t r, double load, std::span<double> b) const;
+
+  /// Penalties from this K's diagonal (values on the pattern), and forgets the factorization held:
+  /// call once per assembled K, before hold().
+  void set_penalties(std::span<const double> values);
+
+  /// Makes the solver hold K_A for A = active (one flag per row): a rank-k update of the held factor
+  /// when A is within max_update_rank rows of it, else a factorization of `cholesky`. Returns true
+  /// when it factorized. Throws NotPositiveDefinite when K_A is singular.
+  bool hold(SparseCholesky& cholesky, std::span<const double> values, std::span<const std::uint8_t> active);
+
+  /// Multiplier iterations on the held K_A: updates force (one per row, the active ones) and u;
+  /// returns the final max |g_A| (and the dependent load's last move). Stops at round_off times the
+  /// scale max(length, |u|_inf), or when two steps in a row fail to halve the residual.
+  double multipliers(std::span<const double> rhs, std::span<const std::uint8_t> active, std::span<double> force,
+                     std::span<double> u, double length, int& iterations, const DependentLoad& dependent = {});
+
+ private:
+  /// Row r's entries are entries_[first, last); the upper-triangle positions of c c^T and the
+  /// matching coefficient products are positions_/products_[first_product, last_product).
+  struct Row {
+    std::size_t first = 0, last = 0;
+    std::size_t first_product = 0, last_product = 0;
+    double prescribed_g0 = 0.0;
+    double g0 = 0.0;
+    double stiffness = 0.0;
+    double rho = 0.0;
+  };
+  void factor(SparseCholesky& cholesky, std::span<const double> values, std::span<const std::uint8_t> active);
+  /// Brings updatable_ from the set `held_` to `active` by a rank-k update and downdate.
+  void update(std::span<const std::uint8_t> active);
+
+  const DofMap& dofs_;
+  const CscPattern& pattern_;
+  std::vector<Row> rows_;
+  std::vector<Entry> entries_;    // every row's entries, row after row
+  std::vector<Index> positions_;  // every row's upper-triangle positions of c c^T
+  std::vector<double> products_;  // the matching coefficient products
+  std::vector<Index> diagonal_;   // position of K_jj
+  std::vector<double> values_;    // K_A
+  std::vector<double> b_;         // right-hand side of K_A u = b
+  // The supernodal factorization holds K_F (F = factored_); small changes from it go to a simplicial
+  // copy by rank-k updates and downdates (held_: the copy's set, empty when there is no copy).
+  SparseCholesky* cholesky_ = nullptr;
+  std::vector<std::uint8_t> factored_, held_;
+  UpdatableFactor updatable_;
+  UpdateColumns columns_;
+};
+
+}  // namespace saasgaps

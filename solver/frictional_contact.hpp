@@ -1,0 +1,114 @@
+#pragma once
+/// Unilateral contact with Coulomb friction, solved exactly, one load increment at a time. Point i
+/// (a ContactPair: any number of nodes with weights, unit normal n_i, tangent t_i = (-n_z, n_r)) has
+/// two rows of the same weights (constraint_rows.hpp):
+///   g_i(u) = g0_i + n_i . sum_k w_ik u_k     (gap, length),
+///   h_i(u) =        t_i . sum_k w_ik u_k     (tangential position of side b relative to side a),
+/// and the increment from the previous one's converged state (h_i^prev, part of FrictionState) solves
+///   K u = f + sum_i (lambda_n,i c_n,i + lambda_t,i c_t,i),
+///   g_i >= 0, lambda_n,i >= 0, lambda_n,i g_i = 0                            (Signorini)
+///   |lambda_t,i| <= mu_i lambda_n,i;  stick (|lambda_t,i| < mu_i lambda_n,i): v_i = 0,
+///   slip: lambda_t,i = -mu_i lambda_n,i s_i,  s_i = sign(v_i)                 (Coulomb)
+/// with v_i = h_i(u) - h_i^prev the slip of the increment (backward Euler) and lambda the forces that
+/// side a puts on side b (along +n, +t; side a gets the opposite).
+///
+/// Algorithm (docs/contact.md, "Friction"): a primal-dual active set on the states open / stick /
+/// slip (and the slip direction s). For one set the problem is linear and symmetric except for the
+/// slip forces -mu lambda_n s c_t, which depend on the normal multipliers: every equality row
+/// (normal rows of the points in contact, tangential rows of the sticking ones) goes into ONE
+/// factorization of K + sum rho c c^T, and the slip forces are carried as loads updated with the
+/// normal multipliers in each augmented-Lagrangian iteration (a fixed point that contracts while mu
+/// times the normal-tangential coupling of the interface is below 1; zero for one material on both
+/// sides). Then
+///   open  -> contact (stick; slip when mu = 0)   where g < -tol,
+///   contact -> open                               where lambda_n < -tol k_n,
+///   stick -> slip, s = -sign(lambda_t)            where |lambda_t| - mu lambda_n > tol k_t,
+///   slip  -> stick                                where s v < -tol (it moves against its slip),
+/// until nothing changes; a set seen before changes only its worst point. mu = 0 is exactly
+/// ExactContact's algorithm (no tangential row is ever active, every slip force is zero).
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "constraint_rows.hpp"
+#include "contact_pairs.hpp"
+#include "csc_pattern.hpp"
+#include "dof_map.hpp"
+#include "model.hpp"
+#include "sparse_cholesky.hpp"
+
+namespace saasgaps {
+
+enum class SlipState : std::uint8_t { open = 0, stick = 1, slip = 2 };
+
+/// The friction state of every contact point: what a restart state must carry. `previous` and
+/// `slip` change only in finish_increment (the increment's history); the rest is the last solve's
+/// answer and the next solve's warm start (the next increment's, or the next iteration's within an
+/// increment, e.g. of a plasticity secant loop).
+struct FrictionState {
+  std::vector<std::uint8_t> state;       ///< SlipState per point
+  std::vector<std::int8_t> direction;    ///< slip: s = sign of the increment's slip (+1, -1); else 0
+  std::vector<double> normal_force;      ///< lambda_n >= 0 (force: the nodal load it puts on each side)
+  std::vector<double> tangential_force;  ///< lambda_t on side b along t, |lambda_t| <= mu lambda_n
+  std::vector<double> position;          ///< h_i(u) of the last solve (length)
+  std::vector<double> previous;          ///< h_i at the end of the last finished increment (0 at the start)
+  std::vector<double> slip;              ///< accumulated |slip| over the finished increments (length)
+
+  [[nodiscard]] bool empty() const { return state.empty(); }
+  [[nodiscard]] std::size_t size() const { return state.size(); }
+};
+
+/// Ends an increment: slip += |position - previous| at the slipping points, previous = position.
+void finish_increment(FrictionState& state);
+
+/// Figures of one frictional contact solve, for the history row and the benchmark.
+struct FrictionReport {
+  int in_contact = 0;             ///< points stick + slip
+  int sticking = 0;
+  int slipping = 0;
+  int active_set_iterations = 0;
+  int multiplier_iterations = 0;  ///< solves, over all active sets
+  int factorizations = 0;         ///< numeric factorizations (the other active sets were rank-k updates)
+  /// Signorini: max_i |min(lambda_n,i / k_n,i, g_i)| / length scale (dimensionless).
+  double complementarity = 0.0;
+  /// Coulomb: max over the points in contact, over the length scale, of
+  ///   stick: max(|v|, (|lambda_t| - mu lambda_n) / k_t),   slip: max(|lambda_t + mu lambda_n s| / k_t, -s v).
+  double friction_residual = 0.0;
+};
+
+class FrictionalContact {
+ public:
+  /// Active sets tried before giving up (each one factorization or rank-k update).
+  static constexpr int max_active_set_iterations = 60;
+  /// Largest constraint residual accepted (over the length scale) when the multiplier iterations
+  /// stagnate before round-off.
+  static constexpr double accepted_residual = 1.0e-8;
+
+  /// friction: mu_i >= 0 per pair. The pattern must couple each pair's nodes.
+  FrictionalContact(const Model& model, const DofMap& dofs, const CscPattern& pattern, ContactPairs pairs,
+                    std::vector<double> friction);
+
+  [[nodiscard]] const ContactPairs& pairs() const { return pairs_; }
+  [[nodiscard]] const ConstraintRows& rows() const { return rows_; }
+  /// The rows of point i: normal 2 i, tangential 2 i + 1.
+  static constexpr std::size_t normal_row(std::size_t i) { return 2 * i; }
+  static constexpr std::size_t tangential_row(std::size_t i) { return 2 * i + 1; }
+
+  /// Solves one increment for the assembled K (values on `pattern`) and f (rhs) from state (its
+  /// `previous`; the rest, when not empty, is the warm start): the free displacements into u, the
+  /// forces, states and positions into state. Throws SolverError naming the reason when the
+  /// increment has no solution (a body that friction cannot hold slides away), when the active set
+  /// does not settle, or when the multipliers do not converge; NotPositiveDefinite when K is
+  /// singular with no point slipping (the usual "not restrained").
+  FrictionReport solve(SparseCholesky& cholesky, std::span<const double> values, std::span<const double> rhs,
+                       FrictionState& state, std::span<double> u);
+
+ private:
+  const Model& model_;
+  ContactPairs pairs_;
+  std::vector<double> mu_;
+  ConstraintRows rows_;
+};
+
+}  // namespace saasgaps
