@@ -16,15 +16,14 @@
 /// the last solve's, or the pairs whose initial gap is within 1 % of the smallest.
 
 #include <cstdint>
-#include <functional>
 #include <span>
 #include <vector>
 
+#include "constraint_rows.hpp"
 #include "contact_pairs.hpp"
 #include "csc_pattern.hpp"
 #include "dof_map.hpp"
 #include "sparse_cholesky.hpp"
-#include "updatable_factor.hpp"
 
 namespace saasgaps {
 
@@ -46,19 +45,10 @@ struct ContactReport {
 
 class ExactContact {
  public:
-  /// Active sets tried before giving up (each one factorization).
+  /// Active sets tried before giving up (each one factorization or rank-k update).
   static constexpr int max_active_set_iterations = 60;
-  /// Multiplier iterations per active set (each one solve).
-  static constexpr int max_multiplier_iterations = 40;
-  /// rho_i / (c_i^T diag(K) c_i): large enough that each multiplier step gains about four digits,
-  /// small enough not to spoil the factorization's accuracy.
-  static constexpr double penalty_factor = 1.0e4;
-  /// An active-set step that changes at most this many pairs updates the factorization (rank-k
-  /// update and downdate of a simplicial LDL' copy) instead of refactorizing.
-  static constexpr int max_update_rank = 100;
-  /// Round-off: residuals below this fraction of the model's length scale are zero.
-  static constexpr double round_off = 1.0e-11;
-  /// Largest constraint residual accepted when the multiplier iterations stagnate before round_off.
+  /// Largest constraint residual accepted when the multiplier iterations stagnate before round-off
+  /// (ConstraintRows: the penalties, the update rank and the round-off level).
   static constexpr double accepted_residual = 1.0e-8;
 
   ExactContact(const Model& model, const DofMap& dofs, const CscPattern& pattern, ContactPairs pairs);
@@ -73,46 +63,9 @@ class ExactContact {
                       ContactState& state, std::span<double> u);
 
  private:
-  struct Entry {
-    Index equation = -1;
-    double coefficient = 0.0;  ///< w_k n_dir: g = g0_free + sum coefficient u[equation]
-  };
-  /// Row i of C, of any width: its entries are entries_[first, last), the upper-triangle positions
-  /// of c c^T and the matching coefficient products are positions_/products_[first_product,
-  /// last_product).
-  struct Row {
-    std::size_t first = 0, last = 0;
-    std::size_t first_product = 0, last_product = 0;
-    double g0 = 0.0;        ///< g0 plus the prescribed displacements' part
-    double stiffness = 0.0; ///< k_i = c_i^T diag(K) c_i (recomputed per solve)
-    double rho = 0.0;
-    [[nodiscard]] bool empty() const { return first == last; }
-  };
-
-  [[nodiscard]] std::span<const Entry> entries(const Row& row) const {
-    return std::span<const Entry>(entries_).subspan(row.first, row.last - row.first);
-  }
-  double residual(const Row& row, std::span<const double> u) const;
-  using Solver = std::function<void(std::span<const double>, std::span<double>)>;
-  void factor_active(SparseCholesky& cholesky, std::span<const double> values, const std::vector<std::uint8_t>& active);
-  /// Brings updatable_ from the set `held` to `active` by a rank-k update and downdate.
-  void update_active(const std::vector<std::uint8_t>& held, const std::vector<std::uint8_t>& active);
-  /// Multiplier iterations on the current factorization; returns the final max |g_A|.
-  double multipliers(const Solver& solve, std::span<const double> rhs, const std::vector<std::uint8_t>& active,
-                     std::vector<double>& force, std::span<double> u, double length, int& iterations);
-
   const Model& model_;
-  const DofMap& dofs_;
   ContactPairs pairs_;
-  std::vector<Row> rows_;
-  std::vector<Entry> entries_;    // every row's entries, row after row
-  std::vector<Index> positions_;  // every row's upper-triangle positions of c c^T, -1 = none
-  std::vector<double> products_;  // the matching coefficient products
-  std::vector<Index> diagonal_;  // position of K_jj
-  std::vector<double> values_;   // K_A
-  std::vector<double> b_;        // right-hand side of K_A u = b
-  UpdatableFactor updatable_;    // for small active-set changes
-  UpdateColumns columns_;
+  ConstraintRows rows_;  // row i: pair i's gap function
 };
 
 }  // namespace saasgaps

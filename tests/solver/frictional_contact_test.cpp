@@ -9,6 +9,8 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <numbers>
+#include <array>
 #include <vector>
 
 #include "assembler.hpp"
@@ -176,26 +178,21 @@ struct Increment {
   double imbalance = 0.0;      ///< max |K u - f - C^T lambda|
 };
 
-/// Press (one increment), then the pushes of `path` one increment each.
-std::vector<Increment> run(const Blocks& b, double mu, const std::vector<double>& path) {
-  System system(loaded(b, press, 0.0), b.pairs);
-  FrictionalContact contact(b.model, system.dofs(), system.pattern(), b.pairs,
-                            std::vector<double>(b.pairs.pairs.size(), mu));
+/// One increment per load state of `path` (all with the same prescribed components).
+std::vector<Increment> run(const Model& model, const ContactPairs& pairs, double mu, const std::vector<Model>& path) {
+  System system(path.front(), pairs);
+  FrictionalContact contact(model, system.dofs(), system.pattern(), pairs, std::vector<double>(pairs.pairs.size(), mu));
   std::vector<Increment> out;
   FrictionState state;
-  std::vector<double> pushes{0.0};
-  pushes.insert(pushes.end(), path.begin(), path.end());
-  for (const double push : pushes) {
-    const Model now = loaded(b, press, push);
+  for (const Model& now : path) {
     const std::vector<double> f = system.rhs(now);
     Increment inc;
-    inc.push = push;
     inc.u.assign(f.size(), 0.0);
     inc.report = contact.solve(system.cholesky(), system.values(), f, state, inc.u);
     inc.solved = state;
     std::vector<double> load(f.size(), 0.0);
-    for (std::size_t i = 0; i < b.pairs.pairs.size(); ++i) {
-      const Vec2 n = b.pairs.pairs[i].normal;
+    for (std::size_t i = 0; i < pairs.pairs.size(); ++i) {
+      const Vec2 n = pairs.pairs[i].normal;
       const Vec2 t(-n.y(), n.x());
       const Vec2 on_block = state.normal_force[i] * n + state.tangential_force[i] * t;
       inc.shear += on_block.x();
@@ -209,6 +206,15 @@ std::vector<Increment> run(const Blocks& b, double mu, const std::vector<double>
     inc.state = state;
     out.push_back(std::move(inc));
   }
+  return out;
+}
+
+/// The block pressed (one increment), then pushed to each value of `pushes`, one increment each.
+std::vector<Increment> run(const Blocks& b, double mu, const std::vector<double>& pushes) {
+  std::vector<Model> path{loaded(b, press, 0.0)};
+  for (const double push : pushes) path.push_back(loaded(b, press, push));
+  std::vector<Increment> out = run(b.model, b.pairs, mu, path);
+  for (std::size_t k = 1; k < out.size(); ++k) out[k].push = pushes[k - 1];
   return out;
 }
 
@@ -234,6 +240,15 @@ TEST(FrictionalContact, PushedBlockRisesToMuNThenSlipsEverywhereAndUnloadingShow
   path.insert(path.end(), back.begin(), back.end());
   const std::vector<Increment> run_ = run(b, mu, path);
   const std::size_t points = b.pairs.pairs.size();
+  // The cost (docs/contact.md, "Friction"): one factorization per increment; 1 to 3 solves when
+  // every point sticks or every point slips from the start, at most 25 (3 active sets) otherwise.
+  for (const Increment& inc : run_) {
+    EXPECT_EQ(inc.report.factorizations, 1) << "push " << inc.push;
+    EXPECT_LE(inc.report.active_set_iterations, 3) << "push " << inc.push;
+    const bool uniform = inc.report.active_set_iterations == 1 &&
+                         (inc.report.sticking == static_cast<int>(points) || inc.report.slipping == static_cast<int>(points));
+    EXPECT_LE(inc.report.multiplier_iterations, uniform ? 3 : 25) << "push " << inc.push;
+  }
 
   // Pressed: everything sticks, the normal force is N, no shear.
   EXPECT_NEAR(run_[0].normal, press, 1e-9 * press);
@@ -392,6 +407,116 @@ TEST(FrictionalContact, AShearForceAboveMuNSlidesTheBlockAwayWithAClearError) {
   } catch (const SolverError& e) {
     EXPECT_NE(std::string(e.what()).find("slides away"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("5 contact points slipping"), std::string::npos) << e.what();
+  }
+}
+
+/// Cattaneo-Mindlin in plane strain: two bodies of one material (so that normal and tangential
+/// responses uncouple) touching along z = 0 with the initial gap x^2 / (2 R) of two cylinders (the
+/// node pairs' g0), pressed by a rigid platen on the upper body's top (z prescribed), then sheared by
+/// a force Q on that top below mu P. Half-spaces give the Hertz half-width a^2 = 4 P R / (pi E*),
+/// 1 / E* = 2 (1 - nu^2) / E, and a central stick zone of half-width c = a sqrt(1 - Q / (mu P)).
+/// Interface nodes every h = a / 10 over |x| < 1.3 a, growing by 1.25 out to 8 a; depth 8 a.
+struct Cylinders {
+  Model model;
+  ContactPairs pairs;
+  std::vector<double> x;  ///< the interface nodes' r, in the pairs' order
+  std::vector<int> top;
+};
+
+constexpr double radius = 10.0;
+constexpr double spacing = 0.1;  // h, for a near 1
+
+std::vector<double> graded(double uniform_to, double to) {
+  std::vector<double> x{0.0};
+  while (x.back() < uniform_to - 1e-12) x.push_back(x.back() + spacing);
+  double step = spacing;
+  while (x.back() < to) x.push_back(x.back() + (step *= 1.25));
+  return x;
+}
+
+Cylinders cylinders(double sink) {
+  Cylinders c;
+  Model& m = c.model;
+  m.analysis = AnalysisType::plane_strain;
+  m.materials = {testing::isotropic_material(1, E, nu)};
+  const std::vector<double> half = graded(1.3, 8.0);
+  std::vector<double> across(half.rbegin(), half.rend() - 1);
+  for (double& v : across) v = -v;
+  across.insert(across.end(), half.begin(), half.end());
+  const std::vector<double> depth = graded(0.5, 8.0);
+  const int ni = static_cast<int>(across.size()) - 1;
+  const int nj = static_cast<int>(depth.size()) - 1;
+  const auto at = [](const std::vector<double>& v, double s) {
+    return v[static_cast<std::size_t>(std::lround(s * (static_cast<double>(v.size()) - 1)))];
+  };
+  const Grid lower = testing::add_grid(m, ni, nj, [&](double s, double t) {
+    return Vec2(at(across, s), -at(depth, 1.0 - t));
+  }, 0);
+  const Grid upper = testing::add_grid(m, ni, nj, [&](double s, double t) { return Vec2(at(across, s), at(depth, t)); }, 0);
+  testing::fill_temperatures(m, 0.0);
+  for (int i = 0; i <= ni; ++i) {
+    testing::constrain(m, lower.at(i, 0), 0.0, 0.0);
+    testing::constrain(m, upper.at(i, nj), std::nullopt, -sink);
+    c.top.push_back(upper.at(i, nj));
+    ContactPair p;
+    p.node = {lower.at(i, nj), upper.at(i, 0)};
+    p.weight = {-1.0, 1.0};
+    p.normal = Vec2(0.0, 1.0);
+    p.g0 = across[i] * across[i] / (2 * radius);
+    c.pairs.pairs.push_back(p);
+    c.x.push_back(across[i]);
+  }
+  return c;
+}
+
+/// The model with a shear force Q on the upper body's top (consistent loads of a uniform traction).
+Model sheared(const Cylinders& c, double Q) {
+  Model m = c.model;
+  const double span = m.nodes[c.top.back()].r - m.nodes[c.top.front()].r;
+  for (std::size_t i = 0; i < c.top.size(); ++i) {
+    const double left = i == 0 ? 0.0 : m.nodes[c.top[i]].r - m.nodes[c.top[i - 1]].r;
+    const double right = i + 1 == c.top.size() ? 0.0 : m.nodes[c.top[i + 1]].r - m.nodes[c.top[i]].r;
+    m.loads.nodal_forces.push_back({c.top[i], Q * (left + right) / (2 * span), 0.0});
+  }
+  return m;
+}
+
+TEST(FrictionalContact, CattaneoMindlinStickZoneHalfWidthWithinOneElementPlusFivePercent) {
+  const Cylinders c = cylinders(0.18);
+  const double P = run(c.model, c.pairs, mu, {sheared(c, 0.0)}).front().normal;
+  const std::vector<double> ratios{0.25, 0.5, 0.75};
+  std::vector<Model> path{sheared(c, 0.0)};
+  for (const double r : ratios) path.push_back(sheared(c, r * mu * P));
+  const std::vector<Increment> run_ = run(c.model, c.pairs, mu, path);
+  const double E_star = E / (2 * (1 - nu * nu));
+  for (std::size_t k = 0; k < run_.size(); ++k) {
+    const Increment& inc = run_[k];
+    const double Pk = inc.normal;
+    const double Q = std::abs(inc.shear);
+    const double a = std::sqrt(4 * Pk * radius / (std::numbers::pi * E_star));
+    const double c_theory = a * std::sqrt(1 - Q / (mu * Pk));
+    // Each side: the stick zone ends between its outermost sticking node and the next node out.
+    double contact_edge = 0.0;
+    std::array<double, 2> stick_edge{0.0, 0.0}, slip_start{a, a};
+    for (std::size_t i = 0; i < c.x.size(); ++i) {
+      const auto state = static_cast<SlipState>(inc.solved.state[i]);
+      const std::size_t side = c.x[i] < 0 ? 0 : 1;
+      const double at = std::abs(c.x[i]);
+      if (state != SlipState::open) contact_edge = std::max(contact_edge, at);
+      if (state == SlipState::stick) stick_edge[side] = std::max(stick_edge[side], at);
+      if (state == SlipState::slip) slip_start[side] = std::min(slip_start[side], at);
+    }
+    EXPECT_NEAR(contact_edge, a, spacing) << "increment " << k << ": Hertz";
+    EXPECT_LT(inc.report.friction_residual, 1e-10);
+    for (std::size_t side = 0; side < 2; ++side) {
+      const double c_measured = k == 0 ? contact_edge : 0.5 * (stick_edge[side] + slip_start[side]);
+      EXPECT_NEAR(c_measured / a, c_theory / a, spacing / a + 0.05 * c_theory / a)
+          << "increment " << k << " Q / (mu P) = " << Q / (mu * Pk) << " side " << side;
+    }
+    // The cost (docs/contact.md, "Friction"): one factorization per increment, a few active sets.
+    EXPECT_EQ(inc.report.factorizations, 1) << "increment " << k;
+    EXPECT_LE(inc.report.active_set_iterations, 5) << "increment " << k;
+    EXPECT_LE(inc.report.multiplier_iterations, 13) << "increment " << k;
   }
 }
 
