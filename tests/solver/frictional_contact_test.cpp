@@ -233,12 +233,17 @@ double largest(std::span<const double> x) {
 constexpr double mu = 0.3;
 constexpr double far = 0.02;  // the push: several times what the interface takes to slip everywhere
 
+/// Pushes to `far` in `out` increments, then back towards 0 in `back` increments of far / 20.
+std::vector<double> there_and_back(int out, int back) {
+  std::vector<double> path = ramp(0.0, far, out);
+  const std::vector<double> returning = ramp(far, far * (1.0 - back / 20.0), back);
+  path.insert(path.end(), returning.begin(), returning.end());
+  return path;
+}
+
 TEST(FrictionalContact, PushedBlockRisesToMuNThenSlipsEverywhereAndUnloadingShowsHysteresis) {
   const Blocks b = blocks(8, 2, false);
-  std::vector<double> path = ramp(0.0, far, 20);
-  const std::vector<double> back = ramp(far, 0.0, 20);
-  path.insert(path.end(), back.begin(), back.end());
-  const std::vector<Increment> run_ = run(b, mu, path);
+  const std::vector<Increment> run_ = run(b, mu, there_and_back(20, 20));
   const std::size_t points = b.pairs.pairs.size();
   // The cost (docs/contact.md, "Friction"): one factorization per increment; 1 to 3 solves when
   // every point sticks or every point slips from the start, at most 25 (3 active sets) otherwise.
@@ -290,10 +295,7 @@ TEST(FrictionalContact, PushedBlockRisesToMuNThenSlipsEverywhereAndUnloadingShow
 
 TEST(FrictionalContact, CoulombHoldsPointByPointToRoundOffInEveryIncrement) {
   const Blocks b = blocks(8, 2, false);
-  std::vector<double> path = ramp(0.0, far, 20);
-  const std::vector<double> back = ramp(far, 0.0, 10);
-  path.insert(path.end(), back.begin(), back.end());
-  const std::vector<Increment> run_ = run(b, mu, path);
+  const std::vector<Increment> run_ = run(b, mu, there_and_back(20, 10));
   int stick = 0, slip = 0;
   for (std::size_t k = 0; k < run_.size(); ++k) {
     const Increment& inc = run_[k];
