@@ -13,21 +13,21 @@
 #include <array>
 #include <vector>
 
-#include "assembler.hpp"
 #include "errors.hpp"
 #include "exact_contact.hpp"
-#include "material_state.hpp"
-#include "stiffness_system.hpp"
+#include "support/friction_models.hpp"
 #include "support/mesh_builder.hpp"
 
 namespace saasgaps {
 namespace {
 
+using testing::Cylinders;
 using testing::Grid;
+using System = testing::CoupledSystem;
 
 constexpr double width = 2.0;   // both bodies
 constexpr double height = 0.5;  // each body
-constexpr double E = 1000.0, nu = 0.3;
+constexpr double E = Cylinders::E, nu = Cylinders::nu;
 constexpr double press = 10.0;  // N, the total normal force on the block's top
 
 /// The base [0, width] x [-height, 0] held at its bottom, and the block [0, width] x [0, height] on
@@ -81,89 +81,6 @@ Model loaded(const Blocks& b, double normal, double push, bool push_by_force = f
   }
   return m;
 }
-
-/// K of the model on a pattern that also couples each pair's nodes, and the rhs of any load state
-/// with the same prescribed components.
-class System {
- public:
-  System(const Model& model, const ContactPairs& pairs) : dofs_(model) {
-    Cliques couplings;
-    for (const ContactPair& p : pairs.pairs) {
-      std::vector<Index> eqs(2 * p.node.size());
-      dofs_.equations(p.node, eqs);
-      couplings.add(eqs);
-    }
-    const Assembler assembler(
-        dofs_, model.elements.size(),
-        [&model](std::size_t e) { return std::span<const int>(model.elements[e].nodes.data(), 4); }, couplings);
-    pattern_ = assembler.pattern();
-    StiffnessSystem system(model, dofs_);
-    assemble(system, model);
-    const CscPattern& plain = system.pattern();
-    values_.assign(static_cast<std::size_t>(pattern_.nnz()), 0.0);
-    for (Index j = 0; j < plain.n; ++j) {
-      for (Index k = plain.colptr[j]; k < plain.colptr[j + 1]; ++k) {
-        values_[pattern_.find(plain.rowind[k], j)] = system.values()[k];
-      }
-    }
-    cholesky_ = std::make_unique<SparseCholesky>(pattern_);
-  }
-
-  /// f of a load state (its prescribed values lifted: K_fp u_p moved to the right).
-  [[nodiscard]] std::vector<double> rhs(const Model& state) const {
-    const DofMap dofs(state);
-    EXPECT_EQ(dofs.size(), dofs_.size());
-    StiffnessSystem system(state, dofs);
-    assemble(system, state);
-    return {system.rhs().begin(), system.rhs().end()};
-  }
-
-  /// (u_r, u_z) per node from the free displacements and the prescribed values of `state`.
-  [[nodiscard]] std::vector<double> full(const Model& state, std::span<const double> u) const {
-    const DofMap dofs(state);
-    std::vector<double> x(2 * state.nodes.size());
-    for (std::size_t node = 0; node < state.nodes.size(); ++node) {
-      for (int c = 0; c < 2; ++c) {
-        const Index eq = dofs.equation(static_cast<int>(node), c);
-        x[2 * node + c] = eq >= 0 ? u[eq] : dofs.prescribed(static_cast<int>(node), c);
-      }
-    }
-    return x;
-  }
-
-  /// max |K u - f - C^T lambda| over the free equations, C^T lambda given as a load vector.
-  [[nodiscard]] double imbalance(std::span<const double> u, std::span<const double> f,
-                                 std::span<const double> contact) const {
-    std::vector<double> r(u.size(), 0.0);
-    for (Index j = 0; j < pattern_.n; ++j) {
-      for (Index k = pattern_.colptr[j]; k < pattern_.colptr[j + 1]; ++k) {
-        const Index i = pattern_.rowind[k];
-        r[i] += values_[k] * u[j];
-        if (i != j) r[j] += values_[k] * u[i];
-      }
-    }
-    double worst = 0.0;
-    for (std::size_t i = 0; i < r.size(); ++i) worst = std::max(worst, std::abs(r[i] - f[i] - contact[i]));
-    return worst;
-  }
-
-  const DofMap& dofs() const { return dofs_; }
-  const CscPattern& pattern() const { return pattern_; }
-  std::span<const double> values() const { return values_; }
-  SparseCholesky& cholesky() { return *cholesky_; }
-
- private:
-  static void assemble(StiffnessSystem& system, const Model& model) {
-    const SolidMaterials materials(model);
-    const MaterialState state = materials.initial();
-    system.assemble_solids([&](std::size_t e) { return materials.law(e, state); });
-  }
-
-  DofMap dofs_;
-  CscPattern pattern_;
-  std::vector<double> values_;
-  std::unique_ptr<SparseCholesky> cholesky_;
-};
 
 /// One converged increment.
 struct Increment {
@@ -412,90 +329,22 @@ TEST(FrictionalContact, AShearForceAboveMuNSlidesTheBlockAwayWithAClearError) {
   }
 }
 
-/// Cattaneo-Mindlin in plane strain: two bodies of one material (so that normal and tangential
-/// responses uncouple) touching along z = 0 with the initial gap x^2 / (2 R) of two cylinders (the
-/// node pairs' g0), pressed by a rigid platen on the upper body's top (z prescribed), then sheared by
-/// a force Q on that top below mu P. Half-spaces give the Hertz half-width a^2 = 4 P R / (pi E*),
-/// 1 / E* = 2 (1 - nu^2) / E, and a central stick zone of half-width c = a sqrt(1 - Q / (mu P)).
-/// Interface nodes every h = a / 10 over |x| < 1.3 a, growing by 1.25 out to 8 a; depth 8 a.
-struct Cylinders {
-  Model model;
-  ContactPairs pairs;
-  std::vector<double> x;  ///< the interface nodes' r, in the pairs' order
-  std::vector<int> top;
-};
-
-constexpr double radius = 10.0;
-constexpr double spacing = 0.1;  // h, for a near 1
-
-std::vector<double> graded(double uniform_to, double to) {
-  std::vector<double> x{0.0};
-  while (x.back() < uniform_to - 1e-12) x.push_back(x.back() + spacing);
-  double step = spacing;
-  while (x.back() < to) x.push_back(x.back() + (step *= 1.25));
-  return x;
-}
-
-Cylinders cylinders(double sink) {
-  Cylinders c;
-  Model& m = c.model;
-  m.analysis = AnalysisType::plane_strain;
-  m.materials = {testing::isotropic_material(1, E, nu)};
-  const std::vector<double> half = graded(1.3, 8.0);
-  std::vector<double> across(half.rbegin(), half.rend() - 1);
-  for (double& v : across) v = -v;
-  across.insert(across.end(), half.begin(), half.end());
-  const std::vector<double> depth = graded(0.5, 8.0);
-  const int ni = static_cast<int>(across.size()) - 1;
-  const int nj = static_cast<int>(depth.size()) - 1;
-  const auto at = [](const std::vector<double>& v, double s) {
-    return v[static_cast<std::size_t>(std::lround(s * (static_cast<double>(v.size()) - 1)))];
-  };
-  const Grid lower = testing::add_grid(m, ni, nj, [&](double s, double t) {
-    return Vec2(at(across, s), -at(depth, 1.0 - t));
-  }, 0);
-  const Grid upper = testing::add_grid(m, ni, nj, [&](double s, double t) { return Vec2(at(across, s), at(depth, t)); }, 0);
-  testing::fill_temperatures(m, 0.0);
-  for (int i = 0; i <= ni; ++i) {
-    testing::constrain(m, lower.at(i, 0), 0.0, 0.0);
-    testing::constrain(m, upper.at(i, nj), std::nullopt, -sink);
-    c.top.push_back(upper.at(i, nj));
-    ContactPair p;
-    p.node = {lower.at(i, nj), upper.at(i, 0)};
-    p.weight = {-1.0, 1.0};
-    p.normal = Vec2(0.0, 1.0);
-    p.g0 = across[i] * across[i] / (2 * radius);
-    c.pairs.pairs.push_back(p);
-    c.x.push_back(across[i]);
-  }
-  return c;
-}
-
-/// The model with a shear force Q on the upper body's top (consistent loads of a uniform traction).
-Model sheared(const Cylinders& c, double Q) {
-  Model m = c.model;
-  const double span = m.nodes[c.top.back()].r - m.nodes[c.top.front()].r;
-  for (std::size_t i = 0; i < c.top.size(); ++i) {
-    const double left = i == 0 ? 0.0 : m.nodes[c.top[i]].r - m.nodes[c.top[i - 1]].r;
-    const double right = i + 1 == c.top.size() ? 0.0 : m.nodes[c.top[i + 1]].r - m.nodes[c.top[i]].r;
-    m.loads.nodal_forces.push_back({c.top[i], Q * (left + right) / (2 * span), 0.0});
-  }
-  return m;
-}
-
 TEST(FrictionalContact, CattaneoMindlinStickZoneHalfWidthWithinOneElementPlusFivePercent) {
-  const Cylinders c = cylinders(0.18);
-  const double P = run(c.model, c.pairs, mu, {sheared(c, 0.0)}).front().normal;
+  // Interface nodes every h = 0.1, for a near 1.
+  constexpr double spacing = 0.1;
+  const Cylinders c = testing::cylinders(0.18, spacing);
+  const auto sheared = [&c](double Q) { return testing::sheared(c, Q); };
+  const double P = run(c.model, c.pairs, mu, {sheared(0.0)}).front().normal;
   const std::vector<double> ratios{0.25, 0.5, 0.75};
-  std::vector<Model> path{sheared(c, 0.0)};
-  for (const double r : ratios) path.push_back(sheared(c, r * mu * P));
+  std::vector<Model> path{sheared(0.0)};
+  for (const double r : ratios) path.push_back(sheared(r * mu * P));
   const std::vector<Increment> run_ = run(c.model, c.pairs, mu, path);
   const double E_star = E / (2 * (1 - nu * nu));
   for (std::size_t k = 0; k < run_.size(); ++k) {
     const Increment& inc = run_[k];
     const double Pk = inc.normal;
     const double Q = std::abs(inc.shear);
-    const double a = std::sqrt(4 * Pk * radius / (std::numbers::pi * E_star));
+    const double a = std::sqrt(4 * Pk * Cylinders::radius / (std::numbers::pi * E_star));
     const double c_theory = a * std::sqrt(1 - Q / (mu * Pk));
     // Each side: the stick zone ends between its outermost sticking node and the next node out.
     double contact_edge = 0.0;
