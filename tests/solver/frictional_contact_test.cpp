@@ -95,12 +95,13 @@ struct Increment {
   double imbalance = 0.0;      ///< max |K u - f - C^T lambda|
 };
 
-/// One increment per load state of `path` (all with the same prescribed components).
-std::vector<Increment> run(const Model& model, const ContactPairs& pairs, double mu, const std::vector<Model>& path) {
+/// One increment per load state of `path` (all with the same prescribed components), from `state`
+/// (the end of an earlier increment, or nothing), each with a system and solver of its own.
+std::vector<Increment> run(const Model& model, const ContactPairs& pairs, double mu, const std::vector<Model>& path,
+                           FrictionState state = {}) {
   System system(path.front(), pairs);
   FrictionalContact contact(model, system.dofs(), system.pattern(), pairs, std::vector<double>(pairs.pairs.size(), mu));
   std::vector<Increment> out;
-  FrictionState state;
   for (const Model& now : path) {
     const std::vector<double> f = system.rhs(now);
     Increment inc;
@@ -207,6 +208,27 @@ TEST(FrictionalContact, PushedBlockRisesToMuNThenSlipsEverywhereAndUnloadingShow
   for (std::size_t i = 0; i < points; ++i) {
     EXPECT_GT(end.state.slip[i], 0.5 * far) << "point " << i;
     EXPECT_GT(std::abs(end.state.previous[i]), 1e-4) << "a residual offset of block against base, point " << i;
+  }
+}
+
+TEST(FrictionalContact, ARunResumedFromTheStateBetweenIncrementsIsTheUninterruptedRunToTheLastBit) {
+  // What a restart state must carry is FrictionState: resumed with a new system, factorization and
+  // solver after push 12 (partly stuck, on the way back), the rest is identical.
+  const Blocks b = blocks(8, 2, false);
+  const std::vector<double> pushes = there_and_back(10, 10);
+  const std::vector<Increment> whole = run(b, mu, pushes);
+  for (const std::size_t k : {std::size_t{5}, std::size_t{12}}) {
+    std::vector<Model> rest;
+    for (std::size_t j = k; j < pushes.size(); ++j) rest.push_back(loaded(b, press, pushes[j]));
+    const std::vector<Increment> resumed = run(b.model, b.pairs, mu, rest, whole[k].state);
+    for (std::size_t j = 0; j < resumed.size(); ++j) {
+      const Increment& one = whole[k + 1 + j];
+      const Increment& two = resumed[j];
+      EXPECT_EQ(one.u, two.u) << "resumed after increment " << k << ", increment " << k + 1 + j;
+      EXPECT_EQ(one.state.tangential_force, two.state.tangential_force);
+      EXPECT_EQ(one.state.slip, two.state.slip);
+      EXPECT_EQ(one.state.state, two.state.state);
+    }
   }
 }
 
