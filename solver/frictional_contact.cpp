@@ -26,6 +26,7 @@ FrictionalContact::FrictionalContact(const Model& model, const DofMap& dofs, con
                                      ContactPairs pairs, std::vector<double> friction)
     : model_(model), pairs_(std::move(pairs)), mu_(std::move(friction)), rows_(dofs, pattern) {
   assert(mu_.size() == pairs_.pairs.size());
+  assert(std::all_of(mu_.begin(), mu_.end(), [](double mu) { return mu >= 0.0; }) && "the reader refuses mu < 0");
   for (const ContactPair& p : pairs_.pairs) {
     rows_.add(p.node, p.weight, p.normal, p.g0);
     rows_.add(p.node, p.weight, Vec2(-p.normal.y(), p.normal.x()), 0.0);
