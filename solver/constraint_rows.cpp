@@ -128,7 +128,7 @@ bool ConstraintRows::hold(SparseCholesky& cholesky, std::span<const double> valu
 
 double ConstraintRows::multipliers(std::span<const double> rhs, std::span<const std::uint8_t> active,
                                    std::span<double> force, std::span<double> u, double length, int& iterations,
-                                   const DependentLoad& dependent) {
+                                   const DependentLoad& dependent, const Decided& decided) {
   assert(cholesky_ != nullptr && "hold() before multipliers()");
   double previous = std::numeric_limits<double>::infinity();
   double worst = 0.0;
@@ -159,6 +159,7 @@ double ConstraintRows::multipliers(std::span<const double> rhs, std::span<const 
     double scale = length;
     for (double x : u) scale = std::max(scale, std::abs(x));
     if (worst <= round_off * scale) break;
+    if (decided && decided(worst)) break;
     // Below round-off nothing more can be gained: stop when two steps in a row fail to halve it.
     stalled = worst > 0.5 * previous ? stalled + 1 : 0;
     if (stalled >= 2) break;

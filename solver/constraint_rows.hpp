@@ -85,11 +85,17 @@ class ConstraintRows {
   /// when it factorized. Throws NotPositiveDefinite when K_A is singular.
   bool hold(SparseCholesky& cholesky, std::span<const double> values, std::span<const std::uint8_t> active);
 
+  /// After a multiplier iteration, with its residual: true to stop there (an active-set solver that
+  /// already knows the set will change, so that more digits of this set's answer would be wasted).
+  using Decided = std::function<bool(double residual)>;
+
   /// Multiplier iterations on the held K_A: updates force (one per row, the active ones) and u;
   /// returns the final max |g_A| (and the dependent load's last move). Stops at round_off times the
-  /// scale max(length, |u|_inf), or when two steps in a row fail to halve the residual.
+  /// scale max(length, |u|_inf), when two steps in a row fail to halve the residual, or when
+  /// `decided` says so.
   double multipliers(std::span<const double> rhs, std::span<const std::uint8_t> active, std::span<double> force,
-                     std::span<double> u, double length, int& iterations, const DependentLoad& dependent = {});
+                     std::span<double> u, double length, int& iterations, const DependentLoad& dependent = {},
+                     const Decided& decided = {});
 
  private:
   /// Row r's entries are entries_[first, last); the upper-triangle positions of c c^T and the

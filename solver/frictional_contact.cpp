@@ -109,49 +109,23 @@ FrictionReport FrictionalContact::solve(SparseCholesky& cholesky, std::span<cons
   std::vector<std::size_t> seen;
   std::vector<std::uint8_t> active(2 * n, 0);
   std::vector<double> g(n, 0.0), v(n, 0.0);
-  for (int iteration = 1;; ++iteration) {
-    seen.push_back(key_of(points, direction));
-    int slipping = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      active[normal_row(i)] = points[i] != open;
-      active[tangential_row(i)] = points[i] == stick;
-      slipping += points[i] == slip && mu_[i] > 0.0;
-    }
-    try {
-      report.factorizations += rows_.hold(cholesky, values, active) ? 1 : 0;
-    } catch (const NotPositiveDefinite&) {
-      if (slipping == 0) throw;
-      std::ostringstream text;
-      text << "the frictional contact increment has no solution: with " << plural(slipping, "contact point")
-           << " slipping, nothing holds a body along the contact surface (the tangential load exceeds what "
-              "friction can carry, mu times the normal force, so the body slides away)";
-      throw SolverError(text.str());
-    }
-    report.active_set_iterations = iteration;
-    const double worst = rows_.multipliers(rhs, active, force, u, length, report.multiplier_iterations, slip_forces);
-    double scale = length;
-    for (double x : u) scale = std::max(scale, std::abs(x));
-    if (worst > accepted_residual * scale) {
-      std::ostringstream text;
-      text << "the frictional contact solve could not enforce contact and friction to round-off (residual "
-           << worst / scale << " of the model's length scale after " << ConstraintRows::max_multiplier_iterations
-           << " multiplier iterations; with " << plural(slipping, "point")
-           << " slipping, mu times the coupling of normal and tangential compliance may exceed 1)";
-      throw SolverError(text.str());
-    }
-    // Noise level of the rows: what the multiplier iterations could not remove.
-    const double tolerance = std::max(10.0 * worst, ConstraintRows::round_off * scale);
+  // The primal-dual active-set step on open / stick / slip for the current u and forces, violations
+  // in length units beyond `tolerance`: into next, next_direction, changes and the worst point.
+  std::vector<std::uint8_t> next;
+  std::vector<std::int8_t> next_direction;
+  int changes = 0;
+  std::size_t worst_point = n;
+  double worst_violation = 0.0;
+  const auto step = [&](double tolerance) {
     for (std::size_t i = 0; i < n; ++i) {
       g[i] = rows_.value(normal_row(i), u);
       v[i] = rows_.value(tangential_row(i), u);
     }
-
-    // The primal-dual active-set step on open / stick / slip. Violations in length units.
-    std::vector<std::uint8_t> next = points;
-    std::vector<std::int8_t> next_direction = direction;
-    int changes = 0;
-    std::size_t worst_point = n;
-    double worst_violation = 0.0;
+    next = points;
+    next_direction = direction;
+    changes = 0;
+    worst_point = n;
+    worst_violation = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       if (!usable(i)) continue;
       const double k_n = rows_.stiffness(normal_row(i));
@@ -188,6 +162,51 @@ FrictionReport FrictionalContact::solve(SparseCholesky& cholesky, std::span<cons
         }
       }
     }
+  };
+  // A set that will change whatever the last digits: a point violates it by a thousand times the
+  // multipliers' residual. Its remaining iterations would be wasted: on to the next set.
+  bool early = false;
+  const ConstraintRows::Decided decided = [&](double residual) {
+    double scale = length;
+    for (double x : u) scale = std::max(scale, std::abs(x));
+    step(std::max(10.0 * residual, ConstraintRows::round_off * scale));
+    early = worst_violation > 1.0e3 * std::max(residual, ConstraintRows::round_off * scale);
+    return early;
+  };
+  for (int iteration = 1;; ++iteration) {
+    seen.push_back(key_of(points, direction));
+    int slipping = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      active[normal_row(i)] = points[i] != open;
+      active[tangential_row(i)] = points[i] == stick;
+      slipping += points[i] == slip && mu_[i] > 0.0;
+    }
+    try {
+      report.factorizations += rows_.hold(cholesky, values, active) ? 1 : 0;
+    } catch (const NotPositiveDefinite&) {
+      if (slipping == 0) throw;
+      std::ostringstream text;
+      text << "the frictional contact increment has no solution: with " << plural(slipping, "contact point")
+           << " slipping, nothing holds a body along the contact surface (the tangential load exceeds what "
+              "friction can carry, mu times the normal force, so the body slides away)";
+      throw SolverError(text.str());
+    }
+    report.active_set_iterations = iteration;
+    early = false;
+    const double worst =
+        rows_.multipliers(rhs, active, force, u, length, report.multiplier_iterations, slip_forces, decided);
+    double scale = length;
+    for (double x : u) scale = std::max(scale, std::abs(x));
+    if (!early && worst > accepted_residual * scale) {
+      std::ostringstream text;
+      text << "the frictional contact solve could not enforce contact and friction to round-off (residual "
+           << worst / scale << " of the model's length scale after " << ConstraintRows::max_multiplier_iterations
+           << " multiplier iterations; with " << plural(slipping, "point")
+           << " slipping, mu times the coupling of normal and tangential compliance may exceed 1)";
+      throw SolverError(text.str());
+    }
+    // Noise level of the rows: what the multiplier iterations could not remove.
+    step(std::max(10.0 * worst, ConstraintRows::round_off * scale));
     if (changes == 0) {
       state.state = points;
       state.direction = direction;
