@@ -24,7 +24,9 @@
 ///   contact -> open                               where lambda_n < -tol k_n,
 ///   stick -> slip, s = -sign(lambda_t)            where |lambda_t| - mu lambda_n > tol k_t,
 ///   slip  -> stick                                where s v < -tol (it moves against its slip),
-/// until nothing changes; a set seen before changes only its worst point. mu = 0 is exactly
+/// until nothing changes; a set seen before changes only its worst point. A set's multiplier
+/// iterations stop early once a point violates it by 1000 times their residual (only the last set
+/// needs round-off). mu = 0 is exactly
 /// ExactContact's algorithm (no tangential row is ever active, every slip force is zero).
 
 #include <cstdint>
