@@ -9,9 +9,18 @@
 
 namespace saasgaps {
 
+namespace {
+
+ContactPairs with_extra(ContactPairs pairs, const ContactPairs* extra) {
+  if (extra != nullptr) pairs.pairs.insert(pairs.pairs.end(), extra->pairs.begin(), extra->pairs.end());
+  return pairs;
+}
+
+}  // namespace
+
 NodePairMethod::NodePairMethod(const Model& model, const GapSettings& settings, const DofMap& dofs,
-                               const CscPattern& pattern)
-    : gaps_(model, settings), exact_(model, dofs, pattern, contact_pairs(model)) {}
+                               const CscPattern& pattern, const ContactPairs* extra)
+    : gaps_(model, settings), exact_(model, dofs, pattern, with_extra(contact_pairs(model), extra)) {}
 
 void NodePairMethod::begin_iteration(RestartState& state, StiffnessSystem& system) {
   GapElements::advance(state.gaps, gaps_.floor_moduli(), state.iteration);

@@ -17,8 +17,11 @@ namespace saasgaps {
 
 class NodePairMethod final : public ContactMethod {
  public:
-  /// Throws GapPairingError naming every gap element that cannot be paired.
-  NodePairMethod(const Model& model, const GapSettings& settings, const DofMap& dofs, const CscPattern& pattern);
+  /// Throws GapPairingError naming every gap element that cannot be paired. `extra` (null: none):
+  /// further rows solved with the node pairs, after them (contact surfaces' rows, mortar_method.hpp);
+  /// the pattern must hold their couplings.
+  NodePairMethod(const Model& model, const GapSettings& settings, const DofMap& dofs, const CscPattern& pattern,
+                 const ContactPairs* extra = nullptr);
 
   /// Every gap at the floor modulus.
   void begin_iteration(RestartState& state, StiffnessSystem& system) override;

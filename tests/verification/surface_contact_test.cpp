@@ -1,0 +1,298 @@
+// Contact surfaces (model.contact) through the full solve(): the mortar rows solved exactly by the
+// active-set solver of the exact gap mode, on non-matching meshes.
+//
+// - The contact patch test: two stacked blocks meeting on a face of 5 graded segments against 7, a
+//   uniform pressure p on top: every element's stress is (0, -p, 0) and every contact point's
+//   pressure p, to 1e-8 relative, in plane stress, plane strain and axisymmetry, either side as A,
+//   touching or with an initial interference.
+// - A Lame shrink fit with non-matching meshes and a negative clearance (an interference), against
+//   the closed form derived below, within 0.3 % (axisymmetric slice: a straight interface; curved
+//   plane interfaces on non-matching meshes are not yet that accurate, see the last test).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "analysis.hpp"
+#include "element_kernel.hpp"
+#include "io/state_codec.hpp"
+#include "support/identical_solutions.hpp"
+#include "support/mesh_builder.hpp"
+#include "support/stacked_blocks.hpp"
+
+namespace saasgaps {
+namespace {
+
+using testing::BlockFace;
+using testing::StackedBlocks;
+
+constexpr double pressure = 250.0;
+constexpr int layers = 3;
+
+Vec2 position(const Model& m, int node) {
+  return {m.nodes[static_cast<std::size_t>(node)].r, m.nodes[static_cast<std::size_t>(node)].z};
+}
+
+/// Adds the consistent nodal loads of a uniform traction on the given edges.
+void add_traction(Model& m, const std::vector<std::array<int, 2>>& edges, const Vec2& traction) {
+  for (const auto& e : edges) {
+    const auto loads = edge_traction_loads(position(m, e[0]), position(m, e[1]), traction, m.analysis, m.thickness);
+    for (std::size_t k = 0; k < 2; ++k) m.loads.nodal_forces.push_back({e[k], loads[k].x(), loads[k].y()});
+  }
+}
+
+/// The patch test's model: the lower block's bottom held in z, in plane analyses one node of each
+/// block in r (the upper block is held in z by contact alone).
+Model patch_model(AnalysisType analysis, double gap, bool lower_is_a) {
+  StackedBlocks b = testing::stacked_blocks(analysis, 1.0, 2.0, 1.0, gap, BlockFace{5, 1.3}, BlockFace{7, 0.75}, layers);
+  Model& m = b.model;
+  ContactSettings& contact = m.contact.emplace();
+  contact.surfaces = {{"lower top", b.lower_top}, {"upper bottom", b.upper_bottom}};
+  SurfacePair pair;
+  pair.surfaces = lower_is_a ? std::array<int, 2>{0, 1} : std::array<int, 2>{1, 0};
+  contact.pairs = {pair};
+  add_traction(m, testing::row_edges(b.upper, layers), Vec2(0.0, -pressure));
+  for (int i = 0; i <= b.lower.ni; ++i) testing::constrain(m, b.lower.at(i, 0), std::nullopt, 0.0);
+  if (analysis != AnalysisType::axisymmetric) {
+    testing::constrain(m, b.lower.at(0, 0), 0.0, 0.0);
+    testing::constrain(m, b.upper.at(0, layers), 0.0, std::nullopt);
+  }
+  return std::move(b.model);
+}
+
+struct PatchCase {
+  const char* name;
+  AnalysisType analysis;
+  bool lower_is_a;
+  double gap;
+};
+
+TEST(SurfaceContact, PatchTestThroughSolve) {
+  const std::vector<PatchCase> cases = {
+      {"plane stress, 5 on 7", AnalysisType::plane_stress, true, 0.0},
+      {"plane stress, 7 on 5", AnalysisType::plane_stress, false, 0.0},
+      {"plane strain, 5 on 7", AnalysisType::plane_strain, true, 0.0},
+      {"plane strain, 7 on 5, interference", AnalysisType::plane_strain, false, -0.01},
+      {"axisymmetric, 5 on 7", AnalysisType::axisymmetric, true, 0.0},
+      {"axisymmetric, 7 on 5", AnalysisType::axisymmetric, false, 0.0},
+      {"axisymmetric, 5 on 7, interference", AnalysisType::axisymmetric, true, -0.01},
+  };
+  for (const PatchCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    const Model m = patch_model(c.analysis, c.gap, c.lower_is_a);
+    const Solution s = solve(m);
+    ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+    double stress_error = 0.0;
+    for (const ElementResult& e : s.elements) {
+      for (const double d : {e.stress[rr], e.stress[zz] + pressure, e.stress[rz]}) {
+        stress_error = std::max(stress_error, std::abs(d) / pressure);
+      }
+    }
+    EXPECT_LT(stress_error, 1e-8);
+    ASSERT_EQ(s.contact.size(), 1U);
+    EXPECT_EQ(s.contact[0].surfaces[0], c.lower_is_a ? "lower top" : "upper bottom");
+    ASSERT_EQ(s.contact[0].points.size(), c.lower_is_a ? 6U : 8U);
+    double previous_r = -1.0;
+    for (const ContactPointResult& p : s.contact[0].points) {
+      EXPECT_NEAR(p.pressure, pressure, 1e-8 * pressure);
+      EXPECT_EQ(p.state, ContactPointState::stick);
+      EXPECT_NEAR(p.gap, 0.0, 1e-12);
+      EXPECT_EQ(p.shear, 0.0);
+      EXPECT_EQ(p.slip, 0.0);
+      // Side A's chain runs with its material on the left: along -r on the lower block's top, along
+      // +r on the upper block's bottom.
+      if (previous_r >= 0.0) {
+        EXPECT_TRUE(c.lower_is_a ? p.r < previous_r : p.r > previous_r);
+      }
+      previous_r = p.r;
+    }
+  }
+}
+
+TEST(SurfaceContact, BlocksApartStayOpenWithoutPressure) {
+  // A clearance and no load: the upper block is held in z along its top instead.
+  Model m = patch_model(AnalysisType::plane_strain, 0.05, true);
+  m.loads.nodal_forces.clear();
+  double top = 0.0;
+  for (const Node& n : m.nodes) top = std::max(top, n.z);
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) {
+    if (m.nodes[n].z == top) testing::constrain(m, static_cast<int>(n), std::nullopt, 0.0);
+  }
+  const Solution s = solve(m);
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  for (const ContactPointResult& p : s.contact[0].points) {
+    EXPECT_EQ(p.state, ContactPointState::open);
+    EXPECT_EQ(p.pressure, 0.0);
+    EXPECT_NEAR(p.gap, 0.05, 1e-12);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Lame shrink fit. Inner ring a1..b of material 1, outer ring b..b2 of material 2, with an
+// interference delta: the inner ring's outer radius is b + delta/2, the outer ring's inner radius
+// b - delta/2. Lame: sigma_r = A - B/r^2, sigma_t = A + B/r^2, and in plane strain (also the
+// axisymmetric slice held in z)
+//   u(r) = (1 + nu) r / E [(1 - 2 nu) A + B / r^2],
+// in plane stress
+//   u(r) = r / E [(1 - nu) A + (1 + nu) B / r^2].
+// Inner ring under external pressure p: A = -p b^2 / (b^2 - a1^2), B = A a1^2, so u_i(b) = -p C_i;
+// outer ring under internal pressure p: A = p b^2 / (b2^2 - b^2), B = A b2^2, so u_o(b) = p C_o, with
+//   plane strain  C_i = (1 + nu1) b [(1 - 2 nu1) b^2 + a1^2] / (E1 (b^2 - a1^2)),
+//                 C_o = (1 + nu2) b [(1 - 2 nu2) b^2 + b2^2] / (E2 (b2^2 - b^2)),
+//   plane stress  C_i = b [(1 - nu1) b^2 + (1 + nu1) a1^2] / (E1 (b^2 - a1^2)),
+//                 C_o = b [(1 - nu2) b^2 + (1 + nu2) b2^2] / (E2 (b2^2 - b^2)).
+// The fit closes the overlap, u_o(b) - u_i(b) = delta:  p = delta / (C_i + C_o).
+// (Linear theory at the nominal radius b: the faces' radii differ by delta = 1e-4 b, a relative
+// effect of that order on p, far below the discretisation error measured.)
+
+constexpr double a1 = 1.0, b = 1.5, b2 = 2.2, delta = 1.5e-4;
+constexpr double E1 = 30.0e6, nu1 = 0.3, E2 = 10.0e6, nu2 = 0.33;
+
+double lame_interference_pressure(AnalysisType type) {
+  const bool stress = type == AnalysisType::plane_stress;
+  const double Ci = stress ? b * ((1 - nu1) * b * b + (1 + nu1) * a1 * a1) / (E1 * (b * b - a1 * a1))
+                           : (1 + nu1) * b * ((1 - 2 * nu1) * b * b + a1 * a1) / (E1 * (b * b - a1 * a1));
+  const double Co = stress ? b * ((1 - nu2) * b * b + (1 + nu2) * b2 * b2) / (E2 * (b2 * b2 - b * b))
+                           : (1 + nu2) * b * ((1 - 2 * nu2) * b * b + b2 * b2) / (E2 * (b2 * b2 - b * b));
+  return delta / (Ci + Co);
+}
+
+/// A ring r0..r1 meshed on its own: `radial` x `around` quadrilaterals. Plane: the whole ring,
+/// closed round (grid row `around` is row 0). Axisymmetric: a slice of height h along z.
+testing::Grid add_ring(Model& m, double r0, double r1, int radial, int around, int material) {
+  const bool plane = m.analysis != AnalysisType::axisymmetric;
+  constexpr double h = 0.2;
+  testing::Grid g = testing::add_grid(
+      m, radial, around,
+      [&](double s, double t) {
+        const double r = r0 + (r1 - r0) * s;
+        if (!plane) return Vec2(r, h * t);
+        const double angle = 2.0 * std::numbers::pi * t;
+        return Vec2(r * std::cos(angle), r * std::sin(angle));
+      },
+      material);
+  if (!plane) return g;
+  // Close the ring: the last row of nodes (added last) is the first one.
+  for (int i = 0; i <= radial; ++i) {
+    const int last = g.at(i, around), first = g.at(i, 0);
+    for (Element& e : m.elements) std::replace(e.nodes.begin(), e.nodes.end(), last, first);
+    g.nodes[static_cast<std::size_t>(i + (radial + 1) * around)] = first;
+  }
+  m.nodes.resize(m.nodes.size() - static_cast<std::size_t>(radial + 1));
+  return g;
+}
+
+/// The shrink fit, the two rings meshed on their own (`around` the interface: inner, outer; plane:
+/// multiples of 4). Plane: each ring held at its inner radius in z at 0 and 180 degrees and in r at
+/// 90 degrees (no rigid motion, and nothing against the symmetric expansion). Axisymmetric: every
+/// node held in z (the plane-strain state of a long fit).
+Model shrink_fit(AnalysisType type, int radial, std::array<int, 2> around) {
+  Model m;
+  m.analysis = type;
+  m.materials = {testing::isotropic_material(1, E1, nu1), testing::isotropic_material(2, E2, nu2)};
+  const testing::Grid inner = add_ring(m, a1, b + 0.5 * delta, radial, around[0], 0);
+  const testing::Grid outer = add_ring(m, b - 0.5 * delta, b2, radial, around[1], 1);
+  ContactSettings& contact = m.contact.emplace();
+  contact.surfaces = {{"shaft", testing::column_edges(inner, radial)}, {"hub", testing::column_edges(outer, 0)}};
+  contact.pairs.emplace_back().surfaces = {0, 1};
+  for (const testing::Grid* g : {&inner, &outer}) {
+    if (type == AnalysisType::axisymmetric) {
+      for (const int n : g->nodes) testing::constrain(m, n, std::nullopt, 0.0);
+      continue;
+    }
+    testing::constrain(m, g->at(0, 0), std::nullopt, 0.0);
+    testing::constrain(m, g->at(0, g->nj / 2), std::nullopt, 0.0);
+    testing::constrain(m, g->at(0, g->nj / 4), 0.0, std::nullopt);
+  }
+  testing::fill_temperatures(m, 0.0);
+  return m;
+}
+
+/// The mean contact pressure of the fit's points, relative to the closed form, minus one.
+double fit_error(AnalysisType type, int radial, std::array<int, 2> around) {
+  const Solution s = solve(shrink_fit(type, radial, around));
+  EXPECT_EQ(s.status, RunStatus::converged) << s.message;
+  const double p = lame_interference_pressure(type);
+  double worst = 0.0;
+  for (const ContactPointResult& point : s.contact.at(0).points) {
+    EXPECT_EQ(point.state, ContactPointState::stick);
+    worst = std::max(worst, std::abs(point.pressure / p - 1.0));
+  }
+  return worst;
+}
+
+TEST(SurfaceContact, LameShrinkFitOnNonMatchingMeshes) {
+  // The axisymmetric slice: the interface is straight along z, meshed with 12 against 20 segments
+  // (and 24 against 40), either ring as side A.
+  const AnalysisType axi = AnalysisType::axisymmetric;
+  const double coarse = fit_error(axi, 4, {12, 20});
+  const double fine = fit_error(axi, 8, {24, 40});
+  const double swapped = fit_error(axi, 8, {40, 24});
+  std::printf("axisymmetric shrink fit: worst pressure error %.3g %% (coarse), %.3g %% (fine), %.3g %% (A finer)\n",
+              100 * coarse, 100 * fine, 100 * swapped);
+  EXPECT_LT(fine, 0.003);
+  EXPECT_LT(swapped, 0.003);
+  EXPECT_LT(fine, coarse);
+}
+
+TEST(SurfaceContact, CurvedNonMatchingFitIsNotYetAccurate) {
+  // Known limitation (docs/contact-surfaces.md, "Curved interfaces"): a row's gap change uses one
+  // normal n_j over its whole support, so on a curved interface a radial motion of side B is
+  // under-counted by about (1 - cos) of the angle between A's and B's nodes, which varies from row to
+  // row; thick rings answer with a pressure that oscillates around the ring. On matching meshes the
+  // rows are exact. This test pins both facts, so that a fix shows here.
+  EXPECT_LT(fit_error(AnalysisType::plane_strain, 4, {48, 48}), 0.003);
+  EXPECT_GT(fit_error(AnalysisType::plane_strain, 4, {48, 80}), 0.01);
+}
+
+/// Keeps the state of every iteration and stops after `stop_after` iterations (0: never).
+class Recorder : public IterationObserver {
+ public:
+  explicit Recorder(int stop_after = 0) : stop_after_(stop_after) {}
+  void on_iteration(const IterationRecord&, const RestartState& state) override { states.push_back(state); }
+  bool stop_requested() override { return stop_after_ > 0 && static_cast<int>(states.size()) >= stop_after_; }
+  std::vector<RestartState> states;
+
+ private:
+  int stop_after_;
+};
+
+TEST(SurfaceContact, AResumedRunEqualsTheUninterruptedOne) {
+  // The patch test's blocks with an initial clearance the load closes, pressed in one step of three
+  // increments (the first closes part of the face, the others the rest): stopped after each
+  // iteration, saved through the JSON and CBOR codecs and resumed, every number is the same.
+  Model m = patch_model(AnalysisType::axisymmetric, 1.0e-5, false);
+  Step step;
+  step.name = "press";
+  step.increments = 3;
+  m.steps = {step};
+  const Solution uninterrupted = solve(m);
+  ASSERT_EQ(uninterrupted.status, RunStatus::converged) << uninterrupted.message;
+  ASSERT_GE(uninterrupted.iterations, 3);
+  for (int k = 1; k < uninterrupted.iterations; ++k) {
+    SCOPED_TRACE("stopped after iteration " + std::to_string(k));
+    Recorder first(k);
+    ASSERT_EQ(solve(m, &first).status, RunStatus::stopped);
+    const RestartState& saved = first.states.back();
+    ASSERT_FALSE(saved.contact.empty());
+    const RestartState from_json = io::state_from_json(io::state_to_json(saved, "digest"), "digest");
+    const Solution resumed = solve(m, nullptr, &from_json);
+    testing::expect_identical(resumed, uninterrupted);
+    const RestartState from_cbor = io::state_from_cbor(io::state_to_cbor(saved, "digest"), "digest");
+    const Solution resumed_cbor = solve(m, nullptr, &from_cbor);
+    ASSERT_EQ(resumed.contact.size(), uninterrupted.contact.size());
+    for (const Solution* r : {&resumed, &resumed_cbor}) {
+      for (std::size_t i = 0; i < uninterrupted.contact[0].points.size(); ++i) {
+        const ContactPointResult& got = r->contact[0].points[i];
+        const ContactPointResult& want = uninterrupted.contact[0].points[i];
+        EXPECT_EQ(got.pressure, want.pressure);
+        EXPECT_EQ(got.gap, want.gap);
+        EXPECT_EQ(got.state, want.state);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace saasgaps
