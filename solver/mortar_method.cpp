@@ -125,14 +125,16 @@ void MortarMethod::add_columns(const RestartState& state, IterationRecord& row) 
 }
 
 std::string MortarMethod::converged_note(const RestartState& state, const ContactOutcome& outcome) const {
-  if (!exact_) return gaps_->converged_note(state, outcome);
   std::ostringstream text;
   if (gaps_) text << gaps_->converged_note(state, outcome);
+  // The rows come last in state.contact (after the exact gaps' node pairs, when those solve them).
+  const std::size_t rows = surfaces_.pairs.pairs.size();
+  const std::size_t offset = state.contact.active.size() >= rows ? state.contact.active.size() - rows : 0;
   std::size_t touching = 0;
-  for (const std::uint8_t a : state.contact.active) touching += a;
-  text << " (contact surfaces: " << touching << " of "
-       << plural(static_cast<long long>(surfaces_.pairs.pairs.size()), "point") << " in contact";
-  if (!state.history.empty()) text << ", complementarity residual " << state.history.back().complementarity;
+  for (std::size_t i = offset; i < state.contact.active.size(); ++i) touching += state.contact.active[i];
+  text << " (contact surfaces: " << touching << " of " << plural(static_cast<long long>(rows), "point")
+       << " in contact";
+  if (exact_ && !state.history.empty()) text << ", complementarity residual " << state.history.back().complementarity;
   text << ")";
   return text.str();
 }

@@ -43,19 +43,40 @@ void add_traction(Model& m, const std::vector<std::array<int, 2>>& edges, const 
 }
 
 /// The patch test's model: the lower block's bottom held in z, in plane analyses one node of each
-/// block in r (the upper block is held in z by contact alone).
-Model patch_model(AnalysisType analysis, double gap, bool lower_is_a) {
+/// block in r (the upper block is held in z by contact alone). With `gaps`: the lower block rests
+/// instead on a support block (held in z at its bottom) across a row of gap elements of that method,
+/// 0.001 apart.
+Model patch_model(AnalysisType analysis, double gap, bool lower_is_a, std::optional<GapMethod> gaps = std::nullopt) {
   StackedBlocks b = testing::stacked_blocks(analysis, 1.0, 2.0, 1.0, gap, BlockFace{5, 1.3}, BlockFace{7, 0.75}, layers);
   Model& m = b.model;
+  if (gaps) {
+    const testing::Grid support = testing::add_grid(
+        m, b.lower.ni, 1, [](double s, double t) { return Vec2(1.0 + 2.0 * std::pow(s, 1.3), -0.001 - 0.5 * (1.0 - t)); },
+        0);
+    std::vector<int> below, above;
+    for (int i = 0; i <= b.lower.ni; ++i) {
+      below.push_back(support.at(i, 1));
+      above.push_back(b.lower.at(i, 0));
+      testing::constrain(m, support.at(i, 0), std::nullopt, 0.0);
+    }
+    testing::add_gap_row(m, below, above, [](int) { return 90.0; });
+    m.gaps->method = *gaps;
+    m.gaps->initial_modulus = *gaps == GapMethod::exact ? 1.0e-3 : 1.0;
+    m.gaps->tensile_schedule = *gaps == GapMethod::exact ? std::vector<double>{1.0e-3} : std::vector<double>{1.0e2, 1.0, 1.0e-2};
+    if (analysis != AnalysisType::axisymmetric) testing::constrain(m, support.at(0, 0), 0.0, std::nullopt);
+    testing::fill_temperatures(m, 0.0);
+  }
   ContactSettings& contact = m.contact.emplace();
   contact.surfaces = {{"lower top", b.lower_top}, {"upper bottom", b.upper_bottom}};
   SurfacePair pair;
   pair.surfaces = lower_is_a ? std::array<int, 2>{0, 1} : std::array<int, 2>{1, 0};
   contact.pairs = {pair};
   add_traction(m, testing::row_edges(b.upper, layers), Vec2(0.0, -pressure));
-  for (int i = 0; i <= b.lower.ni; ++i) testing::constrain(m, b.lower.at(i, 0), std::nullopt, 0.0);
+  if (!gaps) {
+    for (int i = 0; i <= b.lower.ni; ++i) testing::constrain(m, b.lower.at(i, 0), std::nullopt, 0.0);
+  }
   if (analysis != AnalysisType::axisymmetric) {
-    testing::constrain(m, b.lower.at(0, 0), 0.0, 0.0);
+    testing::constrain(m, b.lower.at(0, 0), 0.0, std::nullopt);
     testing::constrain(m, b.upper.at(0, layers), 0.0, std::nullopt);
   }
   return std::move(b.model);
@@ -244,6 +265,119 @@ TEST(SurfaceContact, CurvedNonMatchingFitIsNotYetAccurate) {
   // rows are exact. This test pins both facts, so that a fix shows here.
   EXPECT_LT(fit_error(AnalysisType::plane_strain, 4, {48, 48}), 0.003);
   EXPECT_GT(fit_error(AnalysisType::plane_strain, 4, {48, 80}), 0.01);
+}
+
+TEST(SurfaceContact, WorksWithGapElementsOfEitherMethod) {
+  // The patch test's blocks, the lower one resting on a support across a row of gap elements: the
+  // load crosses the contact surfaces and then the gaps. Exact gaps: one active set holds the node
+  // pairs and the surfaces' rows; the floor springs (1e-3, closed by their whole clearance) carry
+  // 1e-3 of the 250 per unit area. Classic gaps: the report's iteration of the moduli, the rows solved
+  // exactly in each iteration.
+  for (const GapMethod method : {GapMethod::exact, GapMethod::classic}) {
+    SCOPED_TRACE(method == GapMethod::exact ? "exact gaps" : "classic gaps");
+    const Model m = patch_model(AnalysisType::plane_strain, 0.0, true, method);
+    const Solution s = solve(m);
+    ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+    ASSERT_EQ(s.contact.size(), 1U);
+    const double tolerance = method == GapMethod::exact ? 1e-5 : 1e-2;
+    for (const ContactPointResult& p : s.contact[0].points) {
+      EXPECT_EQ(p.state, ContactPointState::stick);
+      EXPECT_NEAR(p.pressure, pressure, tolerance * pressure);
+    }
+    for (const GapResult& g : s.gaps) EXPECT_EQ(g.state, GapState::closed) << "gap " << g.id;
+    std::printf("%s: %s\n", method == GapMethod::exact ? "exact" : "classic", s.message.c_str());
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Hertz, plane strain (Johnson, Contact Mechanics, 4.3): two bodies whose initial gap is
+// g(x) = x^2 / (2 R), pressed together by P per unit length, touch over |x| < a with
+//   p(x) = p0 sqrt(1 - x^2 / a^2),  p0 = sqrt(P E* / (pi R)),  a = sqrt(4 P R / (pi E*)),
+//   1 / E* = (1 - nu1^2) / E1 + (1 - nu2^2) / E2,
+// for bodies large against a (20 a). Half model (symmetry at x = 0): a block, and a body whose
+// bottom is the cylinder's parabola z = x^2 / 2R, meshed on their own (a / 25 against a / 18 near the
+// contact). Side A is the block's flat top.
+
+constexpr double hertz_E = 1.0e7, hertz_nu = 0.3, hertz_R = 10.0, hertz_a = 0.2, hertz_size = 20.0 * hertz_a;
+const double hertz_E_star = hertz_E / (2.0 * (1.0 - hertz_nu * hertz_nu));
+const double hertz_P = hertz_a * hertz_a * std::numbers::pi * hertz_E_star / (4.0 * hertz_R);  // full model
+const double hertz_p0 = std::sqrt(hertz_P * hertz_E_star / (std::numbers::pi * hertz_R));
+
+/// Node coordinates 0..size: uniform steps h up to 1.6 a, then growing by 15 % per element.
+std::vector<double> graded(double h) {
+  std::vector<double> x{0.0};
+  while (x.back() < 1.6 * hertz_a - 1e-12) x.push_back(x.back() + h);
+  double step = h;
+  while (x.back() + step < hertz_size) {
+    step *= 1.15;
+    x.push_back(std::min(x.back() + step, hertz_size));
+  }
+  if (hertz_size - x.back() < 0.5 * step) {
+    x.back() = hertz_size;
+  } else {
+    x.push_back(hertz_size);
+  }
+  return x;
+}
+
+Model hertz_model() {
+  Model m;
+  m.analysis = AnalysisType::plane_strain;
+  m.materials = {testing::isotropic_material(1, hertz_E, hertz_nu)};
+  const std::vector<double> xb = graded(hertz_a / 25.0), xc = graded(hertz_a / 18.0);
+  const auto at = [](const std::vector<double>& xs, double s) {
+    return xs[static_cast<std::size_t>(std::lround(s * static_cast<double>(xs.size() - 1)))];
+  };
+  const int nb = static_cast<int>(xb.size()) - 1, nc = static_cast<int>(xc.size()) - 1;
+  const testing::Grid block =
+      testing::add_grid(m, nb, nb, [&](double s, double t) { return Vec2(at(xb, s), -at(xb, 1.0 - t)); }, 0);
+  const testing::Grid body = testing::add_grid(
+      m, nc, nc,
+      [&](double s, double t) {
+        const double x = at(xc, s), z0 = x * x / (2.0 * hertz_R);
+        return Vec2(x, z0 + at(xc, t) * (hertz_size - z0) / hertz_size);
+      },
+      0);
+  ContactSettings& contact = m.contact.emplace();
+  contact.surfaces = {{"block", testing::row_edges(block, nb)}, {"cylinder", testing::row_edges(body, 0)}};
+  contact.pairs.emplace_back().surfaces = {0, 1};
+  testing::fill_temperatures(m, 0.0);
+  for (int i = 0; i <= nb; ++i) testing::constrain(m, block.at(i, 0), std::nullopt, 0.0);
+  for (int j = 0; j <= nb; ++j) testing::constrain(m, block.at(0, j), 0.0, std::nullopt);  // symmetry about x = 0
+  for (int j = 0; j <= nc; ++j) testing::constrain(m, body.at(0, j), 0.0, std::nullopt);
+  // Half the load, a uniform pressure on the body's top.
+  add_traction(m, testing::row_edges(body, nc), Vec2(0.0, -0.5 * hertz_P / hertz_size));
+  return m;
+}
+
+TEST(SurfaceContact, HertzCylinderOnABlockWithNonMatchingMeshes) {
+  const Model m = hertz_model();
+  const Solution s = solve(m);
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  const std::vector<ContactPointResult>& points = s.contact.at(0).points;
+  // Fit p^2 = p0^2 (1 - x^2 / a^2) over the touching points well inside the contact; the resultant
+  // is the sum of pressure x the point's share of the (flat) face.
+  double sxx = 0, sx = 0, sy = 0, sxy = 0, count = 0, peak = 0.0, resultant = 0.0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const ContactPointResult& p = points[k];
+    const double left = k > 0 ? std::abs(points[k - 1].r - p.r) : 0.0;
+    const double right = k + 1 < points.size() ? std::abs(points[k + 1].r - p.r) : 0.0;
+    resultant += p.pressure * 0.5 * (left + right) * m.thickness;
+    if (p.r == 0.0) peak = p.pressure;
+    if (p.state != ContactPointState::stick || p.r > 0.8 * hertz_a) continue;
+    const double X = p.r * p.r, Y = p.pressure * p.pressure;
+    sx += X, sy += Y, sxx += X * X, sxy += X * Y, count += 1;
+  }
+  const double slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
+  const double intercept = (sy - slope * sx) / count;
+  const double a = std::sqrt(-intercept / slope);
+  std::printf("Hertz on surfaces: peak %.5g vs %.5g (%.3g %%), a %.5g vs %.5g (%.3g %%), resultant %.3g %%\n", peak,
+              hertz_p0, 100 * (peak / hertz_p0 - 1), a, hertz_a, 100 * (a / hertz_a - 1),
+              100 * (resultant / (0.5 * hertz_P) - 1));
+  EXPECT_LT(std::abs(peak / hertz_p0 - 1.0), 0.015);
+  EXPECT_LT(std::abs(a / hertz_a - 1.0), 0.015);
+  // The body is held in z by contact alone: the rows carry the whole load, to round-off.
+  EXPECT_LT(std::abs(resultant / (0.5 * hertz_P) - 1.0), 1e-8);
 }
 
 /// Keeps the state of every iteration and stops after `stop_after` iterations (0: never).
