@@ -136,6 +136,15 @@ std::string MortarMethod::converged_note(const RestartState& state, const Contac
        << " in contact";
   if (exact_ && !state.history.empty()) text << ", complementarity residual " << state.history.back().complementarity;
   text << ")";
+  // A pair without rows can never touch: most likely the wrong surfaces, or surfaces facing away.
+  for (std::size_t k = 0; k < surfaces_.pair_count(); ++k) {
+    if (surfaces_.first[k] != surfaces_.first[k + 1]) continue;
+    const auto& pair = model_.contact->pairs[k].surfaces;
+    text << "; warning: the surfaces of contact pair " << k + 1 << " (\""
+         << model_.contact->surfaces[static_cast<std::size_t>(pair[0])].name << "\", \""
+         << model_.contact->surfaces[static_cast<std::size_t>(pair[1])].name
+         << "\") never face each other (no node of the first faces the second), so they cannot touch";
+  }
   return text.str();
 }
 

@@ -17,7 +17,9 @@
 #include "analysis.hpp"
 #include "element_kernel.hpp"
 #include "io/state_codec.hpp"
+#include "support/hertz_line_contact.hpp"
 #include "support/identical_solutions.hpp"
+#include "support/state_recorder.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/stacked_blocks.hpp"
 
@@ -267,6 +269,32 @@ TEST(SurfaceContact, CurvedNonMatchingFitIsNotYetAccurate) {
   EXPECT_GT(fit_error(AnalysisType::plane_strain, 4, {48, 80}), 0.01);
 }
 
+TEST(SurfaceContact, APairWhoseSurfacesNeverFaceEachOtherIsAWarning) {
+  // The lower block's top and the upper block's top both face +z: no point of one faces the other.
+  Model m = patch_model(AnalysisType::plane_strain, 0.0, true);
+  double top = 0.0;
+  for (const Node& n : m.nodes) top = std::max(top, n.z);
+  std::vector<std::array<int, 2>> upper_top;
+  for (const Element& e : m.elements) {
+    for (int k = 0; k < e.node_count; ++k) {
+      const int from = e.nodes[static_cast<std::size_t>(k)], to = e.nodes[static_cast<std::size_t>((k + 1) % e.node_count)];
+      if (m.nodes[static_cast<std::size_t>(from)].z == top && m.nodes[static_cast<std::size_t>(to)].z == top) {
+        upper_top.push_back({from, to});
+      }
+    }
+  }
+  m.contact->surfaces.push_back({"upper top", upper_top});
+  m.contact->pairs.emplace_back().surfaces = {0, 2};
+  const Solution s = solve(m);
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  EXPECT_NE(s.message.find("warning: the surfaces of contact pair 2 (\"lower top\", \"upper top\") never face each other"),
+            std::string::npos)
+      << s.message;
+  ASSERT_EQ(s.contact.size(), 2U);
+  EXPECT_TRUE(s.contact[1].points.empty());
+  EXPECT_EQ(s.message.find("pair 1"), std::string::npos);  // the first pair faces
+}
+
 TEST(SurfaceContact, WorksWithGapElementsOfEitherMethod) {
   // The patch test's blocks, the lower one resting on a support across a row of gap elements: the
   // load crosses the contact surfaces and then the gaps. Exact gaps: one active set holds the node
@@ -290,41 +318,18 @@ TEST(SurfaceContact, WorksWithGapElementsOfEitherMethod) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Hertz, plane strain (Johnson, Contact Mechanics, 4.3): two bodies whose initial gap is
-// g(x) = x^2 / (2 R), pressed together by P per unit length, touch over |x| < a with
-//   p(x) = p0 sqrt(1 - x^2 / a^2),  p0 = sqrt(P E* / (pi R)),  a = sqrt(4 P R / (pi E*)),
-//   1 / E* = (1 - nu1^2) / E1 + (1 - nu2^2) / E2,
-// for bodies large against a (20 a). Half model (symmetry at x = 0): a block, and a body whose
+// Hertz, plane strain (support/hertz_line_contact.hpp), for bodies large against a (20 a). Half model (symmetry at x = 0): a block, and a body whose
 // bottom is the cylinder's parabola z = x^2 / 2R, meshed on their own (a / 25 against a / 18 near the
 // contact). Side A is the block's flat top.
 
-constexpr double hertz_E = 1.0e7, hertz_nu = 0.3, hertz_R = 10.0, hertz_a = 0.2, hertz_size = 20.0 * hertz_a;
-const double hertz_E_star = hertz_E / (2.0 * (1.0 - hertz_nu * hertz_nu));
-const double hertz_P = hertz_a * hertz_a * std::numbers::pi * hertz_E_star / (4.0 * hertz_R);  // full model
-const double hertz_p0 = std::sqrt(hertz_P * hertz_E_star / (std::numbers::pi * hertz_R));
-
-/// Node coordinates 0..size: uniform steps h up to 1.6 a, then growing by 15 % per element.
-std::vector<double> graded(double h) {
-  std::vector<double> x{0.0};
-  while (x.back() < 1.6 * hertz_a - 1e-12) x.push_back(x.back() + h);
-  double step = h;
-  while (x.back() + step < hertz_size) {
-    step *= 1.15;
-    x.push_back(std::min(x.back() + step, hertz_size));
-  }
-  if (hertz_size - x.back() < 0.5 * step) {
-    x.back() = hertz_size;
-  } else {
-    x.push_back(hertz_size);
-  }
-  return x;
-}
+using testing::hertz_a, testing::hertz_E, testing::hertz_nu, testing::hertz_p0, testing::hertz_P, testing::hertz_R,
+    testing::hertz_size;
 
 Model hertz_model() {
   Model m;
   m.analysis = AnalysisType::plane_strain;
   m.materials = {testing::isotropic_material(1, hertz_E, hertz_nu)};
-  const std::vector<double> xb = graded(hertz_a / 25.0), xc = graded(hertz_a / 18.0);
+  const std::vector<double> xb = testing::hertz_graded(hertz_a / 25.0), xc = testing::hertz_graded(hertz_a / 18.0);
   const auto at = [](const std::vector<double>& xs, double s) {
     return xs[static_cast<std::size_t>(std::lround(s * static_cast<double>(xs.size() - 1)))];
   };
@@ -380,18 +385,6 @@ TEST(SurfaceContact, HertzCylinderOnABlockWithNonMatchingMeshes) {
   EXPECT_LT(std::abs(resultant / (0.5 * hertz_P) - 1.0), 1e-8);
 }
 
-/// Keeps the state of every iteration and stops after `stop_after` iterations (0: never).
-class Recorder : public IterationObserver {
- public:
-  explicit Recorder(int stop_after = 0) : stop_after_(stop_after) {}
-  void on_iteration(const IterationRecord&, const RestartState& state) override { states.push_back(state); }
-  bool stop_requested() override { return stop_after_ > 0 && static_cast<int>(states.size()) >= stop_after_; }
-  std::vector<RestartState> states;
-
- private:
-  int stop_after_;
-};
-
 TEST(SurfaceContact, AResumedRunEqualsTheUninterruptedOne) {
   // The patch test's blocks with an initial clearance the load closes, pressed in one step of three
   // increments (the first closes part of the face, the others the rest): stopped after each
@@ -406,7 +399,7 @@ TEST(SurfaceContact, AResumedRunEqualsTheUninterruptedOne) {
   ASSERT_GE(uninterrupted.iterations, 3);
   for (int k = 1; k < uninterrupted.iterations; ++k) {
     SCOPED_TRACE("stopped after iteration " + std::to_string(k));
-    Recorder first(k);
+    testing::StateRecorder first(k);
     ASSERT_EQ(solve(m, &first).status, RunStatus::stopped);
     const RestartState& saved = first.states.back();
     ASSERT_FALSE(saved.contact.empty());
