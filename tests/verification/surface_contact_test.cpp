@@ -84,24 +84,8 @@ Model patch_model(AnalysisType analysis, double gap, bool lower_is_a, std::optio
   return std::move(b.model);
 }
 
-struct PatchCase {
-  const char* name;
-  AnalysisType analysis;
-  bool lower_is_a;
-  double gap;
-};
-
 TEST(SurfaceContact, PatchTestThroughSolve) {
-  const std::vector<PatchCase> cases = {
-      {"plane stress, 5 on 7", AnalysisType::plane_stress, true, 0.0},
-      {"plane stress, 7 on 5", AnalysisType::plane_stress, false, 0.0},
-      {"plane strain, 5 on 7", AnalysisType::plane_strain, true, 0.0},
-      {"plane strain, 7 on 5, interference", AnalysisType::plane_strain, false, -0.01},
-      {"axisymmetric, 5 on 7", AnalysisType::axisymmetric, true, 0.0},
-      {"axisymmetric, 7 on 5", AnalysisType::axisymmetric, false, 0.0},
-      {"axisymmetric, 5 on 7, interference", AnalysisType::axisymmetric, true, -0.01},
-  };
-  for (const PatchCase& c : cases) {
+  for (const testing::PatchCase& c : testing::patch_cases()) {
     SCOPED_TRACE(c.name);
     const Model m = patch_model(c.analysis, c.gap, c.lower_is_a);
     const Solution s = solve(m);
