@@ -12,6 +12,7 @@
 #include "load_schedule.hpp"
 #include "errors.hpp"
 #include "material_state.hpp"
+#include "mortar_method.hpp"
 #include "plural.hpp"
 #include "sparse_cholesky.hpp"
 #include "stiffness_system.hpp"
@@ -69,12 +70,13 @@ struct Evaluation {
 /// components), the solid laws (temperatures), K and f, the contact method built on them, and the
 /// factorization. A model without steps has one, built on the model itself.
 struct IncrementSystem {
-  IncrementSystem(const Model& solved, const GapSettings* gaps, const ContactMethodFactory& make_contact)
+  IncrementSystem(const Model& solved, const GapSettings* gaps, const SurfaceContact& surfaces,
+                  const ContactMethodFactory& make_contact)
       : model(solved),
         dofs(solved),
         materials(solved),
-        system(solved, dofs),
-        contact(make_contact({solved, gaps, dofs, system.pattern()})),
+        system(solved, dofs, contact_couplings(surfaces, dofs)),
+        contact(make_contact({solved, gaps, dofs, system.pattern(), &surfaces})),
         u_free(static_cast<std::size_t>(dofs.size()), 0.0) {}
 
   const Model& model;  // the model itself, or the increment's (LoadSchedule::increment_model)
@@ -101,6 +103,7 @@ class GapContactAnalysis {
         ordering_cache_(cache),
         max_iterations_(options.max_iterations.value_or(model.solver.max_iterations)),
         gap_settings_(effective_gap_settings(model, options)),
+        surfaces_(surface_contact(model)),
         make_contact_(make_contact),
         schedule_(model) {
     schedule_changed_ = options.tensile_schedule.has_value() && options.restart_schedule;
@@ -157,13 +160,13 @@ class GapContactAnalysis {
   void begin_increment(const RestartState& state) {
     const GapSettings* gaps = gap_settings_ ? &*gap_settings_ : nullptr;
     if (!state.position) {
-      now_ = std::make_unique<IncrementSystem>(model_, gaps, make_contact_);
+      now_ = std::make_unique<IncrementSystem>(model_, gaps, surfaces_, make_contact_);
       return;
     }
     // The last increment's system is only read below (its numbering and analysis), while the model
     // it was built on takes the new increment's values.
     increment_model_ = schedule_.increment_model(*state.position);
-    auto next = std::make_unique<IncrementSystem>(increment_model_, gaps, make_contact_);
+    auto next = std::make_unique<IncrementSystem>(increment_model_, gaps, surfaces_, make_contact_);
     if (now_ && now_->cholesky && same_numbering(now_->dofs, next->dofs)) {
       // Same prescribed components, so the same pattern: its symbolic analysis holds.
       next->analysed_pattern = std::move(now_->analysed_pattern);
@@ -353,6 +356,7 @@ class GapContactAnalysis {
                               von_mises(es.stress), v.materials.yielded[e], v.materials.converged[e]});
       }
       s.gaps = v.contact.gaps;
+      s.contact = now_->contact->surface_results(state);
     }
     s.steps = step_results(state, status);
     s.message = message(state, v, status);
@@ -419,6 +423,7 @@ class GapContactAnalysis {
   const OrderingCache* ordering_cache_;
   int max_iterations_;
   std::optional<GapSettings> gap_settings_;  // the model's, with the restart's changes
+  SurfaceContact surfaces_;                  // the rows of model.contact (the geometry's, every increment)
   bool schedule_changed_ = false;
   ContactMethodFactory make_contact_;
   LoadSchedule schedule_;

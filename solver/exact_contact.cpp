@@ -41,7 +41,7 @@ ExactContact::ExactContact(const Model& model, const DofMap& dofs, const CscPatt
     for (std::size_t a = 0; a < e.size(); ++a) {
       for (std::size_t b = a; b < e.size(); ++b) {
         const Index position = pattern.find(e[a].equation, e[b].equation);
-        assert(position >= 0 && "a pair's nodes belong to one gap element, so the pattern couples them");
+        assert(position >= 0 && "a pair's nodes belong to one gap element, or the pattern's extra couplings hold them");
         positions_.push_back(position);
         products_.push_back(e[a].coefficient * e[b].coefficient);
       }
@@ -146,7 +146,9 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
   if (state.active.size() == n) {
     active = state.active;
   } else {
-    for (std::size_t i = 0; i < n; ++i) active[i] = rows_[i].g0 <= 1.01 * smallest;
+    // Rows already closed or penetrating (an interference: g0 <= 0) start active too.
+    const double start = std::max(0.0, smallest + 0.01 * std::abs(smallest));
+    for (std::size_t i = 0; i < n; ++i) active[i] = rows_[i].g0 <= start;
   }
   std::vector<double> force = state.force.size() == n ? state.force : std::vector<double>(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {

@@ -13,7 +13,8 @@
 /// converged answer has g_A = 0 to round-off whatever rho is. Then
 ///   A <- { i : lambda_i > tol_lambda_i }  U  { i not in A : g_i < -tol_g }
 /// until A repeats; an active set seen before (a cycle) changes only its worst pair. The first A is
-/// the last solve's, or the pairs whose initial gap is within 1 % of the smallest.
+/// the last solve's, or the pairs whose initial gap is within 1 % of the smallest, and every pair whose
+/// initial gap is <= 0 (closed, or an interference of contact surfaces).
 
 #include <cstdint>
 #include <functional>

@@ -145,6 +145,39 @@ struct Step {
   std::vector<Constraint> constraints;  ///< components prescribed at the step's end (others keep theirs)
 };
 
+/// A contact surface (model.contact.surfaces): a chain of boundary edges of solid elements, each
+/// [a, b] by node index in the order and direction given (contact_surface.hpp validates and orients it).
+struct SurfaceDefinition {
+  std::string name;
+  std::vector<std::array<int, 2>> edges;
+};
+
+/// One row of a contact conductance table: h across touching faces at contact pressure p.
+struct ConductanceRow {
+  double p = 0.0;
+  double h = 0.0;
+};
+
+/// Heat conduction across a contact pair (read and stored; used by heat conduction only).
+struct ContactConductance {
+  /// h of touching faces over contact pressure, increasing p, held constant beyond its ends; a
+  /// number in the model is the one row {0, h}.
+  std::vector<ConductanceRow> closed;
+  double gas_conductivity = 0.0;  ///< open faces conduct gas_conductivity / gap
+};
+
+/// A pair of contact surfaces (model.contact.pairs): side A (non-mortar) first, side B second.
+struct SurfacePair {
+  std::array<int, 2> surfaces{-1, -1};  ///< indices into ContactSettings::surfaces, distinct
+  double friction = 0.0;                ///< Coulomb mu (0: frictionless, the only one solved today)
+  std::optional<ContactConductance> conductance;
+};
+
+struct ContactSettings {
+  std::vector<SurfaceDefinition> surfaces;
+  std::vector<SurfacePair> pairs;
+};
+
 /// Indices tracked in every iteration's history row.
 struct OutputOptions {
   std::vector<int> watch_elements;  ///< indices into Model::elements
@@ -171,6 +204,7 @@ struct Model {
   std::vector<Material> materials;
   std::vector<Element> elements;
   std::optional<GapSettings> gaps;
+  std::optional<ContactSettings> contact;  ///< contact surfaces and their pairs (mortar contact)
   std::vector<Constraint> constraints;
   Loads loads;
   std::vector<Step> steps;  ///< empty: one step of one increment with `loads` (no step output at all)

@@ -2,6 +2,7 @@
 /// The outcome of a run: status, history, and the last iteration's displacements, element
 /// stresses and strains, and gap states.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,28 @@ struct StepResult {
   StepStatus status = StepStatus::not_converged;
 };
 
+/// A point of a contact surface pair: open, or touching (stick: frictionless contact that touches;
+/// slip needs friction, not solved yet).
+enum class ContactPointState { open, stick, slip };
+
+const char* to_string(ContactPointState state);
+
+/// One node of side A of a contact pair (result `contact[].points[]`).
+struct ContactPointResult {
+  double r = 0.0, z = 0.0;  ///< the node's reference coordinates
+  double gap = 0.0;         ///< current gap along the node's normal (length; < 0 never once solved)
+  double pressure = 0.0;    ///< >= 0, force per unit area of side A's face
+  double shear = 0.0;       ///< tangential traction (0: frictionless)
+  double slip = 0.0;        ///< accumulated tangential slip (0: frictionless)
+  ContactPointState state = ContactPointState::open;
+};
+
+/// A contact pair's points along side A, in the order of its chain.
+struct ContactPairResult {
+  std::array<std::string, 2> surfaces;  ///< names of sides A and B
+  std::vector<ContactPointResult> points;
+};
+
 struct Solution {
   RunStatus status = RunStatus::not_converged;
   int iterations = 0;
@@ -73,6 +96,7 @@ struct Solution {
   std::vector<NodeResult> nodes;
   std::vector<ElementResult> elements;
   std::vector<GapResult> gaps;
+  std::vector<ContactPairResult> contact;  ///< one per model.contact pair; empty without contact
   std::vector<StepResult> steps;  ///< stepped models only, one per Model::steps entry; else empty
 };
 

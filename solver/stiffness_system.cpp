@@ -20,12 +20,12 @@ std::span<const int> clique_nodes(const Model& model, std::size_t s) {
 
 }  // namespace
 
-StiffnessSystem::StiffnessSystem(const Model& model, const DofMap& dofs)
+StiffnessSystem::StiffnessSystem(const Model& model, const DofMap& dofs, const Cliques& couplings)
     : model_(model),
       dofs_(dofs),
       assembler_(dofs, model.elements.size() + model.gap_count(),
-                 [&model](std::size_t s) { return clique_nodes(model, s); }) {
-  for (std::size_t s = model.elements.size(); s < assembler_.clique_count(); ++s) {
+                 [&model](std::size_t s) { return clique_nodes(model, s); }, couplings) {
+  for (std::size_t s = model.elements.size(); s < model.elements.size() + model.gap_count(); ++s) {
     for (Index position : assembler_.positions(s)) {
       if (position >= 0) gap_positions_.push_back(position);
     }

@@ -76,10 +76,33 @@ void write_gap(JsonWriter& out, const Model& model, const GapElement& gap, const
   out.field("sigma_m", g.sigma_m).field("state", to_string(g.state)).end_object();
 }
 
+/// A contact pair: its surfaces [A, B] and its points along A (keys in alphabetical order).
+void write_contact_pair(JsonWriter& out, const ContactPairResult& pair) {
+  out.begin_object().key("points").begin_array();
+  for (const ContactPointResult& p : pair.points) {
+    out.begin_object()
+        .field("gap", p.gap)
+        .field("pressure", p.pressure)
+        .field("r", p.r)
+        .field("shear", p.shear)
+        .field("slip", p.slip)
+        .field("state", to_string(p.state))
+        .field("z", p.z)
+        .end_object();
+  }
+  out.end_array().key("surfaces").begin_array().value(pair.surfaces[0]).value(pair.surfaces[1]).end_array();
+  out.end_object();
+}
+
 }  // namespace
 
 void write_result(JsonWriter& out, const Model& model, const Solution& s) {
   out.begin_object().field("analysis", analysis_name(model.analysis));
+  if (model.contact) {  // models with contact surfaces only: other results stay as they were
+    out.key("contact").begin_array();
+    for (const ContactPairResult& pair : s.contact) write_contact_pair(out, pair);
+    out.end_array();
+  }
   // Coordinates, connectivity and temperatures ride along so that a result can be plotted or
   // exported on its own.
   out.key("elements").begin_array();

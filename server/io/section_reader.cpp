@@ -10,12 +10,12 @@ namespace {
 
 constexpr std::array<std::string_view, section_count> section_keys{
     "schema_version", "title", "description", "units", "analysis", "nodes", "materials",
-    "elements", "gaps", "constraints", "loads", "solver", "output", "steps"};
+    "elements", "gaps", "constraints", "loads", "solver", "output", "steps", "contact"};
 
 constexpr std::array<std::string_view, 7> required_root_keys{"schema_version", "title", "analysis", "nodes",
                                                             "materials", "elements", "constraints"};
-constexpr std::array<std::string_view, 7> optional_root_keys{"description", "units", "gaps", "loads", "solver",
-                                                            "output", "steps"};
+constexpr std::array<std::string_view, 8> optional_root_keys{"description", "units", "gaps", "loads", "solver",
+                                                            "output", "steps", "contact"};
 
 }  // namespace
 
@@ -47,6 +47,7 @@ std::span<const Section> dependencies(Section s) {
     case Section::loads: return on_loads;
     case Section::output: return on_all_elements;
     case Section::steps: return on_loads_and_constraints;
+    case Section::contact: return on_nodes_and_elements;
     default: return {};
   }
 }
@@ -100,6 +101,7 @@ void SectionReader::read_section(Section s, const json* value) {
     case Section::solver: read_solver(root); break;
     case Section::output: read_output(root); break;
     case Section::steps: read_steps(root); break;
+    case Section::contact: read_contact(root); break;
     case Section::nodes:
     case Section::elements:
     case Section::constraints: read_item_section(s, root); break;
@@ -165,6 +167,10 @@ Model SectionReader::finish() {
     // Exact contact mode: the gap elements must give node pairs (checked on a model otherwise valid).
     if (std::vector<InputIssue> pairing = contact_pairing_input_issues(model_); !pairing.empty()) {
       throw ModelError(std::move(pairing));
+    }
+    // Contact surfaces: each a chain of boundary edges (judged with every solid element read).
+    if (std::vector<InputIssue> chains = contact_surface_input_issues(model_); !chains.empty()) {
+      throw ModelError(std::move(chains));
     }
     return std::move(model_);
   }

@@ -6,6 +6,7 @@
 /// section whole; both give the same issues in the same order.
 ///
 /// Files: section_reader.cpp (the sections, in document order), section_steps.cpp (load steps),
+/// section_contact.cpp (contact surfaces and pairs),
 /// section_checks.cpp (generic
 /// value checks and temperature tables), section_references.cpp (ids, references and element
 /// shapes), section_items.cpp (the typed fast path of valid items), value_quote.cpp (how values
@@ -171,9 +172,9 @@ inline int as_index(std::size_t i) { return static_cast<int>(i); }
 /// The top-level members of a model document, in the order the reader judges them.
 enum class Section {
   schema_version, title, description, units, analysis, nodes, materials, elements, gaps, constraints, loads,
-  solver, output, steps
+  solver, output, steps, contact
 };
-constexpr std::size_t section_count = 14;
+constexpr std::size_t section_count = 15;
 
 /// The member name of a section.
 std::string_view section_key(Section s);
@@ -360,6 +361,12 @@ class SectionReader {
   // section_steps.cpp
   void read_steps(const Obj& root);
   std::optional<Step> read_step(const json& item, const std::string& pointer);
+  // section_contact.cpp
+  void read_contact(const Obj& root);
+  std::optional<SurfaceDefinition> read_surface(const json& item, const std::string& pointer);
+  /// surfaces_complete: every surface was read, so an unknown name is the pair's own issue.
+  std::optional<SurfacePair> read_surface_pair(const json& item, const std::string& pointer, bool surfaces_complete);
+  std::optional<ContactConductance> read_conductance(const json& value, const std::string& pointer);
 
   struct RankedIssue {
     int rank = 0;  ///< -1 repeated keys, 0 the root object, 1 + Section: found reading that section

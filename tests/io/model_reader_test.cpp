@@ -124,7 +124,7 @@ std::string in_contract_order(const json& document) {
   if (!document.is_object()) return document.dump();
   std::string text = "{";
   for (const char* key : {"schema_version", "title", "description", "units", "analysis", "nodes", "materials",
-                          "elements", "gaps", "constraints", "loads", "solver", "output", "steps"}) {
+                          "elements", "gaps", "constraints", "loads", "solver", "output", "steps", "contact"}) {
     if (!document.contains(key)) continue;
     text += (text.size() > 1 ? ",\"" : "\"") + std::string(key) + "\":" + document[key].dump();
   }
@@ -1223,6 +1223,97 @@ TEST(ModelReader, StepsChangeTheModelDigestAndAModelWithoutThemKeepsIts) {
   std::string digest;
   (void)parse_model(with_steps().dump(), &digest);
   EXPECT_EQ(digest, model_digest(with_steps()));
+}
+
+// ------------------------------------------------------------------------------------------------
+// Contact surfaces (the spec's third round): read into Model::contact, bad input at its pointer
+
+json with_contact() {
+  json m = valid_model();
+  m["contact"] = json::parse(R"({
+    "surfaces": [{"name": "top", "edges": [[5, 4], [6, 5]]}, {"name": "bottom", "edges": [[1, 2], [3, 2]]}],
+    "pairs": [{"surfaces": ["top", "bottom"], "friction": 0,
+               "conductance": {"closed": [{"p": 0, "h": 1}, {"p": 1000, "h": 8}], "gas_conductivity": 2e-4}},
+              {"surfaces": ["bottom", "top"], "conductance": {"closed": 5}}]
+  })");
+  return m;
+}
+
+TEST(ModelReader, ContactSurfacesAndPairsAreRead) {
+  const Model m = read_model(with_contact());
+  ASSERT_TRUE(m.contact.has_value());
+  ASSERT_EQ(m.contact->surfaces.size(), 2u);
+  EXPECT_EQ(m.contact->surfaces[0].name, "top");
+  const std::vector<std::array<int, 2>> top{{4, 3}, {5, 4}};  // node id k has index k - 1
+  EXPECT_EQ(m.contact->surfaces[0].edges, top);
+  ASSERT_EQ(m.contact->pairs.size(), 2u);
+  EXPECT_EQ(m.contact->pairs[0].surfaces, (std::array<int, 2>{0, 1}));
+  EXPECT_EQ(m.contact->pairs[1].surfaces, (std::array<int, 2>{1, 0}));
+  EXPECT_EQ(m.contact->pairs[0].friction, 0.0);
+  ASSERT_TRUE(m.contact->pairs[0].conductance.has_value());
+  ASSERT_EQ(m.contact->pairs[0].conductance->closed.size(), 2u);
+  EXPECT_EQ(m.contact->pairs[0].conductance->closed[1].p, 1000.0);
+  EXPECT_EQ(m.contact->pairs[0].conductance->closed[1].h, 8.0);
+  EXPECT_EQ(m.contact->pairs[0].conductance->gas_conductivity, 2e-4);
+  // A number is a one-row table (held constant beyond its ends).
+  ASSERT_EQ(m.contact->pairs[1].conductance->closed.size(), 1u);
+  EXPECT_EQ(m.contact->pairs[1].conductance->closed[0].h, 5.0);
+  EXPECT_EQ(m.contact->pairs[1].conductance->gas_conductivity, 0.0);
+  EXPECT_FALSE(read_model(valid_model()).contact.has_value());
+}
+
+TEST(ModelReaderRules, ContactSurfaceEdgesAreBoundaryEdgesOfOneSolidElementInOneChain) {
+  // 2-5 is the side elements 1 and 2 share; 1-5 a diagonal of element 1; 4-5 and 2-3 are not joined.
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/surfaces/0/edges/1", json{2, 5}), "/contact/surfaces/0/edges/1",
+                      {"not a boundary edge", "elements 1 and 2"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/surfaces/1/edges/0", json{1, 5}), "/contact/surfaces/1/edges/0",
+                      {"not a side of any solid element"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/surfaces/0/edges/1", json{2, 3}), "/contact/surfaces/0/edges/1",
+                      {"not connected"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/surfaces/0/edges/1", json{4, 5}), "/contact/surfaces/0/edges/1",
+                      {"same edge as edge 0"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/surfaces/0/edges/1", json{5, 5}), "/contact/surfaces/0/edges/1",
+                      {"same node"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/surfaces/0/edges/0", json{5, 99}), "/contact/surfaces/0/edges/0/1",
+                      {"99"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/surfaces/0/edges/0", json{5}), "/contact/surfaces/0/edges/0",
+                      {"two node ids"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/surfaces/0/edges", json::array()), "/contact/surfaces/0/edges",
+                      {"edges"}));
+}
+
+TEST(ModelReaderRules, ContactSurfaceNamesAreUniqueAndPairsNameTwoOfThem) {
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/surfaces/1/name", "top"), "/contact/surfaces/1/name",
+                      {"\"top\"", "/contact/surfaces/0"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/surfaces/1/name", ""), "/contact/surfaces/1/name", {"non-empty"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/surfaces/1", "side"), "/contact/pairs/0/surfaces/1",
+                      {"\"side\"", "not defined"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/surfaces/1", "top"), "/contact/pairs/0/surfaces/1",
+                      {"two different surfaces", "itself"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/surfaces", json{"top"}), "/contact/pairs/0/surfaces",
+                      {"two surfaces"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/surfaces/0", 3), "/contact/pairs/0/surfaces/0",
+                      {"string"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs", json::array()), "/contact/pairs", {"pairs"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/extra", 1), "/contact/extra", {"extra"}));
+}
+
+TEST(ModelReaderRules, FrictionIsNotImplementedYetAndConductanceIsChecked) {
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/friction", 0.15), "/contact/pairs/0/friction",
+                      {"0.15", "not implemented yet", "issue 20"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/friction", -1), "/contact/pairs/0/friction", {"-1"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/conductance/closed/1/p", 0),
+                      "/contact/pairs/0/conductance/closed/1/p", {"increasing"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/conductance/closed/0/h", -1),
+                      "/contact/pairs/0/conductance/closed/0/h", {"-1"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/1/conductance/closed", -5),
+                      "/contact/pairs/1/conductance/closed", {"-5"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/conductance/gas_conductivity", "x"),
+                      "/contact/pairs/0/conductance/gas_conductivity", {"gas_conductivity"}));
+}
+
+TEST(ModelReader, ContactChangesTheModelDigest) {
+  EXPECT_NE(model_digest(with_contact()), model_digest(valid_model()));
 }
 
 }  // namespace

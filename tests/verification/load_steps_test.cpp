@@ -17,27 +17,14 @@
 #include "io/state_codec.hpp"
 #include "io/stored_state.hpp"
 #include "support/identical_solutions.hpp"
+#include "support/state_recorder.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/ring_fit.hpp"
 
 namespace saasgaps {
 namespace {
 
-/// Keeps every row and state, and stops after `stop_after` iterations (0: never).
-class Recorder : public IterationObserver {
- public:
-  explicit Recorder(int stop_after = 0) : stop_after_(stop_after) {}
-  void on_iteration(const IterationRecord& row, const RestartState& state) override {
-    rows.push_back(row);
-    states.push_back(state);
-  }
-  bool stop_requested() override { return stop_after_ > 0 && static_cast<int>(states.size()) >= stop_after_; }
-  std::vector<IterationRecord> rows;
-  std::vector<RestartState> states;
-
- private:
-  int stop_after_;
-};
+using Recorder = testing::StateRecorder;
 
 Model exact_ring_fit() {
   Model m = testing::quarter_ring_fit(AnalysisType::plane_stress, 3, 8);
