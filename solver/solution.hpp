@@ -2,6 +2,7 @@
 /// The outcome of a run: status, history, and the last iteration's displacements, element
 /// stresses and strains, and gap states.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,18 @@ struct StepResult {
   StepStatus status = StepStatus::not_converged;
 };
 
+/// The heat conduction of a thermal run (thermal_analysis.hpp).
+struct ThermalResult {
+  std::vector<double> T;          ///< per node: steady, the solution; transient, at the last output time
+  std::vector<Vec2> flux;         ///< per solid element, (q_r, q_z) = -k grad T with T above
+  std::vector<double> times;      ///< transient: the output times (empty when steady)
+  std::vector<std::vector<double>> history;  ///< transient: T per node at each output time
+  int iterations = 0;             ///< steady: conduction solves of the k(T) iteration (last pass)
+  int passes = 1;                 ///< thermal-contact passes (conducting gaps), else 1
+  int time_steps = 0;             ///< transient: steps taken
+  int factorizations = 0;         ///< of the conduction matrix
+};
+
 struct Solution {
   RunStatus status = RunStatus::not_converged;
   int iterations = 0;
@@ -74,6 +87,7 @@ struct Solution {
   std::vector<ElementResult> elements;
   std::vector<GapResult> gaps;
   std::vector<StepResult> steps;  ///< stepped models only, one per Model::steps entry; else empty
+  std::optional<ThermalResult> thermal;  ///< models with `thermal` only
 };
 
 }  // namespace saasgaps
