@@ -275,3 +275,46 @@ TEST(ThermalSteady, ABodyWithNothingHoldingItsTemperatureIsASingularModel) {
 
 }  // namespace
 }  // namespace saasgaps
+
+namespace saasgaps {
+namespace {
+
+// A free plane-stress strip 0 < x < L, 0 < y < H with T(0) = T0, T(L) = T1 computed by conduction
+// (k constant, insulated top and bottom: T linear in x, reproduced exactly). The stress analysis
+// must get these temperatures exactly as given ones: the run equals the same model solved with
+// loads.temperatures set to the closed form. Along y = 0 the strip stretches freely, eps_x = alpha T
+// (the SAAS elements take each element's mean temperature, exact for the mean strain of a linear
+// field), so u_x(L, 0) = alpha integral_0^L T dx = alpha L (T0 + T1) / 2 with u(0, 0) = 0 and
+// u_y(L, 0) = 0 holding it.
+TEST(ThermalStress, ALinearTemperatureComputedByConductionLeavesAFreeStripStressFree) {
+  const double L = 2.0, H = 0.5, T0 = 100.0, T1 = 300.0, alpha = 1.0e-5, k = 4.0;
+  Model m;
+  m.analysis = AnalysisType::plane_stress;
+  m.materials = {conductor(k)};
+  m.materials[0].table[0].alpha1 = m.materials[0].table[0].alpha2 = m.materials[0].table[0].alpha3 = alpha;
+  const testing::Grid g = testing::add_grid(m, 8, 2, [&](double s, double t) { return Vec2(L * s, H * t); }, 0);
+  testing::constrain(m, g.at(0, 0), 0.0, 0.0);
+  testing::constrain(m, g.at(8, 0), std::nullopt, 0.0);
+  testing::fill_temperatures(m, 0.0);
+  m.thermal.emplace();
+  m.thermal->boundary.push_back({ThermalBoundary::Kind::temperature, side(m, g, false, 0), T0, 0.0});
+  m.thermal->boundary.push_back({ThermalBoundary::Kind::temperature, side(m, g, false, 8), T1, 0.0});
+  const Solution s = solve_with_heat(m);
+  ASSERT_TRUE(s.thermal.has_value());
+  EXPECT_EQ(s.status, RunStatus::converged);
+  for (const Node& n : m.nodes) EXPECT_NEAR(s.thermal->T[n.id - 1], T0 + (T1 - T0) * n.r / L, 1e-9);
+  for (const Vec2& q : s.thermal->flux) EXPECT_NEAR(q.x(), -k * (T1 - T0) / L, 1e-9);
+  EXPECT_NEAR(s.nodes[g.at(8, 0)].u_r, alpha * L * (T0 + T1) / 2.0, 1e-12);
+  Model given = m;
+  given.thermal.reset();
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) given.loads.node_temperature[n] = T0 + (T1 - T0) * m.nodes[n].r / L;
+  const Solution reference = solve(given);
+  ASSERT_EQ(reference.elements.size(), s.elements.size());
+  const double scale = m.materials[0].table[0].E1 * alpha * (T1 - T0);
+  for (std::size_t e = 0; e < s.elements.size(); ++e) {
+    EXPECT_LT((s.elements[e].stress - reference.elements[e].stress).cwiseAbs().maxCoeff(), 1e-12 * scale);
+  }
+}
+
+}  // namespace
+}  // namespace saasgaps
