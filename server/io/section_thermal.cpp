@@ -325,6 +325,10 @@ void SectionReader::read_thermal(const Obj& root) {
     if (!model_.steps.empty()) {
       report("/steps", "a transient thermal run makes its load steps itself, one per output time; remove steps");
     }
+    if (model_.gaps && model_.gaps->conductance) {
+      report("/gaps/conductance", "conduction across gap elements is solved in steady thermal runs only (not yet in "
+                                  "transient ones); remove it or make the run steady");
+    }
   }
   if (type) check_thermal_materials(thermal);
   model_.thermal = std::move(thermal);

@@ -1336,6 +1336,12 @@ TEST(ModelReaderRules, GapConductanceIsANumberOrATableOverPressure) {
   EXPECT_TRUE(rejects(with(m, "/gaps/conductance/closed/1/p", 0), "/gaps/conductance/closed/1/p", {"increasing"}));
   EXPECT_TRUE(rejects(with(m, "/gaps/conductance/closed", -2), "/gaps/conductance/closed", {"-2"}));
   EXPECT_EQ(read_model(with(m, "/gaps/conductance/closed", 5.0)).gaps->conductance->closed[0].h, 5.0);
+  json thermal = with(m, "/loads", json::object());
+  for (std::size_t i = 0; i < thermal["materials"].size(); ++i) {
+    for (json& row : thermal["materials"][i]["table"]) row[thermal["materials"][i]["elastic"] == "isotropic" ? "k" : "k1"] = 1.0;
+  }
+  EXPECT_TRUE(rejects(transient(with(thermal, "/thermal", json{{"type", "steady"}})), "/gaps/conductance",
+                      {"steady thermal runs only"}));
 }
 
 }  // namespace

@@ -318,3 +318,118 @@ TEST(ThermalStress, ALinearTemperatureComputedByConductionLeavesAFreeStripStress
 
 }  // namespace
 }  // namespace saasgaps
+
+namespace saasgaps {
+namespace {
+
+// Two concentric cylinders (axisymmetric): a < r < b of conductivity k1 and b' < r < c of k2, joined
+// by a row of gap elements of width w = b' - b with conductance H per area, T(a) = Ta, T(c) = Tc, ends
+// insulated. The heat per radian-length Q = 2 pi (Ta - Tc) / R flows through three resistances in
+// series, R = ln(b / a) / k1 + ln(b' / b) / (H w) + ln(c / b') / k2 (the gap element conducts
+// k_M = H w across its width, a layer of thickness w: its resistance ln(b'/b) / (H w) is 1 / (H b)
+// to O(w / b)). So T = Ta - (Q / 2 pi k1) ln(r / a) in the inner cylinder, T = Tc + (Q / 2 pi k2)
+// ln(c / r) in the outer one, and the temperature jumps by (Q / 2 pi) ln(b' / b) / (H w) across the gap.
+struct TwoCylinders {
+  double a = 1.0, b = 2.0, w = 1.0e-3, c = 3.0, k1 = 2.0, k2 = 5.0, H = 1.5, Ta = 500.0, Tc = 100.0;
+  [[nodiscard]] double outer_inside() const { return b + w; }
+  [[nodiscard]] double resistance() const {
+    return std::log(b / a) / k1 + std::log(outer_inside() / b) / (H * w) + std::log(c / outer_inside()) / k2;
+  }
+  [[nodiscard]] double exact(double r) const {
+    const double q = (Ta - Tc) / resistance();  // Q / 2 pi
+    return r <= b ? Ta - q / k1 * std::log(r / a) : Tc + q / k2 * std::log(c / r);
+  }
+};
+
+Model two_cylinders(const TwoCylinders& t, int n, testing::Grid& inner, testing::Grid& outer) {
+  Model m;
+  m.analysis = AnalysisType::axisymmetric;
+  m.materials = {conductor(t.k1), conductor(t.k2)};
+  m.materials[1].id = 2;
+  inner = testing::add_grid(m, n, 1, [&t](double s, double z) { return Vec2(t.a + (t.b - t.a) * s, 0.1 * z); }, 0);
+  outer = testing::add_grid(
+      m, n, 1, [&t](double s, double z) { return Vec2(t.outer_inside() + (t.c - t.outer_inside()) * s, 0.1 * z); }, 1);
+  // Counter-clockwise: up the outer cylinder's inner side, down the inner cylinder's outer side.
+  testing::add_gap_row(m, {outer.at(0, 0), outer.at(0, 1)}, {inner.at(n, 0), inner.at(n, 1)}, [](int) { return 0.0; });
+  m.gaps->conductance = InterfaceConductance{{{0.0, t.H}}, 0.0};
+  m.thermal.emplace();
+  m.thermal->boundary.push_back({ThermalBoundary::Kind::temperature, side(m, inner, false, 0), t.Ta, 0.0});
+  m.thermal->boundary.push_back({ThermalBoundary::Kind::temperature, side(m, outer, false, n), t.Tc, 0.0});
+  return m;
+}
+
+TEST(ThermalGaps, ConcentricCylindersWithAnInterfaceConductanceHaveTheJumpAndBothLogProfiles) {
+  const TwoCylinders t;
+  testing::Grid inner, outer;
+  const int n = 16;
+  const Model m = two_cylinders(t, n, inner, outer);
+  const std::vector<double> closed(m.gaps->elements.size(), t.H);
+  const ThermalResult r = solve_steady_conduction(m, closed);
+  for (const Node& node : m.nodes) {
+    EXPECT_NEAR(r.T[node.id - 1], t.exact(node.r), 0.002 * (t.Ta - t.Tc)) << "r = " << node.r;
+  }
+  const double jump = r.T[inner.at(n, 0)] - r.T[outer.at(0, 0)];
+  const double exact_jump = t.exact(t.b) - t.exact(t.outer_inside());
+  EXPECT_NEAR(jump, exact_jump, 0.002 * exact_jump);
+  // The jump is the interface's: about 1 / (H b) of R, a sizeable share of the whole drop.
+  EXPECT_GT(exact_jump, 0.2 * (t.Ta - t.Tc));
+}
+
+TEST(ThermalGaps, GapConductanceFollowsTheContactStateAndPressure) {
+  const TwoCylinders t;
+  testing::Grid inner, outer;
+  Model m = two_cylinders(t, 2, inner, outer);
+  m.gaps->conductance = InterfaceConductance{{{0.0, 1.0}, {1000.0, 8.0}}, 0.0002};
+  GapResult touching;
+  touching.state = GapState::closed;
+  touching.sigma_m = -500.0;  // compression: pressure 500, halfway up the table
+  EXPECT_DOUBLE_EQ(gap_conductances(m, std::vector<GapResult>{touching})[0], 4.5);
+  touching.sigma_m = -5000.0;  // beyond the table: its last h
+  EXPECT_DOUBLE_EQ(gap_conductances(m, std::vector<GapResult>{touching})[0], 8.0);
+  GapResult open;
+  open.state = GapState::open;
+  open.eps_m = 1.0;  // opened to twice its width
+  EXPECT_NEAR(gap_conductances(m, std::vector<GapResult>{open})[0], 0.0002 / (2.0 * t.w), 1e-12);
+  // Before any stress solve every gap is open at its width.
+  EXPECT_NEAR(gap_conductances(m, {})[0], 0.0002 / t.w, 1e-12);
+}
+
+}  // namespace
+}  // namespace saasgaps
+
+namespace saasgaps {
+namespace {
+
+TEST(ThermalTransient, EachOutputTimeIsALoadStepOfTheStressAnalysis) {
+  Model m = cylinder_model(Cylinder{}, 4);
+  m.materials[0].table[0].c = 1.0;
+  m.materials[0].table[0].alpha1 = m.materials[0].table[0].alpha2 = m.materials[0].table[0].alpha3 = 1.0e-5;
+  m.materials[0].density = 1.0;
+  m.thermal->type = ThermalType::transient;
+  m.thermal->initial_temperature = 70.0;
+  m.thermal->time_step = 0.1;
+  m.thermal->end_time = 1.0;
+  m.thermal->output_times = {0.5, 1.0};
+  testing::fill_temperatures(m, 70.0);
+  for (const Node& n : m.nodes) {
+    if (n.z == 0.0) testing::constrain(m, static_cast<int>(&n - m.nodes.data()), std::nullopt, 0.0);
+  }
+  const Solution s = solve_with_heat(m);
+  ASSERT_TRUE(s.thermal.has_value());
+  ASSERT_EQ(s.steps.size(), 2u);
+  EXPECT_EQ(s.steps[0].name, "t = 0.5");
+  EXPECT_EQ(s.steps[1].name, "t = 1");
+  EXPECT_EQ(s.steps[1].status, StepStatus::converged);
+  EXPECT_EQ(s.thermal->T, s.thermal->history.back());
+  // Each step solves the stresses of its time's temperatures: the last equals a plain run with them.
+  Model given = m;
+  given.thermal.reset();
+  given.loads.node_temperature = s.thermal->T;
+  const Solution reference = solve(given);
+  for (std::size_t e = 0; e < s.elements.size(); ++e) {
+    EXPECT_LT((s.elements[e].stress - reference.elements[e].stress).cwiseAbs().maxCoeff(), 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace saasgaps
