@@ -433,3 +433,42 @@ TEST(ThermalTransient, EachOutputTimeIsALoadStepOfTheStressAnalysis) {
 
 }  // namespace
 }  // namespace saasgaps
+
+namespace saasgaps {
+namespace {
+
+// Coupled: the inner cylinder, held hot at r = a, grows across the gap (open at first, conducting
+// through the gas only) into the outer one, held cold at r = c. The passes must end with the gaps
+// touching and the temperatures those of a conduction solve with the conductances of the final
+// contact state (the fixed point the stopping rule claims).
+TEST(ThermalGaps, TemperaturesAndContactAreIteratedTogetherToAFixedPoint) {
+  TwoCylinders t;
+  t.Ta = 400.0;
+  t.Tc = 0.0;
+  testing::Grid inner, outer;
+  const int n = 8;
+  Model m = two_cylinders(t, n, inner, outer);
+  for (Material& mat : m.materials) mat.table[0].alpha1 = mat.table[0].alpha2 = mat.table[0].alpha3 = 1.0e-4;
+  m.gaps->initial_modulus = 100.0;
+  m.gaps->tensile_schedule = {20.0, 5.0, 1.0};
+  m.gaps->conductance = InterfaceConductance{{{0.0, 1.0}, {2000.0, 8.0}}, 0.001};
+  m.solver.max_iterations = 60;
+  testing::fill_temperatures(m, 0.0);
+  for (std::size_t k = 0; k < m.nodes.size(); ++k) {
+    if (m.nodes[k].z == 0.0) testing::constrain(m, static_cast<int>(k), std::nullopt, 0.0);
+  }
+  const Solution s = solve_with_heat(m);
+  ASSERT_TRUE(s.thermal.has_value());
+  EXPECT_EQ(s.status, RunStatus::converged);
+  EXPECT_GE(s.thermal->passes, 2);
+  for (const GapResult& g : s.gaps) EXPECT_TRUE(g.state == GapState::closed || g.state == GapState::overclosed);
+  const ThermalResult fixed_point = solve_steady_conduction(m, gap_conductances(m, s.gaps));
+  for (std::size_t k = 0; k < m.nodes.size(); ++k) {
+    EXPECT_NEAR(s.thermal->T[k], fixed_point.T[k], 1e-6 * (t.Ta - t.Tc)) << "node " << m.nodes[k].id;
+  }
+  // Touching faces conduct far better than the gas did at first: the jump is a fraction of the drop.
+  EXPECT_LT(s.thermal->T[inner.at(n, 0)] - s.thermal->T[outer.at(0, 0)], 0.5 * (t.Ta - t.Tc));
+}
+
+}  // namespace
+}  // namespace saasgaps
