@@ -22,6 +22,14 @@ struct ElasticConstants {
 /// material G12 = E / (2 (1 + nu)) from the interpolated E and nu.
 ElasticConstants interpolate(const std::vector<PropertyRow>& table, double T, bool isotropic);
 
+/// Conductivities k1, k2, k3 and specific heat c at temperature T, interpolated like the elastic
+/// table (zeros for a material whose rows do not give them).
+struct ThermalConstants {
+  double k1 = 0.0, k2 = 0.0, k3 = 0.0;
+  double c = 0.0;
+};
+ThermalConstants interpolate_thermal(const std::vector<PropertyRow>& table, double T);
+
 /// Plasticity row at temperature T, interpolated like the elastic table.
 PlasticityRow interpolate(const std::vector<PlasticityRow>& table, double T);
 

@@ -3,6 +3,7 @@
 /// stresses and strains, and gap states.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,18 @@ struct ContactPairResult {
   std::vector<ContactPointResult> points;
 };
 
+/// The heat conduction of a thermal run (thermal_analysis.hpp).
+struct ThermalResult {
+  std::vector<double> T;          ///< per node: steady, the solution; transient, at the last output time
+  std::vector<Vec2> flux;         ///< per solid element, (q_r, q_z) = -k grad T with T above
+  std::vector<double> times;      ///< transient: the output times (empty when steady)
+  std::vector<std::vector<double>> history;  ///< transient: T per node at each output time
+  int iterations = 0;             ///< steady: conduction solves of the k(T) iteration (last pass)
+  int passes = 1;                 ///< thermal-contact passes (conducting gaps), else 1
+  int time_steps = 0;             ///< transient: steps taken
+  int factorizations = 0;         ///< of the conduction matrix
+};
+
 struct Solution {
   RunStatus status = RunStatus::not_converged;
   int iterations = 0;
@@ -98,6 +111,7 @@ struct Solution {
   std::vector<GapResult> gaps;
   std::vector<ContactPairResult> contact;  ///< one per model.contact pair; empty without contact
   std::vector<StepResult> steps;  ///< stepped models only, one per Model::steps entry; else empty
+  std::optional<ThermalResult> thermal;  ///< models with `thermal` only
 };
 
 }  // namespace saasgaps

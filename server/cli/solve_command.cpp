@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "analysis.hpp"
+#include "thermal_analysis.hpp"
 #include "errors.hpp"
 #include "cli/file_io.hpp"
 #include "io/json_text.hpp"
@@ -112,7 +113,7 @@ int run_solve(const SolveOptions& options) {
   if (!options.cache_dir.empty()) cache.emplace(options.cache_dir);
   std::optional<Solution> solution;
   try {
-    solution = solve(model, &observer, resume ? &*resume : nullptr, options.changes, cache ? &*cache : nullptr);
+    solution = solve_with_heat(model, &observer, resume ? &*resume : nullptr, options.changes, cache ? &*cache : nullptr);
   } catch (const std::exception& e) {
     // The failure is reported by main(); the result document records it too.
     if (destination != "-") {

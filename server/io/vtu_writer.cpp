@@ -1,5 +1,6 @@
 #include "io/vtu_writer.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <unordered_map>
@@ -144,6 +145,11 @@ std::string vtu_document(const json& result, VtuFormat format) {
   m.piece.active_cell_scalars = "effective" + stress;
   reals(m.piece.active_cell_scalars, "effective", false);
   for (const char* key : {"eps_r", "eps_z", "gamma_rz", "eps_theta"}) reals(key, key, false);
+  // Thermal runs: the element heat flux (power / area; the result has it on every solid or none).
+  const bool heat_flux = std::any_of(m.cells.begin(), m.cells.end(), [](const Cell& c) { return !c.gap && c.data->contains("q_r"); });
+  if (heat_flux) {
+    for (const char* key : {"q_r", "q_z"}) reals(key, key, false);
+  }
   ints("yield", [](const Cell& c) { return !c.gap && c.data->at("yield").get<bool>() ? 1 : 0; });
   ints("plastic_converged", [](const Cell& c) { return c.gap || c.data->at("plastic_converged").get<bool>() ? 1 : 0; });
   reals("gap_closure", "closure", true);

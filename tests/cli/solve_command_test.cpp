@@ -217,3 +217,40 @@ TEST_F(SolveCommand, SteppedRunShowsStepsAndResumesMidStepToTheLastDigit) {
                                    path("state.json"));
   EXPECT_NE(foreign.exit_code, 0);
 }
+
+namespace {
+
+/// The quickstart block with its temperatures computed: its bottom edge held at 500, a film to 70 on
+/// its top, a source in the steel.
+nlohmann::json thermal_quickstart(const nlohmann::json& quickstart) {
+  nlohmann::json model = quickstart;
+  model["loads"].erase("temperatures");
+  model["materials"][0]["table"][0]["k"] = 0.6;
+  model["thermal"] = nlohmann::json::parse(R"({"type": "steady",
+    "boundary": [{"edges": [[1, 2], [2, 3]], "temperature": 500}],
+    "sources": [{"material": 1, "power_density": 2.0}]})");
+  return model;
+}
+
+}  // namespace
+
+TEST_F(SolveCommand, ThermalRunWritesComputedTemperaturesAndHeatFluxThatPlotAndExport) {
+  std::ofstream(path("thermal.json")) << thermal_quickstart(json_of(example("quickstart-plane-strain-block.json"))).dump();
+  const Outcome r = saasgaps("solve " + path("thermal.json") + " -q -o " + path("result.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json result = json_of(path("result.json"));
+  // Held at 500 along the bottom, heated inside, insulated elsewhere: every node at 500 or hotter,
+  // and the heat leaves through the bottom (q_z < 0) in every element.
+  for (const auto& node : result["nodes"]) {
+    EXPECT_GE(node["T"].get<double>(), 500.0 - 1e-9) << node["id"];
+    if (node["z"].get<double>() == 0.0) {
+      EXPECT_EQ(node["T"], 500.0);
+    }
+  }
+  for (const auto& element : result["elements"]) EXPECT_LT(element["q_z"].get<double>(), 0.0) << element["id"];
+  EXPECT_EQ(saasgaps("plot " + path("result.json") + " --field temperature -o " + path("T.png")).exit_code, 0);
+  ASSERT_EQ(saasgaps("export-vtu " + path("result.json") + " -o " + path("result.vtu")).exit_code, 0);
+  std::ifstream vtu(path("result.vtu"));
+  const std::string text((std::istreambuf_iterator<char>(vtu)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("Name=\"q_r\""), std::string::npos);
+}
