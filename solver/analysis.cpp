@@ -240,7 +240,8 @@ class GapContactAnalysis {
   void check_plastic_branches(const MaterialState& m) const {
     const std::size_t n = model_.elements.size();
     const bool kept = restart_version(model_) == RestartState::plastic_steps_version;
-    if ((!m.peaks.empty() && (!kept || m.peaks.size() != n)) || (!m.unloading.empty() && (!kept || m.unloading.size() != n))) {
+    const auto fits = [&](std::size_t size) { return size == 0 || (kept && size == n); };
+    if (!fits(m.peaks.size()) || !fits(m.unloading.size())) {
       throw SolverError("the restart state does not belong to this model (its plastic peaks differ)");
     }
     for (std::size_t e = 0; e < m.unloading.size(); ++e) {

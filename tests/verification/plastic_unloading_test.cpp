@@ -13,6 +13,7 @@
 #include <numbers>
 
 #include "analysis.hpp"
+#include "element_data.hpp"
 #include "errors.hpp"
 #include "io/state_codec.hpp"
 #include "io/stored_state.hpp"
@@ -62,7 +63,9 @@ Bar bar(double tolerance) {
   m.materials.push_back(steel);
   b.grid = testing::add_grid(m, 2, 4, [](double s, double t) { return Vec2(W * s, H * t); }, 0);
   testing::fill_temperatures(m, 0.0);
-  for (int i = 0; i <= b.grid.ni; ++i) testing::constrain(m, b.grid.at(i, 0), i == 0 ? std::optional(0.0) : std::nullopt, 0.0);
+  for (int i = 0; i <= b.grid.ni; ++i) {
+    testing::constrain(m, b.grid.at(i, 0), i == 0 ? std::optional(0.0) : std::nullopt, 0.0);
+  }
   m.output.watch_elements = {0};
   m.solver.plastic_tolerance = tolerance;
   m.solver.max_iterations = 200;
@@ -88,7 +91,8 @@ std::vector<Reached> per_increment(const Bar& b, const Recorder& r) {
     const bool last = k + 1 == r.rows.size() || r.rows[k + 1].increment != r.rows[k].increment ||
                       r.rows[k + 1].step != r.rows[k].step;
     if (!last) continue;
-    out.push_back({r.rows[k].watch_elements.at(0).sigma_z, b.strain(r.states[k]), iterations, r.rows[k].yielded_elements});
+    const IterationRecord& row = r.rows[k];
+    out.push_back({row.watch_elements.at(0).sigma_z, b.strain(r.states[k]), iterations, row.yielded_elements});
     iterations = 0;
   }
   return out;
@@ -169,10 +173,11 @@ struct Cylinder {
   [[nodiscard]] double hoop(const Solution& s, int i, int j) const {
     const Element& el = model.elements[static_cast<std::size_t>(i + grid.ni * j)];
     Vec2 c = Vec2::Zero();
-    for (int n : el.nodes) c += Vec2(model.nodes[static_cast<std::size_t>(n)].r, model.nodes[static_cast<std::size_t>(n)].z) / 4.0;
+    for (const Vec2& x : corner_coordinates(model, el.nodes, el.node_count)) c += x / 4.0;
     const double t = std::atan2(c.y(), c.x());
     const Vec4& sg = s.elements[static_cast<std::size_t>(i + grid.ni * j)].stress;
-    return std::sin(t) * std::sin(t) * sg[rr] + std::cos(t) * std::cos(t) * sg[zz] - 2.0 * std::sin(t) * std::cos(t) * sg[rz];
+    const double sn = std::sin(t), cs = std::cos(t);
+    return sn * sn * sg[rr] + cs * cs * sg[zz] - 2.0 * sn * cs * sg[rz];
   }
 };
 
