@@ -6,6 +6,7 @@
 ///    a direction whose stress is below the plastic tolerance of the element's largest keeps its table.
 /// Across the increments of a stepped run, yielded elements unload elastically (plastic_history.hpp).
 
+#include <cstdint>
 #include <span>
 #include <vector>
 

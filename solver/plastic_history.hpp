@@ -19,13 +19,10 @@
 /// element at its peak from flipping between the two from one iteration to the next.
 ///
 /// Elements that never yielded keep no peak: below the yield strain the secant law is the elastic
-/// one already. A run without steps (one increment) or on a monotonic path never unloads and gives
-/// the secant law's numbers to the last digit. Reversed loading past sigma_max (compression after
+/// one already. A run without steps (one increment), or one in which no element's effective strain
+/// falls back below its peak, never unloads and gives the secant law's numbers to the last digit. Reversed loading past sigma_max (compression after
 /// tension) is outside this law: the effective stress has no sign, and the element returns to the
 /// secant curve as the report's law has it.
-
-#include <cstdint>
-#include <vector>
 
 #include "material.hpp"
 #include "voigt.hpp"
