@@ -190,17 +190,18 @@ class GapContactAnalysis {
   /// After a converged increment: the next one, carrying the materials', contact and gap history of
   /// this one in the state. False after the last.
   bool next_increment(RestartState& state) {
-    if (!state.position || !schedule_.advance(*state.position, state.displacement)) return false;
+    if (!state.position) return false;
+    // The peaks of this increment's yielded elements go into the state the next one starts from.
+    if (now_->materials.nonlinear()) now_->materials.record_peaks(state.materials, eval_.solids, eval_.materials.next);
+    if (!schedule_.advance(*state.position, state.displacement)) return false;
     begin_increment(state);
     return true;
   }
 
   RestartState fresh() const {
     RestartState s;
-    if (schedule_.stepped()) {
-      s.version = RestartState::stepped_version;
-      s.position = schedule_.first();
-    }
+    s.version = restart_version(model_);
+    if (schedule_.stepped()) s.position = schedule_.first();
     s.node_count = model_.nodes.size();
     s.element_count = model_.elements.size();
     s.gap_count = model_.gap_count();
@@ -208,8 +209,11 @@ class GapContactAnalysis {
   }
 
   RestartState resumed(const RestartState& saved) {
-    const int expected = schedule_.stepped() ? RestartState::stepped_version : RestartState::plain_version;
-    if (saved.version != expected) {
+    const int expected = restart_version(model_);
+    // A plastic stepped model's state from before peaks were kept (version 2) reads as one without.
+    const bool before_peaks =
+        expected == RestartState::plastic_steps_version && saved.version == RestartState::stepped_version;
+    if (saved.version != expected && !before_peaks) {
       throw SolverError("restart state version " + std::to_string(saved.version) + " is not supported (expected " +
                         std::to_string(expected) + (schedule_.stepped() ? " for a model with steps)" : ")"));
     }
@@ -224,12 +228,31 @@ class GapContactAnalysis {
         saved.gaps.strain.size() != model_.gap_count() || saved.gaps.used.normal.size() != model_.gap_count()) {
       throw SolverError("the restart state does not belong to this model (its dimensions differ)");
     }
+    check_plastic_branches(saved.materials);
     RestartState s = saved;
+    s.version = expected;
     s.attempt = saved.attempt + 1;
     // The READ-card restart: a new schedule starts from its first value at the next iteration (-1 is
     // also what a model without gaps keeps there).
     if (schedule_changed_) s.gaps.used.schedule_step = -1;
     return s;
+  }
+
+  /// Peaks and unloading branches of a saved state: none, or one per element; an element unloads
+  /// only from a peak it reached, and only in a plastic stepped model.
+  void check_plastic_branches(const MaterialState& m) const {
+    const std::size_t n = model_.elements.size();
+    const bool kept = restart_version(model_) == RestartState::plastic_steps_version;
+    const auto fits = [&](std::size_t size) { return size == 0 || (kept && size == n); };
+    if (!fits(m.peaks.size()) || !fits(m.unloading.size())) {
+      throw SolverError("the restart state does not belong to this model (its plastic peaks differ)");
+    }
+    for (std::size_t e = 0; e < m.unloading.size(); ++e) {
+      if (m.unloads(e) && (m.peaks.empty() || !m.peaks[e].reached())) {
+        throw SolverError("the restart state does not belong to this model (element index " + std::to_string(e) +
+                          " unloads from no peak)");
+      }
+    }
   }
 
   /// K and f of the next iteration: the solids when their moduli changed, then the contact method's

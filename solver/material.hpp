@@ -59,12 +59,16 @@ bool positive_definite(const ElasticConstants& c);
 /// angle_deg from +r. Stresses transform back with its transpose: sigma_global = T^T sigma_mat.
 Mat4 strain_rotation(double angle_deg);
 
-/// The constitutive law of one element in global axes: stress = D strain - beta dT.
+/// The constitutive law of one element in global axes: stress = D (strain - initial_strain) - beta dT.
 struct Constitutive {
   Mat4 D = Mat4::Zero();
   Vec4 beta = Vec4::Zero();          ///< thermal stress per degree of temperature rise
-  Vec4 out_of_plane = Vec4::Zero();  ///< plane stress only: eps_th = out_of_plane . stress + alpha3 dT
+  Vec4 out_of_plane = Vec4::Zero();  ///< plane stress only: eps_th = out_of_plane . stress + alpha3 dT (+ initial)
   double alpha3 = 0.0;
+  /// A strain the element carries without stress, beside the thermal one (global axes rr, zz,
+  /// gamma_rz, th): the plastic strain of an element unloading elastically (plastic_history.hpp).
+  Vec4 initial_strain = Vec4::Zero();
+  [[nodiscard]] bool has_initial_strain() const { return (initial_strain.array() != 0.0).any(); }
 };
 
 /// Plane stress keeps sigma_th = 0 (3x3 reduced stiffness); plane strain keeps eps_th = 0 and

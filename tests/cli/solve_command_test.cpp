@@ -198,7 +198,8 @@ TEST_F(SolveCommand, SteppedRunShowsStepsAndResumesMidStepToTheLastDigit) {
                                    " --state-out " + path("state.json") + " -o " + path("stopped.json"));
   EXPECT_EQ(stopped.exit_code, 3) << stopped.err;
   const nlohmann::json state = json_of(path("state.json"));
-  EXPECT_EQ(state["version"], 2);
+  EXPECT_EQ(state["version"], 3);  // steps and a plastic material: the position and the plastic peaks
+  EXPECT_TRUE(state.contains("plastic"));
   EXPECT_EQ(state["position"]["step"], 1);  // 0-based in the state
   EXPECT_EQ(state["position"]["increment"], 1);
   EXPECT_EQ(state["position"]["iterations"], 1);
