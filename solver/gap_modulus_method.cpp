@@ -70,6 +70,10 @@ GapState GapModulusMethod::state_of(double eps) const {
   return GapState::partial;
 }
 
+void GapModulusMethod::add_nodal_forces(const RestartState& state, std::span<double> forces) const {
+  gaps_.add_nodal_forces(state.gaps, state.displacement, forces);
+}
+
 void GapModulusMethod::add_columns(const RestartState& state, IterationRecord& row) const {
   GapElements::add_columns(state.gaps, row);
 }

@@ -92,6 +92,21 @@ void NodePairMethod::add_columns(const RestartState& state, IterationRecord& row
   row.active_set_iterations = report_.active_set_iterations;
 }
 
+void NodePairMethod::add_nodal_forces(const RestartState& state, std::span<double> forces) const {
+  gaps_.add_nodal_forces(state.gaps, state.displacement, forces);
+  const auto& pairs = exact_.pairs().pairs;
+  if (state.contact.force.size() != pairs.size()) return;  // nothing solved yet
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& pair = pairs[i];
+    const double lambda = state.contact.force[i];
+    for (std::size_t k = 0; k < pair.node.size(); ++k) {
+      const auto node = static_cast<std::size_t>(pair.node[k]);
+      forces[2 * node] += lambda * pair.weight[k] * pair.normal[0];
+      forces[2 * node + 1] += lambda * pair.weight[k] * pair.normal[1];
+    }
+  }
+}
+
 std::string NodePairMethod::converged_note(const RestartState& state, const ContactOutcome&) const {
   std::ostringstream text;
   text << " (exact contact: " << state.history.back().contact_pairs << " of "
