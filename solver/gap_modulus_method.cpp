@@ -101,8 +101,8 @@ std::string GapModulusMethod::loaded_open_gaps(const RestartState& state, const 
   if (count == 0) return {};
   std::ostringstream text;
   const bool one = count == 1;
-  text << "; warning: " << plural(static_cast<long long>(count), "gap") << (one ? " does" : " do")
-       << " not touch (closure below " << 100.0 * touching << " %) yet " << (one ? "carries" : "carry")
+  text << "; warning: " << plural(static_cast<long long>(count), "gap") << (one ? " is" : " are")
+       << " not closed (closure below " << 100.0 * touching << " %) yet " << (one ? "carries" : "carry")
        << " more than " << 100.0 * share << " % of the largest gap pressure (gap " << gaps[worst].id
        << ": closure " << gaps[worst].closure << " %, sigma_m " << gaps[worst].sigma_m
        << "); the classic stopping rule accepts " << (one ? "it, so its pressure" : "them, so their pressures")
