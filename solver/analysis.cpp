@@ -14,6 +14,7 @@
 #include "material_state.hpp"
 #include "mortar_method.hpp"
 #include "plural.hpp"
+#include "reactions.hpp"
 #include "sparse_cholesky.hpp"
 #include "stiffness_system.hpp"
 
@@ -114,6 +115,8 @@ class GapContactAnalysis {
   Solution run(IterationObserver* observer, const RestartState* resume) {
     RestartState state = resume ? resumed(*resume) : fresh();
     begin_increment(state);
+    // A saved state is written after a solve, so it was solved in the increment it names.
+    solved_in_increment_ = state.iteration > 0;
     Evaluation& eval = eval_;
     if (state.iteration > 0) evaluate(state, eval);
 
@@ -141,6 +144,7 @@ class GapContactAnalysis {
       state.iteration += 1;
       if (state.position) state.position->iterations += 1;
       store_displacements(state.displacement);
+      solved_in_increment_ = true;
 
       evaluate(state, eval);
       now_->contact->check_solved(state, eval.contact);
@@ -195,6 +199,7 @@ class GapContactAnalysis {
     if (now_->materials.nonlinear()) now_->materials.record_peaks(state.materials, eval_.solids, eval_.materials.next);
     if (!schedule_.advance(*state.position, state.displacement)) return false;
     begin_increment(state);
+    solved_in_increment_ = false;
     return true;
   }
 
@@ -380,10 +385,30 @@ class GapContactAnalysis {
       }
       s.gaps = v.contact.gaps;
       s.contact = now_->contact->surface_results(state);
+      s.reactions = reactions(state);
     }
     s.steps = step_results(state, status);
     s.message = message(state, v, status);
     return s;
+  }
+
+  /// The supports' forces in the state's last solve (reactions.hpp). A stepped run stopped right after
+  /// an increment converged holds that increment's solution while the system is already the next
+  /// increment's: its reactions are those of the increment it solved.
+  std::vector<NodeReaction> reactions(const RestartState& state) const {
+    std::vector<double> contact(state.displacement.size(), 0.0);
+    now_->contact->add_nodal_forces(state, contact);
+    SolidMaterials::LawMemo memo;
+    if (solved_in_increment_) {
+      const IncrementSystem& now = *now_;
+      return support_reactions(now.model, now.dofs, [&](std::size_t e) { return now.materials.law(e, state.materials, memo); },
+                               state.displacement, contact);
+    }
+    const Model solved = schedule_.increment_model(schedule_.previous(*state.position));
+    const DofMap dofs(solved);
+    const SolidMaterials materials(solved);
+    return support_reactions(solved, dofs, [&](std::size_t e) { return materials.law(e, state.materials, memo); },
+                             state.displacement, contact);
   }
 
   /// Steps before the state's are done; the state's is done only when the run converged.
@@ -452,6 +477,7 @@ class GapContactAnalysis {
   LoadSchedule schedule_;
   Model increment_model_;                 // stepped models: the current increment's
   std::unique_ptr<IncrementSystem> now_;  // the current increment's system
+  bool solved_in_increment_ = false;      // the state's displacements were solved with now_ (not the increment before)
   Evaluation eval_;                       // per-element buffers, reused every iteration
 };
 

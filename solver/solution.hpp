@@ -54,6 +54,14 @@ struct GapResult {
   GapFailure failure = GapFailure::none;
 };
 
+/// The force the supports exert on a constrained node (reactions.hpp): plane analyses on the whole
+/// thickness, axisymmetric ones on the full ring.
+struct NodeReaction {
+  int id = 0;        ///< node id
+  double f_r = 0.0;  ///< along r (0 where u_r is free)
+  double f_z = 0.0;  ///< along z (0 where u_z is free)
+};
+
 /// One load step of a stepped model: converged when its last increment converged; not_converged
 /// when the run ended (max_iterations, or a stop on request) before it did or before it began.
 /// (failed is the service's word for a run that threw; a finished run never says it.)
@@ -110,6 +118,7 @@ struct Solution {
   std::vector<ElementResult> elements;
   std::vector<GapResult> gaps;
   std::vector<ContactPairResult> contact;  ///< one per model.contact pair; empty without contact
+  std::vector<NodeReaction> reactions;  ///< every node with a prescribed component, in node order (empty before iteration 1)
   std::vector<StepResult> steps;  ///< stepped models only, one per Model::steps entry; else empty
   std::optional<ThermalResult> thermal;  ///< models with `thermal` only
 };

@@ -131,6 +131,11 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s) {
   const std::vector<double>& T = s.thermal ? s.thermal->T : final_loads(model).node_temperature;
   for (std::size_t n = 0; n < s.nodes.size(); ++n) write_node(out, model, s.nodes[n], n, T[n]);
   out.end_array();
+  out.key("reactions").begin_array();
+  for (const NodeReaction& r : s.reactions) {
+    out.begin_object().field("fr", r.f_r).field("fz", r.f_z).field("node", r.id).end_object();
+  }
+  out.end_array();
   out.field("reference_temperature", model.reference_temperature)
       .field("status", s.status == RunStatus::converged ? "converged" : "not_converged");
   if (!s.steps.empty()) {  // stepped models only
@@ -154,6 +159,7 @@ void write_failed_result(JsonWriter& out, const std::string& message) {
   for (const char* list : {"elements", "gaps", "history"}) out.key(list).begin_array().end_array();
   out.field("iterations", 0).field("message", message);
   out.key("nodes").begin_array().end_array();
+  out.key("reactions").begin_array().end_array();
   out.field("status", "failed").end_object();
 }
 

@@ -45,7 +45,7 @@ namespace {
 // k and c are optional in every row: section_thermal.cpp judges whether a thermal run has them.
 constexpr std::array<Field<PropertyRow>, 6> isotropic_fields{{
     {"T", &PropertyRow::T, &any_number},
-    {"E", &PropertyRow::E1, &positive},
+    {"E", &PropertyRow::E1, &modulus},
     {"nu", &PropertyRow::nu12, &poisson_ratio},
     {"alpha", &PropertyRow::alpha1, &any_number},
     {"k", &PropertyRow::k1, &positive, true},
@@ -54,13 +54,13 @@ constexpr std::array<Field<PropertyRow>, 6> isotropic_fields{{
 
 constexpr std::array<Field<PropertyRow>, 15> orthotropic_fields{{
     {"T", &PropertyRow::T, &any_number},
-    {"E1", &PropertyRow::E1, &positive},
-    {"E2", &PropertyRow::E2, &positive},
-    {"E3", &PropertyRow::E3, &positive},
+    {"E1", &PropertyRow::E1, &modulus},
+    {"E2", &PropertyRow::E2, &modulus},
+    {"E3", &PropertyRow::E3, &modulus},
     {"nu12", &PropertyRow::nu12, &any_number},
     {"nu13", &PropertyRow::nu13, &any_number},
     {"nu23", &PropertyRow::nu23, &any_number},
-    {"G12", &PropertyRow::G12, &positive},
+    {"G12", &PropertyRow::G12, &modulus},
     {"alpha1", &PropertyRow::alpha1, &any_number},
     {"alpha2", &PropertyRow::alpha2, &any_number},
     {"alpha3", &PropertyRow::alpha3, &any_number},

@@ -52,6 +52,12 @@ struct Range {
 constexpr Range any_number{};
 constexpr Range positive{Bound{0.0, false}, std::nullopt};
 constexpr Range non_negative{Bound{0.0, true}, std::nullopt};
+/// Elastic moduli (E, E1..E3, G12). The material law inverts the 4x4 compliance, whose determinant
+/// is of the order of 1 / E^4: it underflows to 0 beyond E ~ 1e77 and overflows below 1e-77, and the
+/// element condensation squares the stiffness (overflow beyond ~1e150). Far inside both, 1e-30 ..
+/// 1e30 holds every unit system (2e11 Pa, 3e7 psi, 200 GPa) and keeps products of moduli finite.
+constexpr Range modulus{Bound{1e-30, true}, Bound{1e30, true},
+                        "moduli beyond this range overflow or underflow the material law's arithmetic"};
 constexpr Range poisson_ratio{Bound{-1.0, false}, Bound{0.5, false},
                               "an isotropic material is stable only for -1 < nu < 0.5"};
 constexpr Range hardening{Bound{0.0, true}, Bound{1.0, false}, "the secondary slope is a fraction of E"};

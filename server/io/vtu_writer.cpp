@@ -32,6 +32,7 @@ struct Cell {
 /// The mesh of a result: nodes, cells (solids then gaps) and the piece's geometry arrays.
 struct Mesh {
   const json* nodes = nullptr;
+  std::unordered_map<int, std::int64_t> point_of;  // node id -> point index
   std::vector<Cell> cells;
   VtuPiece piece;
 };
@@ -46,7 +47,7 @@ Mesh read_mesh(const json& result) {
   if (nodes.empty() || !nodes.at(0).contains("r")) {
     throw std::invalid_argument("the result document has no node coordinates (nodes[].r, .z): solve the model again");
   }
-  std::unordered_map<int, std::int64_t> index;
+  std::unordered_map<int, std::int64_t>& index = m.point_of;
   for (std::size_t n = 0; n < nodes.size(); ++n) index.emplace(nodes[n].at("id").get<int>(), static_cast<std::int64_t>(n));
   for (const json& e : result.at("elements")) m.cells.push_back({&e, false});
   if (result.contains("gaps")) {
@@ -122,6 +123,17 @@ std::string vtu_document(const json& result, VtuFormat format) {
   m.piece.point_data = {{m.piece.active_vectors, 3, std::move(displacement)},
                         {m.piece.active_scalars, 1, std::move(temperatures)},
                         {"node_id", 1, std::move(node_ids)}};
+  if (const auto reactions = result.find("reactions"); reactions != result.end() && reactions->is_array()) {
+    // (fr, fz, 0) at constrained nodes, 0 elsewhere (results written before reactions have none).
+    std::vector<double> force(3 * nodes.size(), 0.0);
+    for (const json& r : *reactions) {
+      const auto p = m.point_of.find(r.at("node").get<int>());
+      if (p == m.point_of.end()) continue;
+      force[3 * p->second] = r.at("fr").is_number() ? r["fr"].get<double>() : 0.0;
+      force[3 * p->second + 1] = r.at("fz").is_number() ? r["fz"].get<double>() : 0.0;
+    }
+    m.piece.point_data.push_back({"reaction" + unit_suffix(result, "force"), 3, std::move(force)});
+  }
 
   // ---- Cell data: element-only values (0 on gaps) and gap-only values (0 on solids), by their
   // document keys.

@@ -10,6 +10,8 @@
 ///   displacement  (u_r, u_z, 0), the active vector: Warp By Vector shows the deformed shape
 ///   temperature   T
 ///   node_id       the model's node id
+///   reaction      (fr, fz, 0): the supports' force on the node, 0 at free nodes (only when the
+///                 result has `reactions`)
 /// Cell data (element-only values are 0 on gap cells, gap-only values are 0 on solid cells; use
 /// is_gap to tell them apart, e.g. with a Threshold filter):
 ///   element_id, is_gap (0/1), material (the material id; 0 on gap cells)

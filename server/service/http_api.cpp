@@ -241,8 +241,9 @@ plot::PlotRequest plot_request(const httplib::Request& req) {
   plot::PlotRequest request;
   request.name = req.matches[2];
   request.format = req.matches[3] == "svg" ? plot::ImageFormat::svg : plot::ImageFormat::png;
-  request.width = static_cast<int>(integer_parameter(req, "width", 16, 4000).value_or(request.width));
-  request.height = static_cast<int>(integer_parameter(req, "height", 16, 4000).value_or(request.height));
+  constexpr int least = plot::Canvas::min_side, most = plot::Canvas::max_side;
+  request.width = static_cast<int>(integer_parameter(req, "width", least, most).value_or(request.width));
+  request.height = static_cast<int>(integer_parameter(req, "height", least, most).value_or(request.height));
   request.contour.max_bands = static_cast<int>(integer_parameter(req, "bands", 2, 40).value_or(request.contour.max_bands));
   request.contour.mesh = req.get_param_value("mesh") == "1" || req.get_param_value("mesh") == "true";
   const int samples = static_cast<int>(integer_parameter(req, "samples", 2, 100000).value_or(201));

@@ -627,7 +627,11 @@ TEST(ModelReaderRules, IsotropicRowsHaveExactlyTEnuAlpha) {
 }
 
 TEST(ModelReaderRules, YoungsModulusIsPositive) {
-  EXPECT_TRUE(rejects(with(valid_model(), "/materials/0/table/1/E", 0), "/materials/0/table/1/E", {"E = 0", "E > 0"}));
+  EXPECT_TRUE(rejects(with(valid_model(), "/materials/0/table/1/E", 0), "/materials/0/table/1/E", {"E = 0", "1e-30 <= E <= 1e+30"}));
+  // Beyond the arithmetic of the material law: an error at the modulus, not "not restrained" from
+  // the factorization of a stiffness that overflowed (issue 22).
+  EXPECT_TRUE(rejects(with(valid_model(), "/materials/0/table/1/E", 1e300), "/materials/0/table/1/E",
+                      {"E = 1e+300", "1e-30 <= E <= 1e+30", "overflow"}));
 }
 
 TEST(ModelReaderRules, IsotropicPoissonRatioIsBetweenMinus1AndHalf) {
