@@ -30,6 +30,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/result_arrays.hpp"
 #include "io/vtu_encoding.hpp"
 
 namespace saasgaps::io {
@@ -37,7 +38,13 @@ namespace saasgaps::io {
 /// The gap_state code written for a gap state name ("open" -> 0 .. "overclosed" -> 3).
 int vtu_gap_state_code(const std::string& state);
 
-/// The VTU document. A failed run, or a result without node coordinates, is a std::invalid_argument.
+/// What the VTU reads of a result (io/result_arrays.hpp): the mesh and the element members above.
+const ResultSelection& vtu_result_selection();
+
+/// The VTU document, from the arrays read with vtu_result_selection(). A failed run, or a result
+/// without node coordinates, is a std::invalid_argument.
+std::string result_to_vtu(const ResultArrays& result, VtuFormat format = VtuFormat::binary);
+/// The same from a tree (small in-memory documents and tests: it is dumped and read as text).
 std::string result_to_vtu(const nlohmann::json& result, VtuFormat format = VtuFormat::binary);
 
 /// The iterations as a ParaView collection: for each history row that holds every gap's closure,
@@ -47,6 +54,9 @@ std::string result_to_vtu(const nlohmann::json& result, VtuFormat format = VtuFo
 /// gap iteration. Only closures are kept per iteration (the history rows); displacements and
 /// stresses exist for the final state only. write(file name, bytes) is called once per file, the
 /// .pvd last; a result without per-iteration closures gives one file, the result.
+void write_vtu_series(const ResultArrays& result, const std::string& stem, VtuFormat format,
+                      const std::function<void(const std::string& file, const std::string& bytes)>& write);
+/// The same from a tree, as result_to_vtu.
 void write_vtu_series(const nlohmann::json& result, const std::string& stem, VtuFormat format,
                       const std::function<void(const std::string& file, const std::string& bytes)>& write);
 

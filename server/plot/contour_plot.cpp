@@ -266,7 +266,7 @@ double automatic_deformation_scale(const ResultMesh& mesh) {
   return decade;
 }
 
-void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOptions& options) {
+void draw_contour_plot(const Canvas& canvas, const PlotResult& result, const ContourOptions& options) {
   const FieldInfo& field = find_field(options.field);
   if (field.location == FieldLocation::gap) {
     throw std::invalid_argument("'" + std::string(field.name) + "' is a gap field: plot it with the closure plot");
@@ -276,7 +276,7 @@ void draw_contour_plot(const Canvas& canvas, const json& result, const ContourOp
                                 format_value(*options.deformation_scale));
   }
   ColorMap::require_name(options.color_map);  // before the work
-  const ResultMesh mesh = ResultMesh::from_result(result);
+  const ResultMesh& mesh = result.mesh();
   if (mesh.solids.empty()) throw std::invalid_argument("the result has no solid elements to contour");
   require_field_fits(field, mesh);
   const std::vector<double> values = nodal_values(result, mesh, field, options.centre);
