@@ -39,7 +39,7 @@ class PlotResult {
 
  private:
   const nlohmann::json* tree_ = nullptr;
-  io::ResultArrays arrays_;
+  mutable io::ResultArrays arrays_;  ///< mesh() releases the columns it has taken
   mutable std::optional<ResultMesh> mesh_;
 };
 
