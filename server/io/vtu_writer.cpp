@@ -240,10 +240,11 @@ std::string result_to_vtu(const ResultArrays& result, VtuFormat format) {
 
 std::string result_to_vtu(const json& result, VtuFormat format) { return result_to_vtu(arrays_of(result), format); }
 
-void write_vtu_series(const ResultArrays& result, const std::string& stem, VtuFormat format,
-                      const std::function<void(const std::string&, const std::string&)>& write) {
+void write_vtu_collection(const json& document, const std::string& stem,
+                          const std::function<std::string()>& whole,
+                          const std::function<std::string(const json& closures, int iteration)>& iteration_file,
+                          const std::function<void(const std::string&, const std::string&)>& write) {
   malformed_is_invalid([&] {
-    const json& document = result.document;
     const std::size_t gaps = document.contains("gaps") ? document.at("gaps").size() : 0;
     std::vector<const json*> rows;
     if (document.contains("history")) {
@@ -264,18 +265,25 @@ void write_vtu_series(const ResultArrays& result, const std::string& stem, VtuFo
       char suffix[32];
       std::snprintf(suffix, sizeof suffix, "_iter%04d.vtu", iteration);
       const bool last = k + 1 == rows.size();
-      write(stem + suffix,
-            last ? vtu_document(result, format) : iteration_document(result, rows[k]->at("gap_closures"), iteration, format));
+      write(stem + suffix, last ? whole() : iteration_file(rows[k]->at("gap_closures"), iteration));
       entry(iteration, base + suffix);
     }
     if (rows.empty()) {
-      write(stem + ".vtu", vtu_document(result, format));
+      write(stem + ".vtu", whole());
       entry(document.value("iterations", 0), base + ".vtu");
     }
     pvd += "  </Collection>\n</VTKFile>\n";
     write(stem + ".pvd", pvd);
     return 0;
   });
+}
+
+void write_vtu_series(const ResultArrays& result, const std::string& stem, VtuFormat format,
+                      const std::function<void(const std::string&, const std::string&)>& write) {
+  write_vtu_collection(
+      result.document, stem, [&] { return vtu_document(result, format); },
+      [&](const json& closures, int iteration) { return iteration_document(result, closures, iteration, format); },
+      write);
 }
 
 void write_vtu_series(const json& result, const std::string& stem, VtuFormat format,

@@ -56,6 +56,13 @@ std::string result_to_vtu(const nlohmann::json& result, VtuFormat format = VtuFo
 /// .pvd last; a result without per-iteration closures gives one file, the result.
 void write_vtu_series(const ResultArrays& result, const std::string& stem, VtuFormat format,
                       const std::function<void(const std::string& file, const std::string& bytes)>& write);
+/// The collection's layout, for any writer of the files (this one, and the tree writer the tests keep
+/// as its reference): which history rows get a file, their names, the .pvd. whole() makes the last
+/// (or only) file, iteration_file(closures, iteration) the others.
+void write_vtu_collection(const nlohmann::json& document, const std::string& stem,
+                          const std::function<std::string()>& whole,
+                          const std::function<std::string(const nlohmann::json& closures, int iteration)>& iteration_file,
+                          const std::function<void(const std::string& file, const std::string& bytes)>& write);
 /// The same from a tree, as result_to_vtu.
 void write_vtu_series(const nlohmann::json& result, const std::string& stem, VtuFormat format,
                       const std::function<void(const std::string& file, const std::string& bytes)>& write);

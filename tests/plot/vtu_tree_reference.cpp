@@ -5,7 +5,6 @@
 
 #include "io/vtu_writer.hpp"
 
-#include <cstdio>
 #include <stdexcept>
 #include <unordered_map>
 #include <vector>
@@ -191,39 +190,13 @@ std::string result_to_vtu(const json& result, VtuFormat format) {
 
 void write_vtu_series(const json& result, const std::string& stem, VtuFormat format,
                       const std::function<void(const std::string&, const std::string&)>& write) {
-  malformed_is_invalid([&] {
-    const std::size_t gaps = result.contains("gaps") ? result.at("gaps").size() : 0;
-    std::vector<const json*> rows;
-    if (result.contains("history")) {
-      for (const json& row : result.at("history")) {
-        if (gaps > 0 && row.contains("gap_closures") && row.at("gap_closures").size() == gaps) rows.push_back(&row);
-      }
-    }
-    // The base name the .pvd refers to: the files sit beside it.
-    const std::size_t slash = stem.find_last_of('/');
-    const std::string base = slash == std::string::npos ? stem : stem.substr(slash + 1);
-    std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-                      "  <Collection>\n";
-    const auto entry = [&](int step, const std::string& file) {
-      pvd += "    <DataSet timestep=\"" + std::to_string(step) + "\" part=\"0\" file=\"" + file + "\"/>\n";
-    };
-    for (std::size_t k = 0; k < rows.size(); ++k) {
-      const int iteration = rows[k]->at("iteration").get<int>();
-      char suffix[32];
-      std::snprintf(suffix, sizeof suffix, "_iter%04d.vtu", iteration);
-      const bool last = k + 1 == rows.size();
-      write(stem + suffix,
-            last ? vtu_document(result, format) : iteration_document(result, rows[k]->at("gap_closures"), iteration, format));
-      entry(iteration, base + suffix);
-    }
-    if (rows.empty()) {
-      write(stem + ".vtu", vtu_document(result, format));
-      entry(result.value("iterations", 0), base + ".vtu");
-    }
-    pvd += "  </Collection>\n</VTKFile>\n";
-    write(stem + ".pvd", pvd);
-    return 0;
-  });
+  // The layout of the collection is the writer's; what the reference checks is each file.
+  write_vtu_collection(
+      result, stem, [&] { return malformed_is_invalid([&] { return vtu_document(result, format); }); },
+      [&](const json& closures, int iteration) {
+        return malformed_is_invalid([&] { return iteration_document(result, closures, iteration, format); });
+      },
+      write);
 }
 
 }  // namespace saasgaps::io::reference
