@@ -18,6 +18,13 @@ int vtu_gap_state_code(const std::string& state) {
   throw std::invalid_argument("unknown gap state '" + state + "'");
 }
 
+std::string vtu_unit_suffix(const json& result, const char* kind) {
+  const auto units = result.find("units");
+  if (units == result.end() || !units->is_object()) return "";
+  const std::string name = units->value(kind, "");
+  return name.empty() ? "" : " [" + name + "]";
+}
+
 const ResultSelection& vtu_result_selection() {
   static const ResultSelection selection{
       .mesh = true,
@@ -99,14 +106,6 @@ Mesh read_mesh(const ResultArrays& result) {
   return m;
 }
 
-/// " [psi]" when the result names the unit of that kind ("stress", "length", "temperature").
-std::string unit_suffix(const json& result, const char* kind) {
-  const auto units = result.find("units");
-  if (units == result.end() || !units->is_object()) return "";
-  const std::string name = units->value(kind, "");
-  return name.empty() ? "" : " [" + name + "]";
-}
-
 std::vector<VtuArray> id_arrays(const Mesh& m) {
   std::vector<std::int32_t> ids(m.solids->id.begin(), m.solids->id.end()), gap(m.solids->size(), 0);
   for (const json* g : m.gaps) {
@@ -133,8 +132,8 @@ std::string vtu_document(const ResultArrays& result, VtuFormat format) {
   Mesh m = read_mesh(result);
   const ResultNodes& nodes = *m.nodes;
   const json& document = result.document;
-  const std::string stress = unit_suffix(document, "stress"), length = unit_suffix(document, "length"),
-                    temperature = unit_suffix(document, "temperature");
+  const std::string stress = vtu_unit_suffix(document, "stress"), length = vtu_unit_suffix(document, "length"),
+                    temperature = vtu_unit_suffix(document, "temperature");
 
   // ---- Point data.
   std::vector<double> displacement;

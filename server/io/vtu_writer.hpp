@@ -38,6 +38,10 @@ namespace saasgaps::io {
 /// The gap_state code written for a gap state name ("open" -> 0 .. "overclosed" -> 3).
 int vtu_gap_state_code(const std::string& state);
 
+/// " [psi]" when the result (its "units") names the unit of that kind ("stress", "length",
+/// "temperature"), the suffix of the arrays' names; "" otherwise.
+std::string vtu_unit_suffix(const nlohmann::json& result, const char* kind);
+
 /// What the VTU reads of a result (io/result_arrays.hpp): the mesh and the element members above.
 const ResultSelection& vtu_result_selection();
 

@@ -81,14 +81,6 @@ Mesh read_mesh(const json& result) {
   return m;
 }
 
-/// " [psi]" when the result names the unit of that kind ("stress", "length", "temperature").
-std::string unit_suffix(const json& result, const char* kind) {
-  const auto units = result.find("units");
-  if (units == result.end() || !units->is_object()) return "";
-  const std::string name = units->value(kind, "");
-  return name.empty() ? "" : " [" + name + "]";
-}
-
 std::vector<VtuArray> id_arrays(const Mesh& m) {
   std::vector<std::int32_t> ids, gap;
   for (const Cell& c : m.cells) {
@@ -101,8 +93,8 @@ std::vector<VtuArray> id_arrays(const Mesh& m) {
 std::string vtu_document(const json& result, VtuFormat format) {
   Mesh m = read_mesh(result);
   const json& nodes = *m.nodes;
-  const std::string stress = unit_suffix(result, "stress"), length = unit_suffix(result, "length"),
-                    temperature = unit_suffix(result, "temperature");
+  const std::string stress = vtu_unit_suffix(result, "stress"), length = vtu_unit_suffix(result, "length"),
+                    temperature = vtu_unit_suffix(result, "temperature");
 
   // ---- Point data.
   std::vector<double> displacement, temperatures;
