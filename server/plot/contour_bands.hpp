@@ -6,6 +6,7 @@
 /// split into two triangles first.
 
 #include <array>
+#include <cassert>
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -42,7 +43,11 @@ void triangulate(std::span<const ValuePoint> corners, std::vector<ValueTriangle>
 struct ClippedTriangle {
   std::array<ValuePoint, 4> points;
   std::size_t size = 0;  ///< 0 when nothing is left (fewer than 3 corners)
-  void push_back(const ValuePoint& p) { points[size++] = p; }
+  void push_back(const ValuePoint& p) {
+    // A half plane cuts a triangle's boundary at most twice: at most 4 corners.
+    assert(size < points.size());
+    points[size++] = p;
+  }
   [[nodiscard]] std::span<const ValuePoint> corners() const { return {points.data(), size}; }
 };
 ClippedTriangle clip_at_least(const ValueTriangle& triangle, double level);
