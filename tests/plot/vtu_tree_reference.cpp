@@ -5,6 +5,7 @@
 
 #include "io/vtu_writer.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <unordered_map>
 #include <vector>
