@@ -9,6 +9,12 @@
 
 namespace saasgaps {
 
+double contact_start(std::span<const double> g0) {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const double g : g0) smallest = std::min(smallest, g);
+  return std::max(0.0, smallest + 0.01 * std::abs(smallest));
+}
+
 ConstraintRows::ConstraintRows(const DofMap& dofs, const CscPattern& pattern) : dofs_(dofs), pattern_(pattern) {
   diagonal_.resize(static_cast<std::size_t>(pattern.n));
   for (Index j = 0; j < pattern.n; ++j) diagonal_[j] = pattern.find(j, j);
@@ -124,6 +130,37 @@ bool ConstraintRows::hold(SparseCholesky& cholesky, std::span<const double> valu
   cholesky_ = &cholesky;
   factored_.assign(active.begin(), active.end());
   return true;
+}
+
+void ConstraintRows::refine_equilibrium(std::span<const double> values, std::span<const double> rhs,
+                                        std::span<const std::uint8_t> active, std::span<double> force,
+                                        std::span<double> u, std::span<const std::uint8_t> loaded) {
+  assert(cholesky_ != nullptr && "hold() before refine_equilibrium()");
+  // r = f + C_L^T force - K u, K symmetric from its upper triangle.
+  std::copy(rhs.begin(), rhs.end(), b_.begin());
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    if (active[r] || (!loaded.empty() && loaded[r])) add_load(r, force[r], b_);
+  }
+  for (Index j = 0; j < pattern_.n; ++j) {
+    for (Index k = pattern_.colptr[j]; k < pattern_.colptr[j + 1]; ++k) {
+      const Index i = pattern_.rowind[k];
+      b_[i] -= values[k] * u[j];
+      if (i != j) b_[j] -= values[k] * u[i];
+    }
+  }
+  std::vector<double> du(u.size());
+  if (held_.empty()) {
+    cholesky_->solve(b_, du);
+  } else {
+    updatable_.solve(b_, du);
+  }
+  for (std::size_t j = 0; j < u.size(); ++j) u[j] += du[j];
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    if (!active[r]) continue;
+    double c_du = 0.0;
+    for (const Entry& e : entries(r)) c_du += e.coefficient * du[e.equation];
+    force[r] -= rows_[r].rho * c_du;
+  }
 }
 
 double ConstraintRows::multipliers(std::span<const double> rhs, std::span<const std::uint8_t> active,

@@ -28,6 +28,11 @@
 
 namespace saasgaps {
 
+/// Where contact begins, for a cold start: the rows whose initial gap is at most this are active
+/// first. That is those within 1 % of the smallest gap, and every row closed or penetrating (g0 <= 0,
+/// an interference of contact surfaces).
+double contact_start(std::span<const double> g0);
+
 class ConstraintRows {
  public:
   /// Multiplier iterations per active set (each one solve).
@@ -84,6 +89,17 @@ class ConstraintRows {
   /// when A is within max_update_rank rows of it, else a factorization of `cholesky`. Returns true
   /// when it factorized. Throws NotPositiveDefinite when K_A is singular.
   bool hold(SparseCholesky& cholesky, std::span<const double> values, std::span<const std::uint8_t> active);
+
+  /// Equilibrium refinement of a settled set. K_A is stiffer than K by the penalty, so the round-off
+  /// of a solve with it, about eps rho |u|, is an out-of-balance force rho / k_r times that of a
+  /// solve with K (1e-8 of the load on the report's problem 3, enough to show in the support
+  /// reactions). Corrected once on the held K_A: r = f + C_L^T force - K u (no penalty in it; L = the
+  /// active rows and the `loaded` ones, whose force is a given load such as a slip force),
+  /// K_A du = r, u += du, force_A -= rho C_A du; then K u = f + C_L^T force holds to the round-off
+  /// of K alone. values: K on the pattern.
+  void refine_equilibrium(std::span<const double> values, std::span<const double> rhs,
+                          std::span<const std::uint8_t> active, std::span<double> force, std::span<double> u,
+                          std::span<const std::uint8_t> loaded = {});
 
   /// After a multiplier iteration, with its residual: true to stop there (an active-set solver that
   /// already knows the set will change, so that more digits of this set's answer would be wasted).

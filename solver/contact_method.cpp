@@ -3,6 +3,7 @@
 #include <cassert>
 
 #include "gap_modulus_method.hpp"
+#include "mortar_method.hpp"
 #include "node_pair_method.hpp"
 
 namespace saasgaps {
@@ -17,7 +18,11 @@ void ContactMethod::check_solved(const RestartState&, const ContactOutcome&) con
 
 void ContactMethod::add_columns(const RestartState&, IterationRecord&) const {}
 
+void ContactMethod::add_nodal_forces(const RestartState&, std::span<double>) const {}
+
 std::string ContactMethod::converged_note(const RestartState&, const ContactOutcome&) const { return {}; }
+
+std::vector<ContactPairResult> ContactMethod::surface_results(const RestartState&) const { return {}; }
 
 namespace {
 
@@ -30,14 +35,32 @@ class NoContact final : public ContactMethod {
 
 }  // namespace
 
-std::unique_ptr<ContactMethod> make_contact_method(const ContactSetup& setup) {
-  if (setup.gaps == nullptr) return std::make_unique<NoContact>();
+namespace {
+
+/// The gap elements' method; with exact gaps, `surface_rows` (null: none) appended to its node pairs.
+std::unique_ptr<ContactMethod> gap_method(const ContactSetup& setup, const ContactPairs* surface_rows) {
+  if (setup.gaps == nullptr) return nullptr;
   switch (setup.gaps->method) {
     case GapMethod::classic: return std::make_unique<GapModulusMethod>(setup.model, *setup.gaps);
-    case GapMethod::exact: return std::make_unique<NodePairMethod>(setup.model, *setup.gaps, setup.dofs, setup.pattern);
+    case GapMethod::exact:
+      return std::make_unique<NodePairMethod>(setup.model, *setup.gaps, setup.dofs, setup.pattern, surface_rows);
   }
   assert(false && "every GapMethod has its case");
   return nullptr;
+}
+
+}  // namespace
+
+std::unique_ptr<ContactMethod> make_contact_method(const ContactSetup& setup) {
+  const bool surfaces = setup.surfaces != nullptr && setup.surfaces->pair_count() > 0;
+  if (!surfaces) {
+    std::unique_ptr<ContactMethod> gaps = gap_method(setup, nullptr);
+    if (gaps) return gaps;
+    return std::make_unique<NoContact>();
+  }
+  // Exact gaps solve the surfaces' rows with their node pairs: one active set, one factorization.
+  const bool exact_gaps = setup.gaps != nullptr && setup.gaps->method == GapMethod::exact;
+  return std::make_unique<MortarMethod>(setup, *setup.surfaces, gap_method(setup, &setup.surfaces->pairs), exact_gaps);
 }
 
 }  // namespace saasgaps

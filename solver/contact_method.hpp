@@ -29,6 +29,7 @@
 namespace saasgaps {
 
 class StiffnessSystem;
+struct SurfaceContact;
 
 /// What a method finds in one iteration's displacements: one row per gap element (model order) and
 /// the summary columns of the history (the report's Tables I-V).
@@ -70,8 +71,16 @@ class ContactMethod {
   /// from the outcome). Default: none.
   virtual void add_columns(const RestartState& state, IterationRecord& row) const;
 
+  /// Adds to `forces` (f_r, f_z per node, every node) the forces the method's contact exerts on the
+  /// nodes in iteration K's state (state.displacement, state.gaps.used, state.contact): what the
+  /// support reactions balance besides the solids and the loads (reactions.hpp). Default: none.
+  virtual void add_nodal_forces(const RestartState& state, std::span<double> forces) const;
+
   /// What "converged in K iterations" goes on to say about the contact (empty: nothing). Default: "".
   [[nodiscard]] virtual std::string converged_note(const RestartState& state, const ContactOutcome& outcome) const;
+
+  /// The contact surface pairs' points (result `contact`) of iteration K. Default: none.
+  [[nodiscard]] virtual std::vector<ContactPairResult> surface_results(const RestartState& state) const;
 };
 
 /// What a method is built from: the model, its gap settings with a restart's changes applied (null
@@ -81,6 +90,9 @@ struct ContactSetup {
   const GapSettings* gaps = nullptr;
   const DofMap& dofs;
   const CscPattern& pattern;
+  /// The rows of model.contact (mortar_method.hpp), whose couplings the pattern holds; null or
+  /// without pairs when the model has no contact surfaces.
+  const SurfaceContact* surfaces = nullptr;
 };
 
 /// Builds the contact method of one run. solve() takes one; make_contact_method is the default, and a
@@ -88,7 +100,8 @@ struct ContactSetup {
 using ContactMethodFactory = std::function<std::unique_ptr<ContactMethod>(const ContactSetup&)>;
 
 /// The method gaps.method names: none without gaps, "classic" GapModulusMethod, "exact"
-/// NodePairMethod. Adding a method: its own file pair implementing ContactMethod, one case here.
+/// NodePairMethod; with contact surface pairs, that one wrapped in a MortarMethod. Adding a method:
+/// its own file pair implementing ContactMethod, one case here.
 std::unique_ptr<ContactMethod> make_contact_method(const ContactSetup& setup);
 
 }  // namespace saasgaps

@@ -23,19 +23,20 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
   const std::size_t n = rows_.size();
   ContactReport report;
   rows_.set_penalties(values);
-  // Warm start: the last active set. Otherwise the pairs whose initial gap is within 1 % of the
-  // smallest, where contact begins: every pair of a uniform gap (fits, pressed contacts: one active
-  // set), the first point of contact of a curved one (Hertz: 8 active sets where starting from every
-  // pair peels the contact open three pairs at a time, 13).
-  double smallest = std::numeric_limits<double>::infinity();
+  // Warm start: the last active set. Otherwise where contact begins (contact_start): every pair of
+  // a uniform gap (fits, pressed contacts: one active set), the first point of contact of a curved
+  // one (Hertz: 8 active sets where starting from every pair peels the contact open three pairs at a
+  // time, 13), and every pair already closed or penetrating.
+  std::vector<double> g0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!rows_.empty(i)) smallest = std::min(smallest, rows_.g0(i));
+    if (!rows_.empty(i)) g0.push_back(rows_.g0(i));
   }
   std::vector<std::uint8_t> active(n, 0);
   if (state.active.size() == n) {
     active = state.active;
   } else {
-    for (std::size_t i = 0; i < n; ++i) active[i] = rows_.g0(i) <= 1.01 * smallest;
+    const double start = contact_start(g0);
+    for (std::size_t i = 0; i < n; ++i) active[i] = rows_.g0(i) <= start;
   }
   std::vector<double> force = state.force.size() == n ? state.force : std::vector<double>(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
@@ -87,6 +88,7 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
       }
     }
     if (changes == 0) {
+      rows_.refine_equilibrium(values, rhs, active, force, u);
       state.active = active;
       state.force = force;
       report.complementarity = 0.0;
@@ -115,6 +117,19 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
     active = std::move(next);
     for (std::size_t i = 0; i < n; ++i) {
       if (!active[i]) force[i] = 0.0;
+    }
+  }
+}
+
+void ExactContact::add_nodal_forces(const ContactState& state, std::span<double> forces) const {
+  const std::vector<ContactPair>& pairs = pairs_.pairs;
+  if (state.force.size() != pairs.size()) return;  // nothing solved yet
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& pair = pairs[i];
+    for (std::size_t k = 0; k < pair.node.size(); ++k) {
+      const auto node = static_cast<std::size_t>(pair.node[k]);
+      forces[2 * node] += state.force[i] * pair.weight[k] * pair.normal[0];
+      forces[2 * node + 1] += state.force[i] * pair.weight[k] * pair.normal[1];
     }
   }
 }

@@ -13,7 +13,11 @@
 /// converged answer has g_A = 0 to round-off whatever rho is. Then
 ///   A <- { i : lambda_i > tol_lambda_i }  U  { i not in A : g_i < -tol_g }
 /// until A repeats; an active set seen before (a cycle) changes only its worst pair. The first A is
-/// the last solve's, or the pairs whose initial gap is within 1 % of the smallest.
+/// the last solve's, or the pairs whose initial gap is within 1 % of the smallest, and every pair whose
+/// initial gap is <= 0 (closed, or an interference of contact surfaces).
+///
+/// Equilibrium refinement (ConstraintRows::refine_equilibrium): the settled set's answer is corrected
+/// once so that K u = f + C^T lambda holds to the round-off of K alone, not of K_A.
 
 #include <cstdint>
 #include <span>
@@ -54,6 +58,10 @@ class ExactContact {
   ExactContact(const Model& model, const DofMap& dofs, const CscPattern& pattern, ContactPairs pairs);
 
   [[nodiscard]] const ContactPairs& pairs() const { return pairs_; }
+
+  /// Adds the contact forces lambda_i w_ik n_i of `state` to the nodal forces (u_r, u_z per node):
+  /// the C^T lambda of K u = f + C^T lambda. Nothing before the first solve.
+  void add_nodal_forces(const ContactState& state, std::span<double> forces) const;
 
   /// Solves the contact problem for the assembled K (values, upper triangle in `pattern`) and f (rhs):
   /// the free displacements into u, the forces and active set into state (which, when not empty,

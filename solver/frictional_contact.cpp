@@ -61,8 +61,8 @@ FrictionReport FrictionalContact::solve(SparseCholesky& cholesky, std::span<cons
   }
   const auto usable = [&](std::size_t i) { return !rows_.empty(normal_row(i)); };
 
-  // Warm start: the last solve's states and forces. Otherwise the points whose initial gap is within
-  // 1 % of the smallest, where contact begins (as ExactContact), sticking unless mu = 0.
+  // Warm start: the last solve's states and forces. Otherwise where contact begins (contact_start,
+  // as ExactContact), sticking unless mu = 0.
   std::vector<std::uint8_t> points(n, open);
   std::vector<std::int8_t> direction(n, 0);
   std::vector<double> force(2 * n, 0.0);
@@ -75,12 +75,13 @@ FrictionReport FrictionalContact::solve(SparseCholesky& cholesky, std::span<cons
       force[tangential_row(i)] = state.tangential_force[i];
     }
   } else {
-    double smallest = std::numeric_limits<double>::infinity();
+    std::vector<double> g0;
     for (std::size_t i = 0; i < n; ++i) {
-      if (usable(i)) smallest = std::min(smallest, rows_.g0(normal_row(i)));
+      if (usable(i)) g0.push_back(rows_.g0(normal_row(i)));
     }
+    const double start = contact_start(g0);
     for (std::size_t i = 0; i < n; ++i) {
-      if (rows_.g0(normal_row(i)) <= 1.01 * smallest) points[i] = mu_[i] > 0.0 ? stick : slip;
+      if (rows_.g0(normal_row(i)) <= start) points[i] = mu_[i] > 0.0 ? stick : slip;
       direction[i] = points[i] == slip ? 1 : 0;
     }
   }
@@ -208,6 +209,14 @@ FrictionReport FrictionalContact::solve(SparseCholesky& cholesky, std::span<cons
     // Noise level of the rows: what the multiplier iterations could not remove.
     step(std::max(10.0 * worst, ConstraintRows::round_off * scale));
     if (changes == 0) {
+      // K u = f + C^T lambda to the round-off of K, the slip forces as given loads.
+      std::vector<std::uint8_t> slip_rows(2 * n, 0);
+      for (std::size_t i = 0; i < n; ++i) slip_rows[tangential_row(i)] = points[i] == slip;
+      rows_.refine_equilibrium(values, rhs, active, force, u, slip_rows);
+      for (std::size_t i = 0; i < n; ++i) {
+        g[i] = rows_.value(normal_row(i), u);
+        v[i] = rows_.value(tangential_row(i), u);
+      }
       state.state = points;
       state.direction = direction;
       state.normal_force.resize(n);

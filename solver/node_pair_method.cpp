@@ -9,9 +9,20 @@
 
 namespace saasgaps {
 
+namespace {
+
+ContactPairs with_extra(ContactPairs pairs, const ContactPairs* extra) {
+  if (extra != nullptr) pairs.pairs.insert(pairs.pairs.end(), extra->pairs.begin(), extra->pairs.end());
+  return pairs;
+}
+
+}  // namespace
+
 NodePairMethod::NodePairMethod(const Model& model, const GapSettings& settings, const DofMap& dofs,
-                               const CscPattern& pattern)
-    : gaps_(model, settings), exact_(model, dofs, pattern, contact_pairs(model)) {}
+                               const CscPattern& pattern, const ContactPairs* extra)
+    : gaps_(model, settings),
+      exact_(model, dofs, pattern, with_extra(contact_pairs(model), extra)),
+      node_pairs_(exact_.pairs().pairs.size() - (extra != nullptr ? extra->pairs.size() : 0)) {}
 
 void NodePairMethod::begin_iteration(RestartState& state, StiffnessSystem& system) {
   GapElements::advance(state.gaps, gaps_.floor_moduli(), state.iteration);
@@ -92,10 +103,16 @@ void NodePairMethod::add_columns(const RestartState& state, IterationRecord& row
   row.active_set_iterations = report_.active_set_iterations;
 }
 
+void NodePairMethod::add_nodal_forces(const RestartState& state, std::span<double> forces) const {
+  gaps_.add_nodal_forces(state.gaps, state.displacement, forces);
+  exact_.add_nodal_forces(state.contact, forces);
+}
+
 std::string NodePairMethod::converged_note(const RestartState& state, const ContactOutcome&) const {
   std::ostringstream text;
-  text << " (exact contact: " << state.history.back().contact_pairs << " of "
-       << plural(static_cast<long long>(exact_.pairs().pairs.size()), "node pair")
+  std::size_t touching = 0;
+  for (std::size_t i = 0; i < node_pairs_ && i < state.contact.active.size(); ++i) touching += state.contact.active[i];
+  text << " (exact contact: " << touching << " of " << plural(static_cast<long long>(node_pairs_), "node pair")
        << " in contact, complementarity residual " << state.history.back().complementarity << ")";
   return text.str();
 }

@@ -17,8 +17,11 @@ namespace saasgaps {
 
 class NodePairMethod final : public ContactMethod {
  public:
-  /// Throws GapPairingError naming every gap element that cannot be paired.
-  NodePairMethod(const Model& model, const GapSettings& settings, const DofMap& dofs, const CscPattern& pattern);
+  /// Throws GapPairingError naming every gap element that cannot be paired. `extra` (null: none):
+  /// further rows solved with the node pairs, after them (contact surfaces' rows, mortar_method.hpp);
+  /// the pattern must hold their couplings.
+  NodePairMethod(const Model& model, const GapSettings& settings, const DofMap& dofs, const CscPattern& pattern,
+                 const ContactPairs* extra = nullptr);
 
   /// Every gap at the floor modulus.
   void begin_iteration(RestartState& state, StiffnessSystem& system) override;
@@ -33,12 +36,16 @@ class NodePairMethod final : public ContactMethod {
   void check_solved(const RestartState& state, const ContactOutcome& outcome) const override;
   /// Pairs in contact, complementarity residual, active sets of the last solve.
   void add_columns(const RestartState& state, IterationRecord& row) const override;
-  /// "(exact contact: N of M node pairs in contact, complementarity residual r)".
+  /// The floor springs' forces and the pairs' contact forces lambda_i w_ik n_i (K u = f + C^T lambda).
+  void add_nodal_forces(const RestartState& state, std::span<double> forces) const override;
+  /// "(exact contact: N of M node pairs in contact, complementarity residual r)" (the node pairs
+  /// only; the residual is of every row).
   [[nodiscard]] std::string converged_note(const RestartState& state, const ContactOutcome& outcome) const override;
 
  private:
   GapElements gaps_;
-  ExactContact exact_;
+  ExactContact exact_;      // the node pairs first, then the extra rows
+  std::size_t node_pairs_;  // how many of exact_'s rows are node pairs
   ContactReport report_;   // of the last solve
   double load_norm_ = 0.0; // |f|_1 of the last solve
 };

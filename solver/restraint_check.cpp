@@ -100,6 +100,15 @@ std::vector<RestraintIssue> check_restraint(const Model& model) {
   if (model.gaps) {
     for (const GapElement& g : model.gaps->elements) join_corners(bodies, used, g);
   }
+  if (model.contact) {
+    // A contact pair joins its two surfaces' bodies, like a closed gap: a body pressed onto another
+    // is held by it. (Surfaces are sides of solid elements, so their nodes are already used.)
+    for (const SurfacePair& pair : model.contact->pairs) {
+      const auto& a = model.contact->surfaces[static_cast<std::size_t>(pair.surfaces[0])].edges;
+      const auto& b = model.contact->surfaces[static_cast<std::size_t>(pair.surfaces[1])].edges;
+      if (!a.empty() && !b.empty()) bodies.join(a.front()[0], b.front()[0]);
+    }
+  }
   Prescribed fixed{std::vector<char>(n, 0), std::vector<char>(n, 0)};
   for (const Constraint& c : model.constraints) {
     if (c.u_r) fixed.r[c.node] = 1;

@@ -11,7 +11,8 @@
 /// A prescribed component adds one row to the map (a, b, theta) -> prescribed values; the body is
 /// restrained when the rows have full rank (rank 3 plane, a z row axisymmetric). Gap elements join
 /// bodies: they always carry some stiffness (the tensile schedule's floor), so a body held only
-/// through gaps is restrained. Cost: O(nodes + elements) and one 3x3 eigenvalue problem per body.
+/// through gaps is restrained. A contact surface pair joins the bodies of its two surfaces the same
+/// way (a body held only by contact, pressed onto another, is a valid model). Cost: O(nodes + elements) and one 3x3 eigenvalue problem per body.
 
 #include <vector>
 

@@ -2,6 +2,8 @@
 /// The outcome of a run: status, history, and the last iteration's displacements, element
 /// stresses and strains, and gap states.
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +54,14 @@ struct GapResult {
   GapFailure failure = GapFailure::none;
 };
 
+/// The force the supports exert on a constrained node (reactions.hpp): plane analyses on the whole
+/// thickness, axisymmetric ones on the full ring.
+struct NodeReaction {
+  int id = 0;        ///< node id
+  double f_r = 0.0;  ///< along r (0 where u_r is free)
+  double f_z = 0.0;  ///< along z (0 where u_z is free)
+};
+
 /// One load step of a stepped model: converged when its last increment converged; not_converged
 /// when the run ended (max_iterations, or a stop on request) before it did or before it began.
 /// (failed is the service's word for a run that threw; a finished run never says it.)
@@ -65,6 +75,40 @@ struct StepResult {
   StepStatus status = StepStatus::not_converged;
 };
 
+/// A point of a contact surface pair: open, or touching (stick: frictionless contact that touches;
+/// slip needs friction, not solved yet).
+enum class ContactPointState { open, stick, slip };
+
+const char* to_string(ContactPointState state);
+
+/// One node of side A of a contact pair (result `contact[].points[]`).
+struct ContactPointResult {
+  double r = 0.0, z = 0.0;  ///< the node's reference coordinates
+  double gap = 0.0;         ///< current gap along the node's normal (length; < 0 never once solved)
+  double pressure = 0.0;    ///< >= 0, force per unit area of side A's face
+  double shear = 0.0;       ///< tangential traction (0: frictionless)
+  double slip = 0.0;        ///< accumulated tangential slip (0: frictionless)
+  ContactPointState state = ContactPointState::open;
+};
+
+/// A contact pair's points along side A, in the order of its chain.
+struct ContactPairResult {
+  std::array<std::string, 2> surfaces;  ///< names of sides A and B
+  std::vector<ContactPointResult> points;
+};
+
+/// The heat conduction of a thermal run (thermal_analysis.hpp).
+struct ThermalResult {
+  std::vector<double> T;          ///< per node: steady, the solution; transient, at the last output time
+  std::vector<Vec2> flux;         ///< per solid element, (q_r, q_z) = -k grad T with T above
+  std::vector<double> times;      ///< transient: the output times (empty when steady)
+  std::vector<std::vector<double>> history;  ///< transient: T per node at each output time
+  int iterations = 0;             ///< steady: conduction solves of the k(T) iteration (last pass)
+  int passes = 1;                 ///< thermal-contact passes (conducting gaps), else 1
+  int time_steps = 0;             ///< transient: steps taken
+  int factorizations = 0;         ///< of the conduction matrix
+};
+
 struct Solution {
   RunStatus status = RunStatus::not_converged;
   int iterations = 0;
@@ -73,7 +117,10 @@ struct Solution {
   std::vector<NodeResult> nodes;
   std::vector<ElementResult> elements;
   std::vector<GapResult> gaps;
+  std::vector<ContactPairResult> contact;  ///< one per model.contact pair; empty without contact
+  std::vector<NodeReaction> reactions;  ///< every node with a prescribed component, in node order (empty before iteration 1)
   std::vector<StepResult> steps;  ///< stepped models only, one per Model::steps entry; else empty
+  std::optional<ThermalResult> thermal;  ///< models with `thermal` only
 };
 
 }  // namespace saasgaps

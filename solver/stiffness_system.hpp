@@ -23,9 +23,15 @@ namespace saasgaps {
 /// The constitutive law of element (or gap) number i.
 using LawOf = std::function<Constitutive(std::size_t)>;
 
+/// The model's nodal forces and the consistent nodal loads of its edge tractions, one add(node index,
+/// (f_r, f_z)) per node and load, in assembly order: f_loads of K u = f (element loads apart).
+void for_each_external_load(const Model& model, const std::function<void(int node, const Vec2& force)>& add);
+
 class StiffnessSystem {
  public:
-  StiffnessSystem(const Model& model, const DofMap& dofs);
+  /// couplings: constraint rows across nodes no element joins (contact surfaces' rows), held by the
+  /// pattern and never assembled here.
+  StiffnessSystem(const Model& model, const DofMap& dofs, const Cliques& couplings = {});
 
   /// Solid elements with law_of(e): K_solid, and f = external loads + element loads (thermal, body
   /// force) - K_fp u_p for prescribed displacements u_p.
@@ -44,7 +50,7 @@ class StiffnessSystem {
 
   const Model& model_;
   const DofMap& dofs_;
-  Assembler assembler_;  // cliques: solid elements first, then gap elements
+  Assembler assembler_;  // cliques: solid elements first, then gap elements, then the couplings
   std::vector<double> values_;
   std::vector<double> rhs_;
   std::vector<double> solid_rhs_;

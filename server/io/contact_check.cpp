@@ -1,6 +1,7 @@
 #include "io/contact_check.hpp"
 
 #include "contact_pairs.hpp"
+#include "contact_surface.hpp"
 #include "io/json_pointer.hpp"
 
 namespace saasgaps::io {
@@ -11,6 +12,23 @@ std::vector<InputIssue> contact_pairing_input_issues(const Model& model) {
   // The reader keeps gap elements in document order, so index i is /gaps/elements/i.
   for (const PairingIssue& issue : contact_pairing_issues(model)) {
     issues.push_back({pointer_append("/gaps/elements", issue.gap), issue.detail});
+  }
+  return issues;
+}
+
+std::vector<InputIssue> contact_surface_input_issues(const Model& model) {
+  std::vector<InputIssue> issues;
+  if (!model.contact) return issues;
+  // The reader keeps surfaces in document order (a refused one stops the read before this check).
+  for (std::size_t i = 0; i < model.contact->surfaces.size(); ++i) {
+    try {
+      (void)contact_surface(model, model.contact->surfaces[i].edges);
+    } catch (const ContactSurfaceError& e) {
+      const std::string edges = pointer_append(pointer_append("/contact/surfaces", i), "edges");
+      for (const SurfaceEdgeIssue& issue : e.issues()) {
+        issues.push_back({pointer_append(edges, issue.edge), "surface \"" + model.contact->surfaces[i].name + "\": " + issue.detail});
+      }
+    }
   }
   return issues;
 }

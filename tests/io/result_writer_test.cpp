@@ -179,6 +179,9 @@ TEST(ResultWriter, RandomSolutionIsTheTreeWritersDocument) {
     r.failure = r.converged ? GapFailure::none : GapFailure::overclosed;
     s.gaps.push_back(r);
   }
+  for (const Constraint& c : model.constraints) {
+    s.reactions.push_back({model.nodes[static_cast<std::size_t>(c.node)].id, random_value(rng), random_value(rng)});
+  }
   expect_same_document(model, s);
   const nlohmann::json written = nlohmann::json::parse(result_text(model, s));
   EXPECT_EQ(written["units"], (nlohmann::json{{"length", "in"}, {"stress", "lb/in\u00b2"}, {"temperature", "\u00b0F"}}));
@@ -189,6 +192,31 @@ TEST(ResultWriter, RandomSolutionIsTheTreeWritersDocument) {
   s.nodes[0].u_r = std::nan("");
   s.elements[0].effective = std::numeric_limits<double>::infinity();
   expect_same_document(model, s);
+}
+
+TEST(ResultWriter, ContactPairsAreWrittenForModelsWithContactOnly) {
+  Model model = testing::example_model("report-problem3-case1.json");
+  Solution s;
+  s.status = RunStatus::converged;
+  EXPECT_FALSE(nlohmann::json::parse(result_text(model, s)).contains("contact"));
+  model.contact.emplace();
+  ContactPairResult pair;
+  pair.surfaces = {"shaft", "hub"};
+  pair.points.push_back({1.5, 0.25, 0.0, 1234.5, 0.0, 0.0, ContactPointState::stick});
+  pair.points.push_back({1.5, 0.5, 0.002, 0.0, 0.0, 0.0, ContactPointState::open});
+  s.contact = {pair};
+  const std::string text = result_text(model, s);
+  const nlohmann::json written = nlohmann::json::parse(text);
+  ASSERT_EQ(written["contact"].size(), 1u);
+  EXPECT_EQ(written["contact"][0]["surfaces"], (nlohmann::json{"shaft", "hub"}));
+  EXPECT_EQ(written["contact"][0]["points"][0],
+            (nlohmann::json{{"r", 1.5}, {"z", 0.25}, {"gap", 0.0}, {"pressure", 1234.5}, {"shear", 0.0},
+                            {"slip", 0.0}, {"state", "stick"}}));
+  EXPECT_EQ(written["contact"][0]["points"][1]["state"], "open");
+  // Keys in alphabetical order, as everywhere in the document.
+  EXPECT_LT(text.find("\"gap\""), text.find("\"pressure\""));
+  EXPECT_LT(text.find("\"analysis\""), text.find("\"contact\""));
+  EXPECT_LT(text.find("\"contact\""), text.find("\"elements\""));
 }
 
 TEST(ResultWriter, FailedDocumentAndHistoryRowsMatchTheirTrees) {

@@ -1,5 +1,5 @@
 // The restraint check against what it decides: the rigid-body modes each analysis allows, bodies
-// joined through gaps, nodes no element uses.
+// joined through gaps or contact pairs, nodes no element uses.
 #include <gtest/gtest.h>
 
 #include "support/mesh_builder.hpp"
@@ -61,6 +61,17 @@ TEST(RestraintCheck, BodiesWithoutGapsAreCheckedOneByOne) {
   ASSERT_EQ(issues.size(), 1U);  // the upper block floats
   EXPECT_EQ(issues[0].nodes.front(), b.upper.at(0, 0));
   EXPECT_EQ(issues[0].motions.size(), 3U);
+}
+
+TEST(RestraintCheck, AContactPairJoinsItsSurfacesBodiesLikeAClosedGap) {
+  // An axisymmetric body held only by being pressed onto another through contact surfaces.
+  TwoBlocks b(AnalysisType::axisymmetric, false);
+  constrain(b.model, b.lower.at(0, 0), std::nullopt, 0.0);
+  ASSERT_EQ(check_restraint(b.model).size(), 1U);  // the upper block is free in z
+  ContactSettings& contact = b.model.contact.emplace();
+  contact.surfaces = {{"lower", {{b.lower.at(0, 2), b.lower.at(1, 2)}}}, {"upper", {{b.upper.at(1, 0), b.upper.at(0, 0)}}}};
+  contact.pairs.emplace_back().surfaces = {0, 1};
+  EXPECT_TRUE(check_restraint(b.model).empty());
 }
 
 TEST(RestraintCheck, AxisymmetricBodyNeedsOnlyAnAxialConstraint) {

@@ -29,6 +29,29 @@ struct StackedBlocks {
 StackedBlocks stacked_blocks(AnalysisType analysis, double r0, double width, double height, double gap,
                              BlockFace lower, BlockFace upper, int layers);
 
+/// The patch test's cases (mortar_patch_test, surface_contact_test): non-matching faces of 5 graded
+/// segments (lower block) against 7 (upper), each analysis, either face as side A, touching (gap 0)
+/// or overlapping (an interference).
+struct PatchCase {
+  const char* name;
+  AnalysisType analysis;
+  bool lower_is_a;
+  double gap;
+};
+
+inline const std::vector<PatchCase>& patch_cases() {
+  static const std::vector<PatchCase> cases = {
+      {"plane stress, 5 on 7", AnalysisType::plane_stress, true, 0.0},
+      {"plane stress, 7 on 5", AnalysisType::plane_stress, false, 0.0},
+      {"plane strain, 5 on 7", AnalysisType::plane_strain, true, 0.0},
+      {"plane strain, 7 on 5, interference", AnalysisType::plane_strain, false, -0.01},
+      {"axisymmetric, 5 on 7", AnalysisType::axisymmetric, true, 0.0},
+      {"axisymmetric, 7 on 5", AnalysisType::axisymmetric, false, 0.0},
+      {"axisymmetric, 5 on 7, interference", AnalysisType::axisymmetric, true, -0.01},
+  };
+  return cases;
+}
+
 /// The edges of grid row j (nodes (i, j) - (i + 1, j)), i = 0..ni-1.
 std::vector<std::array<int, 2>> row_edges(const Grid& grid, int j);
 

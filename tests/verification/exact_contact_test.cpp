@@ -21,6 +21,7 @@
 #include "sparse_cholesky.hpp"
 #include "stiffness_system.hpp"
 #include "support/examples.hpp"
+#include "support/hertz_line_contact.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/quoted_figure.hpp"
 #include "support/ring_fit.hpp"
@@ -30,23 +31,8 @@ namespace {
 
 // ---- Hertz: a cylinder-like body (bottom z = g_c + x^2 / 2R) pressed onto a block, half model.
 
-constexpr double hertz_E = 1.0e7, hertz_nu = 0.3, hertz_R = 10.0, hertz_a = 0.2, hertz_size = 20.0 * hertz_a;
-const double hertz_E_star = hertz_E / (2.0 * (1.0 - hertz_nu * hertz_nu));
-const double hertz_P = hertz_a * hertz_a * std::numbers::pi * hertz_E_star / (4.0 * hertz_R);  // full model
-const double hertz_p0 = std::sqrt(hertz_P * hertz_E_star / (std::numbers::pi * hertz_R));
-
-/// Node coordinates 0..size: uniform steps h up to 1.6 a, then growing by 15 % per element.
-std::vector<double> graded(double h) {
-  std::vector<double> x{0.0};
-  while (x.back() < 1.6 * hertz_a - 1e-12) x.push_back(x.back() + h);
-  double step = h;
-  while (x.back() + step < hertz_size) {
-    step *= 1.15;
-    x.push_back(std::min(x.back() + step, hertz_size));
-  }
-  if (hertz_size - x.back() < 0.5 * step) x.back() = hertz_size; else x.push_back(hertz_size);
-  return x;
-}
+using testing::hertz_a, testing::hertz_E, testing::hertz_nu, testing::hertz_p0, testing::hertz_P, testing::hertz_R,
+    testing::hertz_size;
 
 struct Hertz {
   Model model;
@@ -59,7 +45,7 @@ Hertz hertz_model(double h) {
   Model& m = H.model;
   m.analysis = AnalysisType::plane_strain;
   m.materials = {testing::isotropic_material(1, hertz_E, hertz_nu)};
-  H.xs = graded(h);
+  H.xs = testing::hertz_graded(h);
   const std::vector<double>& xs = H.xs;
   const int n = static_cast<int>(xs.size()) - 1;
   const auto at = [&xs, n](double s) { return xs[static_cast<std::size_t>(std::lround(s * n))]; };

@@ -17,27 +17,14 @@
 #include "io/state_codec.hpp"
 #include "io/stored_state.hpp"
 #include "support/identical_solutions.hpp"
+#include "support/state_recorder.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/ring_fit.hpp"
 
 namespace saasgaps {
 namespace {
 
-/// Keeps every row and state, and stops after `stop_after` iterations (0: never).
-class Recorder : public IterationObserver {
- public:
-  explicit Recorder(int stop_after = 0) : stop_after_(stop_after) {}
-  void on_iteration(const IterationRecord& row, const RestartState& state) override {
-    rows.push_back(row);
-    states.push_back(state);
-  }
-  bool stop_requested() override { return stop_after_ > 0 && static_cast<int>(states.size()) >= stop_after_; }
-  std::vector<IterationRecord> rows;
-  std::vector<RestartState> states;
-
- private:
-  int stop_after_;
-};
+using Recorder = testing::StateRecorder;
 
 Model exact_ring_fit() {
   Model m = testing::quarter_ring_fit(AnalysisType::plane_stress, 3, 8);
@@ -209,7 +196,8 @@ TEST(LoadSteps, PlasticBarShowsLoadUnloadReloadInItsHistory) {
   }
   EXPECT_GT(load_iterations, 1);
   EXPECT_EQ(unload_last_iterations, 1);
-  // The reloaded bar ends where the first loading ended (the material law is a total-strain law).
+  // The reloaded bar ends where the first loading ended: reloading retraces the elastic unloading
+  // line up to the peak (solver/plastic_history.hpp).
   const Solution once = [&] {
     Bar c = bar(true);
     c.model.steps = {pull(c, "load", 2, d)};
@@ -237,7 +225,7 @@ void expect_exact_resumes(const Model& model, int minimum_iterations) {
     EXPECT_EQ(stopped.steps.back().status, StepStatus::not_converged);
     const RestartState& saved = first.states.back();
     ASSERT_TRUE(saved.position.has_value());
-    EXPECT_EQ(saved.version, RestartState::stepped_version);
+    EXPECT_EQ(saved.version, restart_version(model));
     EXPECT_EQ(*saved.position, *all.states[static_cast<std::size_t>(k - 1)].position);
 
     const RestartState from_json = io::state_from_json(io::state_to_json(saved, digest), digest);

@@ -168,27 +168,11 @@ Outcome pressed(const StackedBlocks& b, const Constraints& c) {
   return out;
 }
 
-struct Case {
-  const char* name;
-  AnalysisType analysis;
-  bool slave_below;
-  double gap;
-};
-
 TEST(MortarPatchTest, UniformPressureCrossesNonMatchingMeshesUnchanged) {
-  const std::vector<Case> cases = {
-      {"plane stress, 5 on 7", AnalysisType::plane_stress, true, 0.0},
-      {"plane stress, 7 on 5", AnalysisType::plane_stress, false, 0.0},
-      {"plane strain, 5 on 7", AnalysisType::plane_strain, true, 0.0},
-      {"plane strain, 7 on 5, interference", AnalysisType::plane_strain, false, -0.01},
-      {"axisymmetric, 5 on 7", AnalysisType::axisymmetric, true, 0.0},
-      {"axisymmetric, 7 on 5", AnalysisType::axisymmetric, false, 0.0},
-      {"axisymmetric, 5 on 7, interference", AnalysisType::axisymmetric, true, -0.01},
-  };
-  for (const Case& c : cases) {
+  for (const testing::PatchCase& c : testing::patch_cases()) {
     SCOPED_TRACE(c.name);
     const StackedBlocks b = blocks(c.analysis, c.gap);
-    const Outcome out = pressed(b, mortar_constraints(b, c.slave_below));
+    const Outcome out = pressed(b, mortar_constraints(b, c.lower_is_a));
     EXPECT_LT(out.stress_error, 1e-8);
     EXPECT_LT(out.pressure_error, 1e-8);
     EXPECT_LT(out.residual_gap, 1e-12);

@@ -9,21 +9,12 @@
 #include "io/stored_state.hpp"
 #include "support/examples.hpp"
 #include "support/identical_solutions.hpp"
+#include "support/state_recorder.hpp"
 
 namespace saasgaps {
 namespace {
 
-/// Keeps the state of every iteration and stops after `stop_after` iterations (0: never).
-class Recorder : public IterationObserver {
- public:
-  explicit Recorder(int stop_after = 0) : stop_after_(stop_after) {}
-  void on_iteration(const IterationRecord&, const RestartState& state) override { states.push_back(state); }
-  bool stop_requested() override { return stop_after_ > 0 && static_cast<int>(states.size()) >= stop_after_; }
-  std::vector<RestartState> states;
-
- private:
-  int stop_after_;
-};
+using Recorder = testing::StateRecorder;
 
 class ExactRestart : public ::testing::TestWithParam<const char*> {};
 

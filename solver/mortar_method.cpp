@@ -1,0 +1,163 @@
+#include "mortar_method.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "plural.hpp"
+
+namespace saasgaps {
+
+const char* to_string(ContactPointState state) {
+  switch (state) {
+    case ContactPointState::open: return "open";
+    case ContactPointState::stick: return "stick";
+    case ContactPointState::slip: return "slip";
+  }
+  return "?";
+}
+
+SurfaceContact surface_contact(const Model& model) {
+  SurfaceContact out;
+  if (!model.contact) return out;
+  for (const SurfaceDefinition& s : model.contact->surfaces) out.surfaces.push_back(contact_surface(model, s.edges));
+  const SurfaceMeasure measure{model.analysis, model.thickness};
+  for (const SurfacePair& pair : model.contact->pairs) {
+    MortarRows rows = mortar_rows(model.nodes, measure, out.surfaces[static_cast<std::size_t>(pair.surfaces[0])],
+                                  out.surfaces[static_cast<std::size_t>(pair.surfaces[1])]);
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      // Divided by D_j: a gap in length units whose multiplier is a force (mortar_method.hpp).
+      ContactPair p;
+      const double D = rows.weight[r];
+      for (std::size_t e = rows.start[r]; e < rows.start[r + 1]; ++e) {
+        p.node.push_back(rows.node[e]);
+        p.weight.push_back(rows.mortar[e] / D);
+      }
+      p.normal = rows.normal[r];
+      p.g0 = rows.g0[r] / D;
+      p.area = D;
+      out.pairs.pairs.push_back(std::move(p));
+    }
+    out.rows.push_back(std::move(rows));
+    out.first.push_back(out.pairs.pairs.size());
+  }
+  return out;
+}
+
+Cliques contact_couplings(const SurfaceContact& surfaces, const DofMap& dofs) {
+  Cliques cliques;
+  std::vector<Index> equations;
+  for (const ContactPair& p : surfaces.pairs.pairs) {
+    equations.clear();
+    for (const int node : p.node) {
+      for (int dir = 0; dir < 2; ++dir) equations.push_back(dofs.equation(node, dir));
+    }
+    cliques.add(equations);  // prescribed components (-1) are skipped by the Assembler
+  }
+  return cliques;
+}
+
+std::vector<ContactPairResult> contact_pair_results(const Model& model, const SurfaceContact& surfaces,
+                                                    std::size_t offset, const ContactState& contact,
+                                                    std::span<const double> displacement) {
+  std::vector<ContactPairResult> out;
+  const bool solved = contact.force.size() == offset + surfaces.pairs.pairs.size();
+  for (std::size_t k = 0; k < surfaces.pair_count(); ++k) {
+    const SurfacePair& pair = model.contact->pairs[k];
+    ContactPairResult result;
+    for (int side = 0; side < 2; ++side) {
+      result.surfaces[static_cast<std::size_t>(side)] =
+          model.contact->surfaces[static_cast<std::size_t>(pair.surfaces[static_cast<std::size_t>(side)])].name;
+    }
+    for (std::size_t i = surfaces.first[k]; i < surfaces.first[k + 1]; ++i) {
+      const ContactPair& row = surfaces.pairs.pairs[i];
+      const Node& node = model.nodes[static_cast<std::size_t>(row.node[0])];
+      ContactPointResult point;
+      point.r = node.r;
+      point.z = node.z;
+      point.gap = displacement.empty() ? row.g0 : gap_function(row, displacement);
+      const bool touching = solved && contact.active[offset + i];
+      point.pressure = touching ? std::max(0.0, contact.force[offset + i]) / row.area : 0.0;
+      point.state = touching ? ContactPointState::stick : ContactPointState::open;
+      result.points.push_back(point);
+    }
+    out.push_back(std::move(result));
+  }
+  return out;
+}
+
+MortarMethod::MortarMethod(const ContactSetup& setup, const SurfaceContact& surfaces,
+                           std::unique_ptr<ContactMethod> gaps, bool rows_solved_by_gaps)
+    : model_(setup.model), surfaces_(surfaces), gaps_(std::move(gaps)) {
+  if (!rows_solved_by_gaps) exact_.emplace(setup.model, setup.dofs, setup.pattern, surfaces.pairs);
+}
+
+void MortarMethod::begin_iteration(RestartState& state, StiffnessSystem& system) {
+  if (gaps_) gaps_->begin_iteration(state, system);
+}
+
+void MortarMethod::solve(SparseCholesky& cholesky, std::span<const double> values, std::span<const double> rhs,
+                         RestartState& state, std::span<double> u) {
+  if (!exact_) {
+    gaps_->solve(cholesky, values, rhs, state, u);
+    return;
+  }
+  report_ = exact_->solve(cholesky, values, rhs, state.contact, u);
+}
+
+void MortarMethod::evaluate(RestartState& state, ContactOutcome& outcome) const {
+  if (gaps_) {
+    gaps_->evaluate(state, outcome);
+  } else {
+    outcome = ContactOutcome{};
+  }
+}
+
+void MortarMethod::check_solved(const RestartState& state, const ContactOutcome& outcome) const {
+  if (gaps_) gaps_->check_solved(state, outcome);
+}
+
+void MortarMethod::add_columns(const RestartState& state, IterationRecord& row) const {
+  if (gaps_) gaps_->add_columns(state, row);
+  if (!exact_) return;
+  row.contact_pairs = report_.pairs_in_contact;
+  row.complementarity = report_.complementarity;
+  row.active_set_iterations = report_.active_set_iterations;
+}
+
+void MortarMethod::add_nodal_forces(const RestartState& state, std::span<double> forces) const {
+  if (gaps_) gaps_->add_nodal_forces(state, forces);
+  if (exact_) exact_->add_nodal_forces(state.contact, forces);
+}
+
+std::string MortarMethod::converged_note(const RestartState& state, const ContactOutcome& outcome) const {
+  std::ostringstream text;
+  if (gaps_) text << gaps_->converged_note(state, outcome);
+  // The rows come last in state.contact (after the exact gaps' node pairs, when those solve them).
+  const std::size_t rows = surfaces_.pairs.pairs.size();
+  const std::size_t offset = state.contact.active.size() >= rows ? state.contact.active.size() - rows : 0;
+  std::size_t touching = 0;
+  for (std::size_t i = offset; i < state.contact.active.size(); ++i) touching += state.contact.active[i];
+  text << " (contact surfaces: " << touching << " of " << plural(static_cast<long long>(rows), "point")
+       << " in contact";
+  if (exact_ && !state.history.empty()) text << ", complementarity residual " << state.history.back().complementarity;
+  text << ")";
+  // A pair without rows can never touch: most likely the wrong surfaces, or surfaces facing away.
+  for (std::size_t k = 0; k < surfaces_.pair_count(); ++k) {
+    if (surfaces_.first[k] != surfaces_.first[k + 1]) continue;
+    const auto& pair = model_.contact->pairs[k].surfaces;
+    text << "; warning: the surfaces of contact pair " << k + 1 << " (\""
+         << model_.contact->surfaces[static_cast<std::size_t>(pair[0])].name << "\", \""
+         << model_.contact->surfaces[static_cast<std::size_t>(pair[1])].name
+         << "\") never face each other (no node of the first faces the second), so they cannot touch";
+  }
+  return text.str();
+}
+
+std::vector<ContactPairResult> MortarMethod::surface_results(const RestartState& state) const {
+  // The rows come after the exact gaps' node pairs when those solve them.
+  const std::size_t rows = surfaces_.pairs.pairs.size();
+  const std::size_t offset = state.contact.force.size() >= rows ? state.contact.force.size() - rows : 0;
+  return contact_pair_results(model_, surfaces_, offset, state.contact, state.displacement);
+}
+
+}  // namespace saasgaps

@@ -1,0 +1,409 @@
+// Contact surfaces (model.contact) through the full solve(): the mortar rows solved exactly by the
+// active-set solver of the exact gap mode, on non-matching meshes.
+//
+// - The contact patch test: two stacked blocks meeting on a face of 5 graded segments against 7, a
+//   uniform pressure p on top: every element's stress is (0, -p, 0) and every contact point's
+//   pressure p, to 1e-8 relative, in plane stress, plane strain and axisymmetry, either side as A,
+//   touching or with an initial interference.
+// - A Lame shrink fit with non-matching meshes and a negative clearance (an interference), against
+//   the closed form derived below, within 0.3 % (axisymmetric slice: a straight interface; curved
+//   plane interfaces on non-matching meshes are not yet that accurate, see the last test).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "analysis.hpp"
+#include "element_kernel.hpp"
+#include "io/state_codec.hpp"
+#include "support/hertz_line_contact.hpp"
+#include "support/identical_solutions.hpp"
+#include "support/state_recorder.hpp"
+#include "support/mesh_builder.hpp"
+#include "support/stacked_blocks.hpp"
+
+namespace saasgaps {
+namespace {
+
+using testing::BlockFace;
+using testing::StackedBlocks;
+
+constexpr double pressure = 250.0;
+constexpr int layers = 3;
+
+Vec2 position(const Model& m, int node) {
+  return {m.nodes[static_cast<std::size_t>(node)].r, m.nodes[static_cast<std::size_t>(node)].z};
+}
+
+/// Adds the consistent nodal loads of a uniform traction on the given edges.
+void add_traction(Model& m, const std::vector<std::array<int, 2>>& edges, const Vec2& traction) {
+  for (const auto& e : edges) {
+    const auto loads = edge_traction_loads(position(m, e[0]), position(m, e[1]), traction, m.analysis, m.thickness);
+    for (std::size_t k = 0; k < 2; ++k) m.loads.nodal_forces.push_back({e[k], loads[k].x(), loads[k].y()});
+  }
+}
+
+/// The patch test's model: the lower block's bottom held in z, in plane analyses one node of each
+/// block in r (the upper block is held in z by contact alone). With `gaps`: the lower block rests
+/// instead on a support block (held in z at its bottom) across a row of gap elements of that method,
+/// 0.001 apart.
+Model patch_model(AnalysisType analysis, double gap, bool lower_is_a, std::optional<GapMethod> gaps = std::nullopt) {
+  StackedBlocks b = testing::stacked_blocks(analysis, 1.0, 2.0, 1.0, gap, BlockFace{5, 1.3}, BlockFace{7, 0.75}, layers);
+  Model& m = b.model;
+  if (gaps) {
+    const testing::Grid support = testing::add_grid(
+        m, b.lower.ni, 1, [](double s, double t) { return Vec2(1.0 + 2.0 * std::pow(s, 1.3), -0.001 - 0.5 * (1.0 - t)); },
+        0);
+    std::vector<int> below, above;
+    for (int i = 0; i <= b.lower.ni; ++i) {
+      below.push_back(support.at(i, 1));
+      above.push_back(b.lower.at(i, 0));
+      testing::constrain(m, support.at(i, 0), std::nullopt, 0.0);
+    }
+    testing::add_gap_row(m, below, above, [](int) { return 90.0; });
+    m.gaps->method = *gaps;
+    m.gaps->initial_modulus = *gaps == GapMethod::exact ? 1.0e-3 : 1.0;
+    m.gaps->tensile_schedule = *gaps == GapMethod::exact ? std::vector<double>{1.0e-3} : std::vector<double>{1.0e2, 1.0, 1.0e-2};
+    if (analysis != AnalysisType::axisymmetric) testing::constrain(m, support.at(0, 0), 0.0, std::nullopt);
+    testing::fill_temperatures(m, 0.0);
+  }
+  ContactSettings& contact = m.contact.emplace();
+  contact.surfaces = {{"lower top", b.lower_top}, {"upper bottom", b.upper_bottom}};
+  SurfacePair pair;
+  pair.surfaces = lower_is_a ? std::array<int, 2>{0, 1} : std::array<int, 2>{1, 0};
+  contact.pairs = {pair};
+  add_traction(m, testing::row_edges(b.upper, layers), Vec2(0.0, -pressure));
+  if (!gaps) {
+    for (int i = 0; i <= b.lower.ni; ++i) testing::constrain(m, b.lower.at(i, 0), std::nullopt, 0.0);
+  }
+  if (analysis != AnalysisType::axisymmetric) {
+    testing::constrain(m, b.lower.at(0, 0), 0.0, std::nullopt);
+    testing::constrain(m, b.upper.at(0, layers), 0.0, std::nullopt);
+  }
+  return std::move(b.model);
+}
+
+TEST(SurfaceContact, PatchTestThroughSolve) {
+  for (const testing::PatchCase& c : testing::patch_cases()) {
+    SCOPED_TRACE(c.name);
+    const Model m = patch_model(c.analysis, c.gap, c.lower_is_a);
+    const Solution s = solve(m);
+    ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+    double stress_error = 0.0;
+    for (const ElementResult& e : s.elements) {
+      for (const double d : {e.stress[rr], e.stress[zz] + pressure, e.stress[rz]}) {
+        stress_error = std::max(stress_error, std::abs(d) / pressure);
+      }
+    }
+    EXPECT_LT(stress_error, 1e-8);
+    ASSERT_EQ(s.contact.size(), 1U);
+    EXPECT_EQ(s.contact[0].surfaces[0], c.lower_is_a ? "lower top" : "upper bottom");
+    ASSERT_EQ(s.contact[0].points.size(), c.lower_is_a ? 6U : 8U);
+    double previous_r = -1.0;
+    for (const ContactPointResult& p : s.contact[0].points) {
+      EXPECT_NEAR(p.pressure, pressure, 1e-8 * pressure);
+      EXPECT_EQ(p.state, ContactPointState::stick);
+      EXPECT_NEAR(p.gap, 0.0, 1e-12);
+      EXPECT_EQ(p.shear, 0.0);
+      EXPECT_EQ(p.slip, 0.0);
+      // Side A's chain runs with its material on the left: along -r on the lower block's top, along
+      // +r on the upper block's bottom.
+      if (previous_r >= 0.0) {
+        EXPECT_TRUE(c.lower_is_a ? p.r < previous_r : p.r > previous_r);
+      }
+      previous_r = p.r;
+    }
+  }
+}
+
+TEST(SurfaceContact, BlocksApartStayOpenWithoutPressure) {
+  // A clearance and no load: the upper block is held in z along its top instead.
+  Model m = patch_model(AnalysisType::plane_strain, 0.05, true);
+  m.loads.nodal_forces.clear();
+  double top = 0.0;
+  for (const Node& n : m.nodes) top = std::max(top, n.z);
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) {
+    if (m.nodes[n].z == top) testing::constrain(m, static_cast<int>(n), std::nullopt, 0.0);
+  }
+  const Solution s = solve(m);
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  for (const ContactPointResult& p : s.contact[0].points) {
+    EXPECT_EQ(p.state, ContactPointState::open);
+    EXPECT_EQ(p.pressure, 0.0);
+    EXPECT_NEAR(p.gap, 0.05, 1e-12);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Lame shrink fit. Inner ring a1..b of material 1, outer ring b..b2 of material 2, with an
+// interference delta: the inner ring's outer radius is b + delta/2, the outer ring's inner radius
+// b - delta/2. Lame: sigma_r = A - B/r^2, sigma_t = A + B/r^2, and in plane strain (also the
+// axisymmetric slice held in z)
+//   u(r) = (1 + nu) r / E [(1 - 2 nu) A + B / r^2],
+// in plane stress
+//   u(r) = r / E [(1 - nu) A + (1 + nu) B / r^2].
+// Inner ring under external pressure p: A = -p b^2 / (b^2 - a1^2), B = A a1^2, so u_i(b) = -p C_i;
+// outer ring under internal pressure p: A = p b^2 / (b2^2 - b^2), B = A b2^2, so u_o(b) = p C_o, with
+//   plane strain  C_i = (1 + nu1) b [(1 - 2 nu1) b^2 + a1^2] / (E1 (b^2 - a1^2)),
+//                 C_o = (1 + nu2) b [(1 - 2 nu2) b^2 + b2^2] / (E2 (b2^2 - b^2)),
+//   plane stress  C_i = b [(1 - nu1) b^2 + (1 + nu1) a1^2] / (E1 (b^2 - a1^2)),
+//                 C_o = b [(1 - nu2) b^2 + (1 + nu2) b2^2] / (E2 (b2^2 - b^2)).
+// The fit closes the overlap, u_o(b) - u_i(b) = delta:  p = delta / (C_i + C_o).
+// (Linear theory at the nominal radius b: the faces' radii differ by delta = 1e-4 b, a relative
+// effect of that order on p, far below the discretisation error measured.)
+
+constexpr double a1 = 1.0, b = 1.5, b2 = 2.2, delta = 1.5e-4;
+constexpr double E1 = 30.0e6, nu1 = 0.3, E2 = 10.0e6, nu2 = 0.33;
+
+double lame_interference_pressure(AnalysisType type) {
+  const bool stress = type == AnalysisType::plane_stress;
+  const double Ci = stress ? b * ((1 - nu1) * b * b + (1 + nu1) * a1 * a1) / (E1 * (b * b - a1 * a1))
+                           : (1 + nu1) * b * ((1 - 2 * nu1) * b * b + a1 * a1) / (E1 * (b * b - a1 * a1));
+  const double Co = stress ? b * ((1 - nu2) * b * b + (1 + nu2) * b2 * b2) / (E2 * (b2 * b2 - b * b))
+                           : (1 + nu2) * b * ((1 - 2 * nu2) * b * b + b2 * b2) / (E2 * (b2 * b2 - b * b));
+  return delta / (Ci + Co);
+}
+
+/// A ring r0..r1 meshed on its own: `radial` x `around` quadrilaterals. Plane: the whole ring,
+/// closed round (grid row `around` is row 0). Axisymmetric: a slice of height h along z.
+testing::Grid add_ring(Model& m, double r0, double r1, int radial, int around, int material) {
+  const bool plane = m.analysis != AnalysisType::axisymmetric;
+  constexpr double h = 0.2;
+  testing::Grid g = testing::add_grid(
+      m, radial, around,
+      [&](double s, double t) {
+        const double r = r0 + (r1 - r0) * s;
+        if (!plane) return Vec2(r, h * t);
+        const double angle = 2.0 * std::numbers::pi * t;
+        return Vec2(r * std::cos(angle), r * std::sin(angle));
+      },
+      material);
+  if (!plane) return g;
+  // Close the ring: the last row of nodes (added last) is the first one.
+  for (int i = 0; i <= radial; ++i) {
+    const int last = g.at(i, around), first = g.at(i, 0);
+    for (Element& e : m.elements) std::replace(e.nodes.begin(), e.nodes.end(), last, first);
+    g.nodes[static_cast<std::size_t>(i + (radial + 1) * around)] = first;
+  }
+  m.nodes.resize(m.nodes.size() - static_cast<std::size_t>(radial + 1));
+  return g;
+}
+
+/// The shrink fit, the two rings meshed on their own (`around` the interface: inner, outer; plane:
+/// multiples of 4). Plane: each ring held at its inner radius in z at 0 and 180 degrees and in r at
+/// 90 degrees (no rigid motion, and nothing against the symmetric expansion). Axisymmetric: every
+/// node held in z (the plane-strain state of a long fit).
+Model shrink_fit(AnalysisType type, int radial, std::array<int, 2> around) {
+  Model m;
+  m.analysis = type;
+  m.materials = {testing::isotropic_material(1, E1, nu1), testing::isotropic_material(2, E2, nu2)};
+  const testing::Grid inner = add_ring(m, a1, b + 0.5 * delta, radial, around[0], 0);
+  const testing::Grid outer = add_ring(m, b - 0.5 * delta, b2, radial, around[1], 1);
+  ContactSettings& contact = m.contact.emplace();
+  contact.surfaces = {{"shaft", testing::column_edges(inner, radial)}, {"hub", testing::column_edges(outer, 0)}};
+  contact.pairs.emplace_back().surfaces = {0, 1};
+  for (const testing::Grid* g : {&inner, &outer}) {
+    if (type == AnalysisType::axisymmetric) {
+      for (const int n : g->nodes) testing::constrain(m, n, std::nullopt, 0.0);
+      continue;
+    }
+    testing::constrain(m, g->at(0, 0), std::nullopt, 0.0);
+    testing::constrain(m, g->at(0, g->nj / 2), std::nullopt, 0.0);
+    testing::constrain(m, g->at(0, g->nj / 4), 0.0, std::nullopt);
+  }
+  testing::fill_temperatures(m, 0.0);
+  return m;
+}
+
+/// The mean contact pressure of the fit's points, relative to the closed form, minus one.
+double fit_error(AnalysisType type, int radial, std::array<int, 2> around) {
+  const Solution s = solve(shrink_fit(type, radial, around));
+  EXPECT_EQ(s.status, RunStatus::converged) << s.message;
+  const double p = lame_interference_pressure(type);
+  double worst = 0.0;
+  for (const ContactPointResult& point : s.contact.at(0).points) {
+    EXPECT_EQ(point.state, ContactPointState::stick);
+    worst = std::max(worst, std::abs(point.pressure / p - 1.0));
+  }
+  return worst;
+}
+
+TEST(SurfaceContact, LameShrinkFitOnNonMatchingMeshes) {
+  // The axisymmetric slice: the interface is straight along z, meshed with 12 against 20 segments
+  // (and 24 against 40), either ring as side A.
+  const AnalysisType axi = AnalysisType::axisymmetric;
+  const double coarse = fit_error(axi, 4, {12, 20});
+  const double fine = fit_error(axi, 8, {24, 40});
+  const double swapped = fit_error(axi, 8, {40, 24});
+  std::printf("axisymmetric shrink fit: worst pressure error %.3g %% (coarse), %.3g %% (fine), %.3g %% (A finer)\n",
+              100 * coarse, 100 * fine, 100 * swapped);
+  EXPECT_LT(fine, 0.003);
+  EXPECT_LT(swapped, 0.003);
+  EXPECT_LT(fine, coarse);
+}
+
+TEST(SurfaceContact, CurvedNonMatchingFitIsNotYetAccurate) {
+  // Known limitation (docs/contact-surfaces.md, "Curved interfaces"): a row's gap change uses one
+  // normal n_j over its whole support, so on a curved interface a radial motion of side B is
+  // under-counted by about (1 - cos) of the angle between A's and B's nodes, which varies from row to
+  // row; thick rings answer with a pressure that oscillates around the ring. On matching meshes the
+  // rows are exact. This test pins both facts, so that a fix shows here.
+  EXPECT_LT(fit_error(AnalysisType::plane_strain, 4, {48, 48}), 0.003);
+  EXPECT_GT(fit_error(AnalysisType::plane_strain, 4, {48, 80}), 0.01);
+}
+
+TEST(SurfaceContact, APairWhoseSurfacesNeverFaceEachOtherIsAWarning) {
+  // The lower block's top and the upper block's top both face +z: no point of one faces the other.
+  Model m = patch_model(AnalysisType::plane_strain, 0.0, true);
+  double top = 0.0;
+  for (const Node& n : m.nodes) top = std::max(top, n.z);
+  std::vector<std::array<int, 2>> upper_top;
+  for (const Element& e : m.elements) {
+    for (int k = 0; k < e.node_count; ++k) {
+      const int from = e.nodes[static_cast<std::size_t>(k)], to = e.nodes[static_cast<std::size_t>((k + 1) % e.node_count)];
+      if (m.nodes[static_cast<std::size_t>(from)].z == top && m.nodes[static_cast<std::size_t>(to)].z == top) {
+        upper_top.push_back({from, to});
+      }
+    }
+  }
+  m.contact->surfaces.push_back({"upper top", upper_top});
+  m.contact->pairs.emplace_back().surfaces = {0, 2};
+  const Solution s = solve(m);
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  EXPECT_NE(s.message.find("warning: the surfaces of contact pair 2 (\"lower top\", \"upper top\") never face each other"),
+            std::string::npos)
+      << s.message;
+  ASSERT_EQ(s.contact.size(), 2U);
+  EXPECT_TRUE(s.contact[1].points.empty());
+  EXPECT_EQ(s.message.find("pair 1"), std::string::npos);  // the first pair faces
+}
+
+TEST(SurfaceContact, WorksWithGapElementsOfEitherMethod) {
+  // The patch test's blocks, the lower one resting on a support across a row of gap elements: the
+  // load crosses the contact surfaces and then the gaps. Exact gaps: one active set holds the node
+  // pairs and the surfaces' rows; the floor springs (1e-3, closed by their whole clearance) carry
+  // 1e-3 of the 250 per unit area. Classic gaps: the report's iteration of the moduli, the rows solved
+  // exactly in each iteration.
+  for (const GapMethod method : {GapMethod::exact, GapMethod::classic}) {
+    SCOPED_TRACE(method == GapMethod::exact ? "exact gaps" : "classic gaps");
+    const Model m = patch_model(AnalysisType::plane_strain, 0.0, true, method);
+    const Solution s = solve(m);
+    ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+    ASSERT_EQ(s.contact.size(), 1U);
+    const double tolerance = method == GapMethod::exact ? 1e-5 : 1e-2;
+    for (const ContactPointResult& p : s.contact[0].points) {
+      EXPECT_EQ(p.state, ContactPointState::stick);
+      EXPECT_NEAR(p.pressure, pressure, tolerance * pressure);
+    }
+    for (const GapResult& g : s.gaps) EXPECT_EQ(g.state, GapState::closed) << "gap " << g.id;
+    std::printf("%s: %s\n", method == GapMethod::exact ? "exact" : "classic", s.message.c_str());
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Hertz, plane strain (support/hertz_line_contact.hpp), for bodies large against a (20 a). Half model (symmetry at x = 0): a block, and a body whose
+// bottom is the cylinder's parabola z = x^2 / 2R, meshed on their own (a / 25 against a / 18 near the
+// contact). Side A is the block's flat top.
+
+using testing::hertz_a, testing::hertz_E, testing::hertz_nu, testing::hertz_p0, testing::hertz_P, testing::hertz_R,
+    testing::hertz_size;
+
+Model hertz_model() {
+  Model m;
+  m.analysis = AnalysisType::plane_strain;
+  m.materials = {testing::isotropic_material(1, hertz_E, hertz_nu)};
+  const std::vector<double> xb = testing::hertz_graded(hertz_a / 25.0), xc = testing::hertz_graded(hertz_a / 18.0);
+  const auto at = [](const std::vector<double>& xs, double s) {
+    return xs[static_cast<std::size_t>(std::lround(s * static_cast<double>(xs.size() - 1)))];
+  };
+  const int nb = static_cast<int>(xb.size()) - 1, nc = static_cast<int>(xc.size()) - 1;
+  const testing::Grid block =
+      testing::add_grid(m, nb, nb, [&](double s, double t) { return Vec2(at(xb, s), -at(xb, 1.0 - t)); }, 0);
+  const testing::Grid body = testing::add_grid(
+      m, nc, nc,
+      [&](double s, double t) {
+        const double x = at(xc, s), z0 = x * x / (2.0 * hertz_R);
+        return Vec2(x, z0 + at(xc, t) * (hertz_size - z0) / hertz_size);
+      },
+      0);
+  ContactSettings& contact = m.contact.emplace();
+  contact.surfaces = {{"block", testing::row_edges(block, nb)}, {"cylinder", testing::row_edges(body, 0)}};
+  contact.pairs.emplace_back().surfaces = {0, 1};
+  testing::fill_temperatures(m, 0.0);
+  for (int i = 0; i <= nb; ++i) testing::constrain(m, block.at(i, 0), std::nullopt, 0.0);
+  for (int j = 0; j <= nb; ++j) testing::constrain(m, block.at(0, j), 0.0, std::nullopt);  // symmetry about x = 0
+  for (int j = 0; j <= nc; ++j) testing::constrain(m, body.at(0, j), 0.0, std::nullopt);
+  // Half the load, a uniform pressure on the body's top.
+  add_traction(m, testing::row_edges(body, nc), Vec2(0.0, -0.5 * hertz_P / hertz_size));
+  return m;
+}
+
+TEST(SurfaceContact, HertzCylinderOnABlockWithNonMatchingMeshes) {
+  const Model m = hertz_model();
+  const Solution s = solve(m);
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  const std::vector<ContactPointResult>& points = s.contact.at(0).points;
+  // Fit p^2 = p0^2 (1 - x^2 / a^2) over the touching points well inside the contact; the resultant
+  // is the sum of pressure x the point's share of the (flat) face.
+  double sxx = 0, sx = 0, sy = 0, sxy = 0, count = 0, peak = 0.0, resultant = 0.0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const ContactPointResult& p = points[k];
+    const double left = k > 0 ? std::abs(points[k - 1].r - p.r) : 0.0;
+    const double right = k + 1 < points.size() ? std::abs(points[k + 1].r - p.r) : 0.0;
+    resultant += p.pressure * 0.5 * (left + right) * m.thickness;
+    if (p.r == 0.0) peak = p.pressure;
+    if (p.state != ContactPointState::stick || p.r > 0.8 * hertz_a) continue;
+    const double X = p.r * p.r, Y = p.pressure * p.pressure;
+    sx += X, sy += Y, sxx += X * X, sxy += X * Y, count += 1;
+  }
+  const double slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
+  const double intercept = (sy - slope * sx) / count;
+  const double a = std::sqrt(-intercept / slope);
+  std::printf("Hertz on surfaces: peak %.5g vs %.5g (%.3g %%), a %.5g vs %.5g (%.3g %%), resultant %.3g %%\n", peak,
+              hertz_p0, 100 * (peak / hertz_p0 - 1), a, hertz_a, 100 * (a / hertz_a - 1),
+              100 * (resultant / (0.5 * hertz_P) - 1));
+  EXPECT_LT(std::abs(peak / hertz_p0 - 1.0), 0.015);
+  EXPECT_LT(std::abs(a / hertz_a - 1.0), 0.015);
+  // The body is held in z by contact alone: the rows carry the whole load, to round-off.
+  EXPECT_LT(std::abs(resultant / (0.5 * hertz_P) - 1.0), 1e-8);
+}
+
+TEST(SurfaceContact, AResumedRunEqualsTheUninterruptedOne) {
+  // The patch test's blocks with an initial clearance the load closes, pressed in one step of three
+  // increments (the first closes part of the face, the others the rest): stopped after each
+  // iteration, saved through the JSON and CBOR codecs and resumed, every number is the same.
+  Model m = patch_model(AnalysisType::axisymmetric, 1.0e-5, false);
+  Step step;
+  step.name = "press";
+  step.increments = 3;
+  m.steps = {step};
+  const Solution uninterrupted = solve(m);
+  ASSERT_EQ(uninterrupted.status, RunStatus::converged) << uninterrupted.message;
+  ASSERT_GE(uninterrupted.iterations, 3);
+  for (int k = 1; k < uninterrupted.iterations; ++k) {
+    SCOPED_TRACE("stopped after iteration " + std::to_string(k));
+    testing::StateRecorder first(k);
+    ASSERT_EQ(solve(m, &first).status, RunStatus::stopped);
+    const RestartState& saved = first.states.back();
+    ASSERT_FALSE(saved.contact.empty());
+    const RestartState from_json = io::state_from_json(io::state_to_json(saved, "digest"), "digest");
+    const Solution resumed = solve(m, nullptr, &from_json);
+    testing::expect_identical(resumed, uninterrupted);
+    const RestartState from_cbor = io::state_from_cbor(io::state_to_cbor(saved, "digest"), "digest");
+    const Solution resumed_cbor = solve(m, nullptr, &from_cbor);
+    ASSERT_EQ(resumed.contact.size(), uninterrupted.contact.size());
+    for (const Solution* r : {&resumed, &resumed_cbor}) {
+      for (std::size_t i = 0; i < uninterrupted.contact[0].points.size(); ++i) {
+        const ContactPointResult& got = r->contact[0].points[i];
+        const ContactPointResult& want = uninterrupted.contact[0].points[i];
+        EXPECT_EQ(got.pressure, want.pressure);
+        EXPECT_EQ(got.gap, want.gap);
+        EXPECT_EQ(got.state, want.state);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace saasgaps
