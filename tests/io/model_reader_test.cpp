@@ -1319,6 +1319,8 @@ TEST(ModelReaderRules, FrictionIsNotImplementedYetAndConductanceIsChecked) {
 
 TEST(ModelReader, ContactChangesTheModelDigest) {
   EXPECT_NE(model_digest(with_contact()), model_digest(valid_model()));
+}
+
 // Heat conduction (thermal section, k and c, gap conductance)
 
 /// The minimal model with conductivity and a steady thermal section: edge 1-2 held at 500, a film
