@@ -22,11 +22,12 @@ ExactContact::ExactContact(const Model& model, const DofMap& dofs, const CscPatt
     row.g0 = p.g0;
     row.first = entries_.size();
     for (std::size_t k = 0; k < p.node.size(); ++k) {
+      const Vec2 c = p.coefficient(k);
       for (int dir = 0; dir < 2; ++dir) {
         // cos(90 degrees) is 6e-17, not 0: such a component is no coupling (and would give a pair
         // whose only free unknown is across the normal a vanishing penalty).
-        const double coefficient = p.weight[k] * p.normal[dir];
-        if (std::abs(coefficient) <= 1.0e-12 * std::abs(p.weight[k])) continue;
+        const double coefficient = c[dir];
+        if (std::abs(coefficient) <= 1.0e-12 * c.norm()) continue;
         const Index eq = dofs.equation(p.node[k], dir);
         if (eq >= 0) {
           entries_.push_back({eq, coefficient});

@@ -30,6 +30,7 @@
 
 #include "contact_surface.hpp"
 #include "model.hpp"
+#include "segment_bins.hpp"
 #include "voigt.hpp"
 
 namespace saasgaps {
@@ -93,7 +94,13 @@ inline constexpr double min_covered_fraction = 1.0e-3;
 /// The rows coupling side A (slave) to side B (master). Each piece of A is paired with the nearest
 /// (along n) segment of B that faces it (segment normals opposed); no distance limit, so a row whose
 /// initial gap is large just never becomes active. Nodes of A that face nothing give no row.
+///
+/// Pairing: master segments are found by a search over bins (segment_bins.hpp), O(1) per slave
+/// segment and node where the sides face each other; all_against_all tries every master segment
+/// (the reference the search is tested against: both give the same rows).
+enum class Pairing { search, all_against_all };
+
 MortarRows mortar_rows(const std::vector<Node>& nodes, const SurfaceMeasure& measure, const ContactSurface& slave,
-                       const ContactSurface& master);
+                       const ContactSurface& master, Pairing pairing = Pairing::search);
 
 }  // namespace saasgaps
