@@ -167,7 +167,9 @@ TEST(MortarRows, AreConsistentOnNonMatchingGradedMeshes) {
         const bool on_slave = std::ranges::any_of(slave, [&](const auto& edge) {
           return edge[0] == rows.node[e] || edge[1] == rows.node[e];
         });
-        if (on_slave && e > rows.start[r]) EXPECT_EQ(rows.mortar[e], 0.0);
+        if (on_slave && e > rows.start[r]) {
+          EXPECT_EQ(rows.mortar[e], 0.0);
+        }
         if (!on_slave) masters.push_back(rows.node[e]);
       }
       EXPECT_NEAR(sum, 0.0, 1e-14 * D) << "row " << r;

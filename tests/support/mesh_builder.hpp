@@ -24,7 +24,7 @@ Grid add_grid(Model& model, int ni, int nj, const std::function<Vec2(double, dou
 
 /// A ring r0..r1 meshed on its own: `radial` x `around` quadrilaterals (grid i radial, j round).
 /// Plane analyses: the whole ring about the origin, closed round (grid row `around` is row 0, so
-/// column_edges(g, i) is a closed chain). Axisymmetric: a slice r0..r1 of height 0.2 along z.
+/// column_edges(g, i) of stacked_blocks.hpp is a closed chain). Axisymmetric: a slice r0..r1 of height 0.2 along z.
 Grid add_ring(Model& m, double r0, double r1, int radial, int around, int material);
 
 /// Adds gap elements joining two node rows a[k] (one face) and b[k] (other face), k = 0..n,
