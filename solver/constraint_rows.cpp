@@ -24,14 +24,21 @@ ConstraintRows::ConstraintRows(const DofMap& dofs, const CscPattern& pattern) : 
 std::size_t ConstraintRows::add(std::span<const int> nodes, std::span<const double> weights, const Vec2& direction,
                                 double g0) {
   assert(nodes.size() == weights.size());
+  std::vector<Vec2> coefficients(nodes.size());
+  for (std::size_t k = 0; k < nodes.size(); ++k) coefficients[k] = weights[k] * direction;
+  return add(nodes, coefficients, g0);
+}
+
+std::size_t ConstraintRows::add(std::span<const int> nodes, std::span<const Vec2> coefficients, double g0) {
+  assert(nodes.size() == coefficients.size());
   Row row;
   row.first = entries_.size();
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     for (int dir = 0; dir < 2; ++dir) {
       // cos(90 degrees) is 6e-17, not 0: such a component is no coupling (and would give a row
       // whose only free unknown is across the direction a vanishing penalty).
-      const double coefficient = weights[k] * direction[dir];
-      if (std::abs(coefficient) <= 1.0e-12 * std::abs(weights[k])) continue;
+      const double coefficient = coefficients[k][dir];
+      if (std::abs(coefficient) <= 1.0e-12 * coefficients[k].norm()) continue;
       const Index eq = dofs_.equation(nodes[k], dir);
       if (eq >= 0) {
         entries_.push_back({eq, coefficient});

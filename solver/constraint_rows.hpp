@@ -61,6 +61,10 @@ class ConstraintRows {
   /// Appends the row g = g0 + direction . sum_k weight_k u_{node_k}; returns its index. Components
   /// along direction below 1e-12 of the weight are no coupling (cos 90 degrees is 6e-17, not 0).
   std::size_t add(std::span<const int> nodes, std::span<const double> weights, const Vec2& direction, double g0);
+  /// Appends the row g = g0 + sum_k c_k . u_{node_k}, a direction per node (a row whose direction
+  /// varies along its support, as mortar rows on a curved interface do); returns its index.
+  /// Components below 1e-12 of |c_k| are no coupling.
+  std::size_t add(std::span<const int> nodes, std::span<const Vec2> coefficients, double g0);
 
   [[nodiscard]] std::size_t size() const { return rows_.size(); }
   /// True when every unknown of the row is prescribed: nothing to enforce.

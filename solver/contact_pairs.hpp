@@ -33,6 +33,12 @@ struct ContactPair {
   /// the full ring 2 pi r in axisymmetry; for a quad the mean of its two faces; for a triangle half its
   /// edge's area).
   double area = 0.0;
+  /// Optional, per node: the gradient (dg/du_r, dg/du_z) of the gap, when the row's direction varies
+  /// along it (contact surfaces integrate the gap along a normal field: mortar_coupling.hpp). Empty:
+  /// the gradient is weight[k] * normal.
+  std::vector<Vec2> gradient;
+
+  [[nodiscard]] Vec2 coefficient(std::size_t k) const { return gradient.empty() ? Vec2(weight[k] * normal) : gradient[k]; }
 };
 
 /// g_i(u) of a pair for the full displacement vector (u_r, u_z per node, prescribed ones included).

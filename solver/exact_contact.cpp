@@ -15,7 +15,11 @@ namespace saasgaps {
 
 ExactContact::ExactContact(const Model& model, const DofMap& dofs, const CscPattern& pattern, ContactPairs pairs)
     : model_(model), pairs_(std::move(pairs)), rows_(dofs, pattern) {
-  for (const ContactPair& p : pairs_.pairs) rows_.add(p.node, p.weight, p.normal, p.g0);
+  for (const ContactPair& p : pairs_.pairs) {
+    std::vector<Vec2> coefficients(p.node.size());
+    for (std::size_t k = 0; k < p.node.size(); ++k) coefficients[k] = p.coefficient(k);
+    rows_.add(p.node, coefficients, p.g0);
+  }
 }
 
 ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const double> values,
@@ -128,8 +132,9 @@ void ExactContact::add_nodal_forces(const ContactState& state, std::span<double>
     const ContactPair& pair = pairs[i];
     for (std::size_t k = 0; k < pair.node.size(); ++k) {
       const auto node = static_cast<std::size_t>(pair.node[k]);
-      forces[2 * node] += state.force[i] * pair.weight[k] * pair.normal[0];
-      forces[2 * node + 1] += state.force[i] * pair.weight[k] * pair.normal[1];
+      const Vec2 c = pair.coefficient(k);
+      forces[2 * node] += state.force[i] * c[0];
+      forces[2 * node + 1] += state.force[i] * c[1];
     }
   }
 }

@@ -10,13 +10,16 @@
 /// with dA = w ds, w = t or 2 pi r. The gap of a point of A is measured along A's normal field
 /// n(xi) = normalize((1 - xi) n_1 + xi n_2), n_j the nodal normals (contact_surface.hpp). Then node j of
 /// A gives ONE constraint row, its weighted gap
-///   g_j = int_A psi_j n_j . (x_B - x_A) dA = n_j . (sum_k M_jk x_k - D_j x_j),
+///   g_j = int_A psi_j n(xi) . (x_B - x_A) dA,
 ///   D_j  = int_A psi_j N_j dA = int_A N_j dA    (diagonal: biorthogonality),
 ///   M_jk = int_A psi_j N_k^B dA                 (k over B's nodes),
-/// linear in the displacements: g_j(u) = g0_j + sum_entries c . u_node. The initial gap is measured
+/// linear in the displacements: g_j(u) = g0_j + sum_k c_jk . u_k, with a vector c_jk per node of B,
+/// of node j and of its neighbours on A: c_jk = int_A psi_j (N_k^B v_B - N_k^A v_A) dA, v = n(xi)
+/// plus the bend of each side's smooth curve (its offset from the chord moves with the chord's
+/// stretch and rotation; docs/contact-surfaces.md). The initial gap is measured
 /// from the geometry the nodes sample, not from the polygons:
 ///   g0_j = D_j g_j,   g_j = distance from node j along n_j to B's smooth curve through its nodes
-/// (cubic offsets of B's chords matching B's nodal normals; corners of more than 30 degrees kept),
+/// (circular-arc offsets of B's chords matching B's nodal normals, exact on a circle; corners kept),
 /// which is int_A psi_j (N_1 g_1 + N_2 g_2) dA by biorthogonality. The polygons' own weighted gap,
 /// n_j . (sum_k M_jk x_k - D_j x_j), differs on curved non-matching sides by the chords' sags,
 /// about R (a_A^2 - a_B^2) / 12 for chord angles a_A, a_B on radius R: as large as a press fit's
@@ -30,6 +33,7 @@
 
 #include "contact_surface.hpp"
 #include "model.hpp"
+#include "segment_bins.hpp"
 #include "voigt.hpp"
 
 namespace saasgaps {
@@ -64,12 +68,13 @@ DualBasis dual_basis(const Vec2& x1, const Vec2& x2, std::span<const ParameterIn
 
 /// The constraint rows of one pair of surfaces, in CSR form, one row per node of A that faces B,
 /// in the order of A's chain. Row r holds entries [start[r], start[r + 1]): the node of A first
-/// (mortar = -D_j), then the nodes of B whose segments overlap the node's support (mortar = M_jk,
-/// by node index; a node on both sides has the sum). Units: g0 and the coefficients are length x area.
+/// (mortar = -D_j), then, by node index, its neighbours on A (mortar 0) and the nodes of B whose
+/// segments overlap the node's support (mortar = M_jk; a node on both sides has the sum). Units: g0
+/// and the coefficients are length x area.
 ///
 /// Dividing a row by its weight D_j gives a gap in length units, g_j / D_j, whose multiplier is a force
 /// (the exact mode's convention, contact_pairs.hpp): the contact pressure at node j is then
-/// force_j / D_j, and the row puts force_j M_jk / D_j n_j on each B node and -force_j n_j on node j.
+/// force_j / D_j, and the row puts force_j c_jk / D_j on each of its nodes.
 struct MortarRows {
   std::vector<int> slave_node;       ///< per row: the node j of A (index)
   std::vector<Vec2> normal;          ///< per row: n_j, A's nodal normal (unit, out of A)
@@ -78,7 +83,7 @@ struct MortarRows {
   std::vector<std::size_t> start{0};  ///< size rows + 1
   std::vector<int> node;             ///< per entry: node index
   std::vector<double> mortar;        ///< per entry: M_jk, or -D_j (plus M_jj if j is on both sides)
-  std::vector<Vec2> coefficient;     ///< per entry: mortar n_j = (d g_j / d u_r, d g_j / d u_z)
+  std::vector<Vec2> coefficient;     ///< per entry: c_jk = (d g_j / d u_r, d g_j / d u_z); M_jk n_j on flat sides
 
   [[nodiscard]] std::size_t size() const { return slave_node.size(); }
   /// g_j(u) = g0_j + sum over the row's entries of coefficient . u_node; displacement holds
@@ -93,7 +98,13 @@ inline constexpr double min_covered_fraction = 1.0e-3;
 /// The rows coupling side A (slave) to side B (master). Each piece of A is paired with the nearest
 /// (along n) segment of B that faces it (segment normals opposed); no distance limit, so a row whose
 /// initial gap is large just never becomes active. Nodes of A that face nothing give no row.
+///
+/// Pairing: master segments are found by a search over bins (segment_bins.hpp), O(1) per slave
+/// segment and node where the sides face each other; all_against_all tries every master segment
+/// (the reference the search is tested against: both give the same rows).
+enum class Pairing { search, all_against_all };
+
 MortarRows mortar_rows(const std::vector<Node>& nodes, const SurfaceMeasure& measure, const ContactSurface& slave,
-                       const ContactSurface& master);
+                       const ContactSurface& master, Pairing pairing = Pairing::search);
 
 }  // namespace saasgaps

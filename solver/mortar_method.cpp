@@ -31,6 +31,7 @@ SurfaceContact surface_contact(const Model& model) {
       for (std::size_t e = rows.start[r]; e < rows.start[r + 1]; ++e) {
         p.node.push_back(rows.node[e]);
         p.weight.push_back(rows.mortar[e] / D);
+        p.gradient.push_back(rows.coefficient[e] / D);
       }
       p.normal = rows.normal[r];
       p.g0 = rows.g0[r] / D;

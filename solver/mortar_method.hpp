@@ -4,8 +4,9 @@
 /// exact gap mode. docs/contact-surfaces.md.
 ///
 /// Row j of a pair, divided by its weight D_j, is a ContactPair of the exact mode's convention:
-///   g_j(u) / D_j = g0_j / D_j + n_j . (sum_k (M_jk / D_j) u_k - u_j)     (length units),
-/// weights M_jk / D_j on side B's nodes and -1 on node j of side A, normal n_j, area D_j, so that the
+///   g_j(u) / D_j = g0_j / D_j + sum_k (c_jk / D_j) . u_k     (length units),
+/// gradients c_jk / D_j per node (ContactPair::gradient; on flat sides (M_jk / D_j) n_j on side B's
+/// nodes and -n_j on node j), weights M_jk / D_j, normal n_j, area D_j, so that the
 /// multiplier is a force and the contact pressure at node j is force_j / D_j (stress units). The
 /// division also scales the rows: their coefficients are O(1) whatever the thickness or the 2 pi r
 /// of the measure, and ExactContact's penalty rho_j = 1e4 c_j^T diag(K) c_j follows K's own scale

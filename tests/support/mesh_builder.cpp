@@ -1,6 +1,8 @@
 #include "mesh_builder.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 namespace saasgaps::testing {
 
@@ -78,6 +80,29 @@ void fill_temperatures(Model& model, double temperature) {
 
 void constrain(Model& model, int node, std::optional<double> u_r, std::optional<double> u_z) {
   model.constraints.push_back({node, u_r, u_z});
+}
+
+Grid add_ring(Model& m, double r0, double r1, int radial, int around, int material) {
+  const bool plane = m.analysis != AnalysisType::axisymmetric;
+  constexpr double h = 0.2;
+  Grid g = add_grid(
+      m, radial, around,
+      [&](double s, double t) {
+        const double r = r0 + (r1 - r0) * s;
+        if (!plane) return Vec2(r, h * t);
+        const double angle = 2.0 * std::numbers::pi * t;
+        return Vec2(r * std::cos(angle), r * std::sin(angle));
+      },
+      material);
+  if (!plane) return g;
+  // Close the ring: the last row of nodes (added last) is the first one.
+  for (int i = 0; i <= radial; ++i) {
+    const int last = g.at(i, around), first = g.at(i, 0);
+    for (Element& e : m.elements) std::replace(e.nodes.begin(), e.nodes.end(), last, first);
+    g.nodes[static_cast<std::size_t>(i + (radial + 1) * around)] = first;
+  }
+  m.nodes.resize(m.nodes.size() - static_cast<std::size_t>(radial + 1));
+  return g;
 }
 
 }  // namespace saasgaps::testing

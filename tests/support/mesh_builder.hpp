@@ -22,6 +22,11 @@ struct Grid {
 Grid add_grid(Model& model, int ni, int nj, const std::function<Vec2(double, double)>& map, int material,
               double angle_deg = 0.0);
 
+/// A ring r0..r1 meshed on its own: `radial` x `around` quadrilaterals (grid i radial, j round).
+/// Plane analyses: the whole ring about the origin, closed round (grid row `around` is row 0, so
+/// column_edges(g, i) of stacked_blocks.hpp is a closed chain). Axisymmetric: a slice r0..r1 of height 0.2 along z.
+Grid add_ring(Model& m, double r0, double r1, int radial, int around, int material);
+
 /// Adds gap elements joining two node rows a[k] (one face) and b[k] (other face), k = 0..n,
 /// as quads (a[k], a[k+1], b[k+1], b[k]) with M axis at angle_of(k) degrees.
 void add_gap_row(Model& model, const std::vector<int>& a, const std::vector<int>& b,

@@ -1,0 +1,104 @@
+// saasgaps_surface_contact_bench: contact surfaces (model.contact, mortar rows solved by the exact
+// mode's active-set solver) against one numeric factorization + solve of the same matrix, measured in
+// the same run.
+//
+//   build/tests/bench/saasgaps_surface_contact_bench --dofs 1e5
+//
+// The model is the plane-strain shrink fit of tests/verification/surface_contact_test.cpp at scale
+// (tests/support/shrink_fit_rings.hpp): two whole rings (1..1.5 and 1.5..2.2, E 30e6 and 10e6) meshed on their own with non-matching
+// interfaces (`around` segments on the shaft, 5/3 of that on the bore), an interference of 1e-4 of
+// the radius, each ring held against rigid motion at three nodes. Every row ends in contact (the
+// first active set is every row, since every initial gap is < 0). Reported: building the rows (pairing
+// and integration), the baseline (one numeric factorization of K, whose pattern holds the rows'
+// couplings, and one solve), the contact solve from a cold start, and the ratios.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "dof_map.hpp"
+#include "exact_contact.hpp"
+#include "mortar_method.hpp"
+#include "material_state.hpp"
+#include "sparse_cholesky.hpp"
+#include "stiffness_system.hpp"
+#include "support/shrink_fit_rings.hpp"
+
+#include "stopwatch.hpp"
+
+using namespace saasgaps;
+
+namespace {
+
+using saasgaps::bench::timed;
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Times the contact-surface solve against one factorization + solve of the same matrix"};
+  double target_dofs = 1.0e5;
+  int around = 600;
+  int repeat = 3;
+  app.add_option("--dofs", target_dofs, "Approximate number of degrees of freedom (at most 2e5)")
+      ->check(CLI::Range(100.0, 2.0e5));
+  app.add_option("--around", around, "Segments round the shaft (the bore has 5/3 as many)")->check(CLI::Range(12, 100000));
+  app.add_option("--repeat", repeat, "Runs of each timing; the best is reported")->check(CLI::Range(1, 100));
+  CLI11_PARSE(app, argc, argv);
+
+  // (radial + 1) x (around + 5/3 around) nodes, 2 unknowns each.
+  const int total_around = around + around * 5 / 3;
+  const int radial = std::max(1, static_cast<int>(std::lround(target_dofs / (2.0 * total_around))) - 1);
+  const Model m = testing::shrink_fit_rings::shrink_fit(AnalysisType::plane_strain, radial, {around, around * 5 / 3});
+  SurfaceContact surfaces;
+  double rows_s = 1e300;
+  for (int r = 0; r < repeat; ++r) rows_s = std::min(rows_s, timed([&] { surfaces = surface_contact(m); }));
+  // The pairing's search against the all-against-all loop it replaced (rows of the one pair).
+  const SurfaceMeasure measure{m.analysis, m.thickness};
+  double search_s = 1e300, all_s = 1e300;
+  for (int r = 0; r < repeat; ++r) {
+    search_s = std::min(search_s, timed([&] {
+      (void)mortar_rows(m.nodes, measure, surfaces.surfaces[0], surfaces.surfaces[1], Pairing::search);
+    }));
+    all_s = std::min(all_s, timed([&] {
+      (void)mortar_rows(m.nodes, measure, surfaces.surfaces[0], surfaces.surfaces[1], Pairing::all_against_all);
+    }));
+  }
+  DofMap dofs(m);
+  StiffnessSystem system(m, dofs, contact_couplings(surfaces, dofs));
+  const SolidMaterials materials(m);
+  const MaterialState state = materials.initial();
+  system.assemble_solids([&](std::size_t e) { return materials.law(e, state); });
+  SparseCholesky cholesky(system.pattern(), dofs.node_of_equation());
+  std::vector<double> u(static_cast<std::size_t>(dofs.size()));
+
+  // The best of `repeat` runs of each, interleaved, so that a busy machine disturbs both alike.
+  cholesky.factorize(system.values());  // first touch of the factor's memory, not timed
+  ExactContact contact(m, dofs, system.pattern(), surfaces.pairs);
+  ContactReport report;
+  double factorize_s = 1e300, solve_s = 1e300, contact_s = 1e300;
+  for (int r = 0; r < repeat; ++r) {
+    factorize_s = std::min(factorize_s, timed([&] { cholesky.factorize(system.values()); }));
+    solve_s = std::min(solve_s, timed([&] { cholesky.solve(system.rhs(), u); }));
+    ContactState cold;
+    contact_s = std::min(contact_s, timed([&] { report = contact.solve(cholesky, system.values(), system.rhs(), cold, u); }));
+  }
+  const double baseline = factorize_s + solve_s;
+  std::printf("model: plane-strain shrink fit, %d x (%d, %d) quads, %lld unknowns, %zu contact rows, nnz(L) %.3g, "
+              "%.3g Gflop per factorization\n",
+              radial, around, around * 5 / 3, static_cast<long long>(dofs.size()), surfaces.pairs.pairs.size(),
+              cholesky.factor_nonzeros(), cholesky.factor_flops() / 1e9);
+  std::printf("%-52s %10.3f\n", "contact rows (pairing and integration)", rows_s);
+  std::printf("%-52s %10.3f\n", "  of which mortar rows, bin search", search_s);
+  std::printf("%-52s %10.3f\n", "  the same rows, all against all", all_s);
+  std::printf("%-52s %10.3f\n", "numeric factorization", factorize_s);
+  std::printf("%-52s %10.3f\n", "solve", solve_s);
+  std::printf("%-52s %10.3f\n", "contact solve (cold start)", contact_s);
+  std::printf("  active sets %d (factorizations %d, the others rank-k updates), multiplier solves %d, rows in contact %d, "
+              "complementarity %.2e\n",
+              report.active_set_iterations, report.factorizations, report.multiplier_iterations, report.pairs_in_contact,
+              report.complementarity);
+  std::printf("ratio contact solve / (factorization + solve): %.3f\n", contact_s / baseline);
+  std::printf("ratio (rows + contact solve) / (factorization + solve): %.3f\n", (rows_s + contact_s) / baseline);
+  return 0;
+}

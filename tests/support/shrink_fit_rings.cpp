@@ -1,0 +1,39 @@
+#include "shrink_fit_rings.hpp"
+
+#include "mesh_builder.hpp"
+#include "stacked_blocks.hpp"
+
+namespace saasgaps::testing::shrink_fit_rings {
+
+double lame_interference_pressure(AnalysisType type) {
+  const bool stress = type == AnalysisType::plane_stress;
+  const double Ci = stress ? b * ((1 - nu1) * b * b + (1 + nu1) * a1 * a1) / (E1 * (b * b - a1 * a1))
+                           : (1 + nu1) * b * ((1 - 2 * nu1) * b * b + a1 * a1) / (E1 * (b * b - a1 * a1));
+  const double Co = stress ? b * ((1 - nu2) * b * b + (1 + nu2) * b2 * b2) / (E2 * (b2 * b2 - b * b))
+                           : (1 + nu2) * b * ((1 - 2 * nu2) * b * b + b2 * b2) / (E2 * (b2 * b2 - b * b));
+  return delta / (Ci + Co);
+}
+
+Model shrink_fit(AnalysisType type, int radial, std::array<int, 2> around) {
+  Model m;
+  m.analysis = type;
+  m.materials = {isotropic_material(1, E1, nu1), isotropic_material(2, E2, nu2)};
+  const Grid inner = add_ring(m, a1, b + 0.5 * delta, radial, around[0], 0);
+  const Grid outer = add_ring(m, b - 0.5 * delta, b2, radial, around[1], 1);
+  ContactSettings& contact = m.contact.emplace();
+  contact.surfaces = {{"shaft", column_edges(inner, radial)}, {"hub", column_edges(outer, 0)}};
+  contact.pairs.emplace_back().surfaces = {0, 1};
+  for (const Grid* g : {&inner, &outer}) {
+    if (type == AnalysisType::axisymmetric) {
+      for (const int n : g->nodes) constrain(m, n, std::nullopt, 0.0);
+      continue;
+    }
+    constrain(m, g->at(0, 0), std::nullopt, 0.0);
+    constrain(m, g->at(0, g->nj / 2), std::nullopt, 0.0);
+    constrain(m, g->at(0, g->nj / 4), 0.0, std::nullopt);
+  }
+  fill_temperatures(m, 0.0);
+  return m;
+}
+
+}  // namespace saasgaps::testing::shrink_fit_rings
