@@ -1,6 +1,7 @@
 #include "plot/band_raster.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <stdexcept>
 
@@ -53,9 +54,7 @@ std::optional<std::array<Point, 2>> iso_segment(const ValueTriangle& t, double l
 
 BandRaster::BandRaster(int width, int height, std::vector<double> levels, const std::vector<Rgb>& colors)
     : width_(width), height_(height), levels_(std::move(levels)) {
-  if (levels_.size() < 2 || colors.size() != levels_.size() - 1) {
-    throw std::invalid_argument("BandRaster needs one colour per band");
-  }
+  assert(levels_.size() >= 2 && colors.size() == levels_.size() - 1);  // one colour per band
   for (const Rgb& c : colors) pixels_of_band_.push_back(opaque_pixel(c));
   surface_.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
   if (const cairo_status_t s = cairo_surface_status(surface_.get()); s != CAIRO_STATUS_SUCCESS) {
