@@ -8,6 +8,7 @@
 #include <span>
 #include <stdexcept>
 
+#include "plot/band_raster.hpp"
 #include "plot/color_map.hpp"
 #include "plot/contour_bands.hpp"
 #include "plot/field.hpp"
@@ -122,6 +123,47 @@ void fill_bands(const Canvas& canvas, const ResultMesh& mesh, const std::vector<
     }
     canvas.set_color(colors[k]);
     cairo_fill(cr);
+  }
+}
+
+/// The same bands rasterized (band_raster.hpp): each triangle scan-converted once into an image of
+/// the canvas, painted in one go; then each interior level's iso-line stroked 1 px wide in the mean
+/// of its two bands' colours, which stands in for the antialiasing of the band edges. No list of
+/// triangles is kept: memory is the image and the iso-lines.
+void raster_bands(const Canvas& canvas, const ResultMesh& mesh, const std::vector<Point>& at,
+                  const std::vector<double>& values, const std::vector<double>& levels, const std::vector<Rgb>& colors) {
+  BandRaster raster(canvas.width(), canvas.height(), levels, colors);
+  const std::size_t bands = levels.size() - 1;
+  std::vector<std::vector<std::array<Point, 2>>> iso_lines(bands);  // [k]: level k's segments, k >= 1
+  std::vector<ValueTriangle> triangles;
+  std::vector<ValuePoint> corners;
+  for (const SolidElement& e : mesh.solids) {
+    corners.clear();
+    for (const int n : e.nodes) corners.push_back({at[n].x, at[n].y, values[n]});
+    triangles.clear();
+    triangulate(corners, triangles);
+    for (const ValueTriangle& t : triangles) {
+      raster.fill(t);
+      const double lo = std::min({t[0].v, t[1].v, t[2].v}), hi = std::max({t[0].v, t[1].v, t[2].v});
+      for (std::size_t k = 1; k < bands; ++k) {
+        if (levels[k] < lo || levels[k] > hi) continue;
+        if (const auto segment = iso_segment(t, levels[k])) iso_lines[k].push_back(*segment);
+      }
+    }
+  }
+  cairo_t* cr = canvas.context();
+  cairo_set_source_surface(cr, raster.surface(), 0.0, 0.0);
+  cairo_paint(cr);
+  canvas.set_line(1.0);
+  for (std::size_t k = 1; k < bands; ++k) {
+    if (iso_lines[k].empty()) continue;
+    for (const auto& [a, b] : iso_lines[k]) {
+      cairo_move_to(cr, a.x, a.y);
+      cairo_line_to(cr, b.x, b.y);
+    }
+    const Rgb below = colors[k - 1], above = colors[k];
+    canvas.set_color({(below.r + above.r) / 2.0, (below.g + above.g) / 2.0, (below.b + above.b) / 2.0});
+    cairo_stroke(cr);
   }
 }
 
@@ -387,7 +429,13 @@ void draw_contour_plot(const Canvas& canvas, const PlotResult& result, const Con
     canvas.set_line(1.0);
   }
 
-  fill_bands(canvas, mesh, at, values, levels, band_colors);
+  const bool raster = options.fill == BandFill::raster ||
+                      (options.fill == BandFill::automatic && mesh.solids.size() > path_fill_limit);
+  if (raster) {
+    raster_bands(canvas, mesh, at, values, levels, band_colors);
+  } else {
+    fill_bands(canvas, mesh, at, values, levels, band_colors);
+  }
 
   if (options.mesh) {
     canvas.set_color(grey(0.15), 0.55);

@@ -6,6 +6,7 @@
 /// values with their element ids. A field whose range spans zero is drawn by default in the
 /// diverging map centred on zero (color_map.hpp), any other in viridis.
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -18,6 +19,15 @@
 #include "plot/result_mesh.hpp"
 
 namespace saasgaps::plot {
+
+/// How the colour bands are filled. paths: one cairo path per level, every triangle's part above
+/// it (contour_bands.hpp): antialiased band edges, vector in SVG, but a cost of triangles x bands
+/// and cairo's copies of the paths. raster: each triangle scan-converted once into an image of the
+/// canvas (band_raster.hpp), the band edges stroked over it: O(triangles + pixels), the image's
+/// memory. automatic: paths up to path_fill_limit solid elements (every report example: pictures
+/// as before), raster above.
+enum class BandFill { automatic, paths, raster };
+inline constexpr std::size_t path_fill_limit = 20000;
 
 struct ContourOptions {
   std::string field = "effective";
@@ -33,6 +43,7 @@ struct ContourOptions {
   std::string color_map = "auto";
   /// Plane models: the centre of the cylindrical components (sigma_hoop, ..), (x, y).
   PlanePoint centre{0.0, 0.0};
+  BandFill fill = BandFill::automatic;
 };
 
 /// Draws the contour plot over the whole canvas. Unknown field or colour map, a gap field, or a

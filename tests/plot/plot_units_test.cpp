@@ -6,11 +6,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "plot/band_levels.hpp"
+#include "plot/band_raster.hpp"
 #include "plot/color_map.hpp"
 #include "plot/contour_plot.hpp"
 #include "plot/contour_bands.hpp"
@@ -584,6 +586,192 @@ TEST(GapRow, NoLineJoinsTwoSeparateRows) {
   const auto [wx, wy] = middle(1, 2);
   const std::array<int, 3> within = pixel(png, wx, wy);
   EXPECT_GT(within[0], within[2] + 80) << "the first row's line, in red";
+}
+
+
+// ------------------------------------------------------------------------------ raster band fill
+/// The pixels of an ARGB32 surface, row by row.
+std::vector<std::uint32_t> pixels_of(cairo_surface_t* image) {
+  cairo_surface_flush(image);
+  const int w = cairo_image_surface_get_width(image), h = cairo_image_surface_get_height(image);
+  const int stride = cairo_image_surface_get_stride(image);
+  const unsigned char* data = cairo_image_surface_get_data(image);
+  std::vector<std::uint32_t> out;
+  for (int j = 0; j < h; ++j) {
+    const auto* row = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(j) * stride);
+    out.insert(out.end(), row, row + w);
+  }
+  return out;
+}
+
+/// The decoded pixels of a PNG (opaque RGB24, 0x00RRGGBB) and its width.
+std::pair<std::vector<std::uint32_t>, int> decode_png(const std::string& png) {
+  struct Reader {
+    const std::string* data;
+    std::size_t at = 0;
+  } reader{&png};
+  cairo_surface_t* image = cairo_image_surface_create_from_png_stream(
+      [](void* closure, unsigned char* out, unsigned int length) {
+        auto* r = static_cast<Reader*>(closure);
+        if (r->at + length > r->data->size()) return CAIRO_STATUS_READ_ERROR;
+        std::copy_n(r->data->data() + r->at, length, out);
+        r->at += length;
+        return CAIRO_STATUS_SUCCESS;
+      },
+      &reader);
+  std::vector<std::uint32_t> pixels = pixels_of(image);
+  for (std::uint32_t& p : pixels) p &= 0xFFFFFFU;
+  const int width = cairo_image_surface_get_width(image);
+  cairo_surface_destroy(image);
+  return {pixels, width};
+}
+
+TEST(BandRaster, EachPixelCentreInsideTakesTheBandOfItsInterpolatedValue) {
+  const std::vector<double> levels{0.0, 1.0, 2.0, 3.0};
+  const std::vector<Rgb> colors{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const std::uint32_t red = 0xFFFF0000U, green = 0xFF00FF00U, blue = 0xFF0000FFU;
+  EXPECT_EQ(band_of(levels, -5.0), 0);
+  EXPECT_EQ(band_of(levels, 0.99), 0);
+  EXPECT_EQ(band_of(levels, 1.0), 1) << "a value at a level is in the band above it, as the path fill paints it";
+  EXPECT_EQ(band_of(levels, 2.5), 2);
+  EXPECT_EQ(band_of(levels, 7.0), 2);
+  const int w = 60, h = 40;
+  BandRaster raster(w, h, levels, colors);
+  const ValueTriangle t{{{3.2, 2.7, 0.0}, {57.1, 6.3, 3.0}, {12.4, 37.6, 1.5}}};
+  raster.fill(t);
+  const std::vector<std::uint32_t> px = pixels_of(raster.surface());
+  // Barycentric coordinates of a point: all > 0 inside.
+  const auto weights = [&t](double x, double y) {
+    const double det = (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y);
+    const double l1 = ((x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (y - t[0].y)) / det;
+    const double l2 = ((t[1].x - t[0].x) * (y - t[0].y) - (x - t[0].x) * (t[1].y - t[0].y)) / det;
+    return std::array<double, 3>{1.0 - l1 - l2, l1, l2};
+  };
+  int inside = 0, checked = 0;
+  for (int j = 0; j < h; ++j) {
+    for (int i = 0; i < w; ++i) {
+      const std::array<double, 3> l = weights(i + 0.5, j + 0.5);
+      const double smallest = std::min({l[0], l[1], l[2]});
+      const std::uint32_t got = px[static_cast<std::size_t>(j * w + i)];
+      if (smallest < -1e-9) {
+        EXPECT_EQ(got, 0U) << "outside, transparent: pixel " << i << "," << j;
+      } else if (smallest > 1e-9) {
+        ++inside;
+        const double v = l[0] * t[0].v + l[1] * t[1].v + l[2] * t[2].v;
+        // Values within round-off of a level may fall either side.
+        if (std::abs(v - 1.0) < 1e-9 || std::abs(v - 2.0) < 1e-9) continue;
+        ++checked;
+        const std::uint32_t want = v < 1.0 ? red : v < 2.0 ? green : blue;
+        EXPECT_EQ(got, want) << "pixel " << i << "," << j << " v = " << v;
+      }
+    }
+  }
+  EXPECT_GT(checked, 800) << inside;
+  EXPECT_GE(checked, inside - 5);
+}
+
+TEST(BandRaster, TrianglesSharingAnEdgeCoverEveryPixelOnce) {
+  // A square of corners at fractional px split along each diagonal: every centre inside is painted,
+  // none outside, whichever way the square is split.
+  const std::vector<double> levels{0.0, 1.0};
+  for (const bool other_diagonal : {false, true}) {
+    BandRaster raster(32, 32, levels, {{0.2, 0.4, 0.6}});
+    const ValuePoint a{3.3, 4.7, 0.5}, b{27.6, 4.7, 0.5}, c{27.6, 25.2, 0.5}, d{3.3, 25.2, 0.5};
+    if (other_diagonal) {
+      raster.fill({a, b, d});
+      raster.fill({b, c, d});
+    } else {
+      raster.fill({a, b, c});
+      raster.fill({a, c, d});
+    }
+    const std::vector<std::uint32_t> px = pixels_of(raster.surface());
+    for (int j = 0; j < 32; ++j) {
+      for (int i = 0; i < 32; ++i) {
+        const bool in = i + 0.5 > 3.3 && i + 0.5 < 27.6 && j + 0.5 > 4.7 && j + 0.5 < 25.2;
+        EXPECT_EQ(px[static_cast<std::size_t>(j * 32 + i)] != 0U, in) << i << "," << j << " " << other_diagonal;
+      }
+    }
+  }
+}
+
+TEST(BandRaster, IsoSegmentsEndWhereTheClipCutsTheEdges) {
+  const ValueTriangle t{{{0.0, 0.0, 0.0}, {4.0, 0.0, 4.0}, {0.0, 4.0, 2.0}}};
+  const auto s = iso_segment(t, 1.0);
+  ASSERT_TRUE(s.has_value());
+  // v = x + y / 2: v = 1 crosses edge 0-1 at (1, 0) and edge 2-0 at (0, 2).
+  const auto near = [](Point p, double x, double y) { return std::hypot(p.x - x, p.y - y) < 1e-12; };
+  EXPECT_TRUE((near((*s)[0], 1.0, 0.0) && near((*s)[1], 0.0, 2.0)) || (near((*s)[1], 1.0, 0.0) && near((*s)[0], 0.0, 2.0)));
+  EXPECT_FALSE(iso_segment(t, 5.0).has_value());
+  EXPECT_FALSE(iso_segment(t, -1.0).has_value());
+}
+
+TEST(BandRaster, RasterAndPathContoursAgreeAwayFromTheBandEdges) {
+  // The two fills of the same contour: the same colour wherever a pixel lies inside one band. They
+  // differ only along band edges and the outline (antialiasing): a few percent of the mesh's pixels.
+  PlotRequest request;
+  request.width = 500;
+  request.height = 300;
+  request.contour.fill = BandFill::paths;
+  const auto [paths, width] = decode_png(render_plot(two_squares(), request));
+  request.contour.fill = BandFill::raster;
+  const auto [raster, raster_width] = decode_png(render_plot(two_squares(), request));
+  ASSERT_EQ(width, raster_width);
+  ASSERT_EQ(paths.size(), raster.size());
+  std::size_t coloured = 0, differ = 0;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const std::uint32_t p = paths[i];
+    const int r = static_cast<int>(p >> 16 & 0xFF), g = static_cast<int>(p >> 8 & 0xFF), b = static_cast<int>(p & 0xFF);
+    // Band colours are saturated (viridis): not a grey of the text, axes or background.
+    if (std::max({r, g, b}) - std::min({r, g, b}) < 40) continue;
+    ++coloured;
+    const std::uint32_t q = raster[i];
+    const int dr = std::abs(r - static_cast<int>(q >> 16 & 0xFF)), dg = std::abs(g - static_cast<int>(q >> 8 & 0xFF)),
+              db = std::abs(b - static_cast<int>(q & 0xFF));
+    if (std::max({dr, dg, db}) > 2) ++differ;
+  }
+  EXPECT_GT(coloured, 20000U) << "the mesh covers a good part of the picture";
+  EXPECT_LT(static_cast<double>(differ), 0.05 * static_cast<double>(coloured)) << differ << " of " << coloured;
+}
+
+
+/// A plane-stress grid of nx x ny unit squares with effective = x + y at each element, plus
+/// `triangles` extra triangular elements along its bottom edge.
+json grid_result(int nx, int ny, int triangles) {
+  json nodes = json::array();
+  const auto node_id = [nx](int i, int j) { return j * (nx + 1) + i + 1; };
+  for (int j = 0; j <= ny; ++j) {
+    for (int i = 0; i <= nx; ++i) {
+      nodes.push_back({{"id", node_id(i, j)}, {"r", i}, {"z", j}, {"u_r", 0.0}, {"u_z", 0.0}});
+    }
+  }
+  json elements = json::array();
+  const auto element = [&elements](std::vector<int> n, double v) {
+    elements.push_back({{"id", static_cast<int>(elements.size()) + 1}, {"nodes", std::move(n)}, {"material", 1},
+                        {"effective", v}});
+  };
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) element({node_id(i, j), node_id(i + 1, j), node_id(i + 1, j + 1), node_id(i, j + 1)}, i + j);
+  }
+  for (int t = 0; t < triangles; ++t) {
+    nodes.push_back({{"id", 1000000 + t}, {"r", t + 0.5}, {"z", -1.0}, {"u_r", 0.0}, {"u_z", 0.0}});
+    element({1000000 + t, node_id(t + 1, 0), node_id(t, 0)}, 0.0);
+  }
+  return {{"status", "converged"}, {"iterations", 1},   {"title", "grid"},      {"analysis", "plane_stress"},
+          {"history", json::array()}, {"nodes", nodes}, {"elements", elements}, {"gaps", json::array()}};
+}
+
+TEST(BandRaster, MeshesAbovePathFillLimitAreRasterized) {
+  // docs/plots.md: paths up to 20,000 solid elements, an image above (an SVG shows which).
+  ASSERT_EQ(path_fill_limit, 20000U);
+  PlotRequest request;
+  request.format = ImageFormat::svg;
+  request.width = 300;
+  request.height = 200;
+  const std::string at_limit = render_plot(grid_result(200, 100, 0), request);
+  EXPECT_EQ(at_limit.find("<image"), std::string::npos) << "20,000 elements: paths";
+  const std::string above = render_plot(grid_result(200, 100, 1), request);
+  EXPECT_NE(above.find("<image"), std::string::npos) << "20,001 elements: an image";
+  EXPECT_LT(above.size(), at_limit.size()) << "the image is smaller than 12 paths through 40,000 triangles";
 }
 
 }  // namespace
