@@ -130,7 +130,9 @@ int run_solve(const SolveOptions& options) {
   // A VTU that cannot be written must not turn a good result into a failed one. The VTU writer
   // works from a result tree: only this opt-in export builds one.
   if (!options.vtu_path.empty()) {
-    write_file_atomically(options.vtu_path, io::result_to_vtu(nlohmann::json::parse(io::result_text(model, *solution))));
+    // The result's text read as arrays, as `saasgaps export-vtu` reads the file: no tree of it.
+    write_file_atomically(options.vtu_path, io::result_to_vtu(io::read_result_arrays(io::result_text(model, *solution),
+                                                                                     io::vtu_result_selection())));
   }
   return solution->status == RunStatus::converged ? 0 : 3;
 }

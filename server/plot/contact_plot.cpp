@@ -24,8 +24,8 @@ std::string tick_note(const char* panel, const Chart& chart) {
 
 }  // namespace
 
-DataTable draw_contact_plot(const Canvas& canvas, const json& result, const GapRowOptions& row_options) {
-  const ResultMesh mesh = ResultMesh::from_result(result);
+DataTable draw_contact_plot(const Canvas& canvas, const PlotResult& result, const GapRowOptions& row_options) {
+  const ResultMesh& mesh = result.mesh();
   if (mesh.gaps.empty()) throw std::invalid_argument("the result has no gap elements: there is no contact pressure to plot");
   const GapRow row = select_gap_row(mesh, row_options, gap_labels_that_fit(canvas, mesh));
 

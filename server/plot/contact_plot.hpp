@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "plot/canvas.hpp"
+#include "plot/plot_result.hpp"
 #include "plot/data_table.hpp"
 #include "plot/gap_row.hpp"
 
@@ -15,6 +16,6 @@ namespace saasgaps::plot {
 /// pressure, closure, sigma_m and state, and the px where the two markers were drawn; the notes give
 /// the y ticks' px positions. A result without gaps, or a row naming a gap it lacks:
 /// std::invalid_argument.
-DataTable draw_contact_plot(const Canvas& canvas, const nlohmann::json& result, const GapRowOptions& row);
+DataTable draw_contact_plot(const Canvas& canvas, const PlotResult& result, const GapRowOptions& row);
 
 }  // namespace saasgaps::plot
