@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "contact_conductance.hpp"
 #include "sparse_cholesky.hpp"
 #include "thermal_system.hpp"
 
@@ -43,8 +44,8 @@ class ConductionSolver {
   [[nodiscard]] int factorizations() const { return factorizations_; }
 
   std::vector<double> solve(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
-                            std::span<const double> gap_conductance) {
-    system_.assemble(k, inverse_dt, previous, gap_conductance, values_, rhs_);
+                            std::span<const double> gap_conductance, std::span<const double> contact_conductance) {
+    system_.assemble(k, inverse_dt, previous, gap_conductance, contact_conductance, values_, rhs_);
     if (values_ != factored_) {
       try {
         cholesky_.factorize(values_);
@@ -79,17 +80,6 @@ class ConductionSolver {
   int factorizations_ = 0;
 };
 
-/// h of a conductance table at contact pressure p: linear between rows, constant beyond the ends.
-double closed_conductance(const InterfaceConductance& c, double p) {
-  const auto& rows = c.closed;
-  if (p <= rows.front().p) return rows.front().h;
-  if (p >= rows.back().p) return rows.back().h;
-  const auto upper = std::upper_bound(rows.begin(), rows.end(), p, [](double v, const ConductanceRow& r) { return v < r.p; });
-  const ConductanceRow& b = *upper;
-  const ConductanceRow& a = *(upper - 1);
-  return a.h + (p - a.p) / (b.p - a.p) * (b.h - a.h);
-}
-
 bool touching(GapState s) { return s == GapState::closed || s == GapState::overclosed; }
 
 }  // namespace
@@ -111,15 +101,19 @@ std::vector<double> gap_conductances(const Model& model, std::span<const GapResu
   return H;
 }
 
-ThermalResult solve_steady_conduction(const Model& model, std::span<const double> gap_conductance) {
+ThermalResult solve_steady_conduction(const Model& model, std::span<const double> gap_conductance,
+                                      std::span<const double> contact_conductance) {
   ConductionSolver solver(model);
   const ThermalSystem& system = solver.system();
+  const std::vector<double> initial_contact =
+      contact_conductance.empty() ? system.contact().conductances({}) : std::vector<double>{};
+  if (contact_conductance.empty()) contact_conductance = initial_contact;
   std::vector<double> T(model.nodes.size(), model.reference_temperature);
   std::vector<Conductivity> k = system.conductivities(T);
   ThermalResult result;
   double change = 0.0;
   for (int pass = 1; pass <= max_conduction_iterations; ++pass) {
-    std::vector<double> next = solver.solve(k, 0.0, {}, gap_conductance);
+    std::vector<double> next = solver.solve(k, 0.0, {}, gap_conductance, contact_conductance);
     change = largest_change(next, T);
     T = std::move(next);
     std::vector<Conductivity> k_next = system.conductivities(T);
@@ -156,7 +150,7 @@ ThermalResult solve_transient_conduction(const Model& model, std::span<const dou
     for (long taken = 1; output - t > sliver; ++taken) {
       const double remaining = output - t;
       const double dt = std::abs(remaining - step) <= sliver ? step : std::min(step, remaining);
-      T = solver.solve(system.conductivities(T), 1.0 / dt, T, gap_conductance);
+      T = solver.solve(system.conductivities(T), 1.0 / dt, T, gap_conductance, {});
       t = remaining - dt <= sliver ? output : start + static_cast<double>(taken) * step;
       ++result.time_steps;
     }
@@ -198,31 +192,33 @@ Solution solve_with_heat(const Model& model, IterationObserver* observer, const 
                          const ResumeOptions& options, const OrderingCache* cache, const ContactMethodFactory& contact) {
   if (!model.thermal) return solve(model, observer, resume, options, cache, contact);
   std::vector<double> H = gap_conductances(model, {});
+  const ContactConductance pairs(model);
   if (model.thermal->type == ThermalType::transient) {
-    if (!H.empty()) {
-      throw SolverError("conduction across gap elements is solved for steady runs only; a transient run with "
-                        "gaps.conductance is not supported yet");
+    if (!H.empty() || pairs.row_count() > 0) {
+      throw SolverError("conduction across gap elements and contact pairs is solved for steady runs only; a "
+                        "transient run with a conductance is not supported yet");
     }
     ThermalResult heat = solve_transient_conduction(model);
     Solution s = solve(with_temperature_steps(model, heat), observer, resume, options, cache, contact);
     s.thermal = std::move(heat);
     return s;
   }
-  ThermalResult heat = solve_steady_conduction(model, H);
+  ThermalResult heat = solve_steady_conduction(model, H, pairs.conductances({}));
   Solution s = solve(with_temperatures(model, heat.T), observer, resume, options, cache, contact);
-  if (H.empty()) {
+  if (H.empty() && pairs.row_count() == 0) {
     s.thermal = std::move(heat);
     return s;
   }
-  // Conducting gaps: alternate conduction and stress until states and temperatures settle.
-  const auto states = [](const Solution& solution) {
-    std::vector<bool> touch;
+  // Conducting gaps or pairs: alternate conduction and stress until states and temperatures settle.
+  const auto states = [&pairs](const Solution& solution) {
+    std::vector<bool> touch = pairs.touching(solution.contact);
     for (const GapResult& g : solution.gaps) touch.push_back(touching(g.state));
     return touch;
   };
   for (int pass = 2; pass <= max_coupling_passes; ++pass) {
     const std::vector<bool> before = states(s);
-    ThermalResult next = solve_steady_conduction(model, gap_conductances(model, s.gaps));
+    ThermalResult next =
+        solve_steady_conduction(model, gap_conductances(model, s.gaps), pairs.conductances(s.contact));
     const double change = largest_change(next.T, heat.T);
     heat = std::move(next);
     heat.passes = pass;
@@ -233,7 +229,7 @@ Solution solve_with_heat(const Model& model, IterationObserver* observer, const 
     }
   }
   throw SolverError("the thermal and contact solutions did not settle in " + std::to_string(max_coupling_passes) +
-                    " passes (gap states or temperatures kept changing)");
+                    " passes (contact states or temperatures kept changing)");
 }
 
 }  // namespace saasgaps

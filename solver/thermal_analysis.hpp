@@ -25,6 +25,10 @@
 /// and throw SolverError after max_coupling_passes. Each pass is a contraction in practice because
 /// the states can only flip a finite number of times and, with fixed states, T depends on the
 /// pressures only through the table's slope.
+///
+/// Contact pairs with a `conductance` conduct the same way through their mortar rows
+/// (contact_conductance.hpp), H per point of side A from its gap and pressure, and join the same
+/// passes: a point's touching or not counts as a state like a gap's.
 
 #include <span>
 #include <vector>
@@ -45,8 +49,11 @@ inline constexpr double coupling_tolerance = 1.0e-8;
 std::vector<double> gap_conductances(const Model& model, std::span<const GapResult> gaps);
 
 /// The steady temperatures; gap_conductance: H per gap element (gap_conductances), empty when
-/// the gaps do not conduct. Throws SingularModelError when a body has no temperature fixed.
-ThermalResult solve_steady_conduction(const Model& model, std::span<const double> gap_conductance = {});
+/// the gaps do not conduct; contact_conductance: H per row of the conducting contact pairs
+/// (ContactConductance::conductances), empty for every point at its initial gap. Throws
+/// SingularModelError when a body has no temperature fixed.
+ThermalResult solve_steady_conduction(const Model& model, std::span<const double> gap_conductance = {},
+                                      std::span<const double> contact_conductance = {});
 
 /// The transient temperatures at each output time.
 ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance = {});
@@ -59,7 +66,7 @@ Model with_temperatures(const Model& model, const std::vector<double>& T);
 Model with_temperature_steps(const Model& model, const ThermalResult& transient);
 
 /// solve() for any model: without `thermal` exactly solve(); with it, the conduction first (and the
-/// thermal-contact passes for conducting gaps), then the stress analysis, and the result's thermal.
+/// thermal-contact passes for conducting gaps and pairs), then the stress analysis, and the result's thermal.
 Solution solve_with_heat(const Model& model, IterationObserver* observer = nullptr,
                          const RestartState* resume = nullptr, const ResumeOptions& options = {},
                          const OrderingCache* cache = nullptr, const ContactMethodFactory& contact = make_contact_method);

@@ -50,15 +50,20 @@ ThermalSystem::ThermalSystem(const Model& model)
     : model_(model),
       dofs_(model, "T", prescribed_temperatures(model)),
       gaps_conduct_(conducting_gaps(model)),
-      assembler_(dofs_, model.elements.size() + (gaps_conduct_ ? model.gaps->elements.size() : 0),
-                 [&model](std::size_t e) {
-                   if (e < model.elements.size()) {
-                     const Element& el = model.elements[e];
-                     return std::span<const int>(el.nodes.data(), static_cast<std::size_t>(el.node_count));
-                   }
-                   const GapElement& g = model.gaps->elements[e - model.elements.size()];
-                   return std::span<const int>(g.nodes.data(), static_cast<std::size_t>(g.node_count));
-                 }) {
+      contact_(model),
+      assembler_(dofs_, model.elements.size() + gap_count() + contact_.row_count(), [this, &model](std::size_t e) {
+        if (e < model.elements.size()) {
+          const Element& el = model.elements[e];
+          return std::span<const int>(el.nodes.data(), static_cast<std::size_t>(el.node_count));
+        }
+        e -= model.elements.size();
+        if (e < gap_count()) {
+          const GapElement& g = model.gaps->elements[e];
+          return std::span<const int>(g.nodes.data(), static_cast<std::size_t>(g.node_count));
+        }
+        // A row clique is an element clique over its nodes: prescribed temperatures are lifted.
+        return contact_.nodes(e - gap_count());
+      }) {
   assert(model.thermal);
   source_.assign(model.elements.size(), 0.0);
   for (const HeatSource& s : model.thermal->sources) {
@@ -104,8 +109,8 @@ std::vector<Conductivity> ThermalSystem::conductivities(std::span<const double> 
 }
 
 void ThermalSystem::assemble(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
-                             std::span<const double> gap_conductance, std::span<double> values,
-                             std::span<double> rhs) const {
+                             std::span<const double> gap_conductance, std::span<const double> contact_conductance,
+                             std::span<double> values, std::span<double> rhs) const {
   std::fill(values.begin(), values.end(), 0.0);
   std::fill(rhs.begin(), rhs.end(), 0.0);
   const SystemSink sink{values, rhs};
@@ -139,10 +144,9 @@ void ThermalSystem::assemble(std::span<const Conductivity> k, double inverse_dt,
     }
     assembler_.add(e, ElementBlock::of(block.K, block.f), sink);
   }
-  if (!gaps_conduct_) return;
-  assert(gap_conductance.size() == model_.gaps->elements.size());
   const Eigen::Vector4d none = Eigen::Vector4d::Zero();
-  for (std::size_t g = 0; g < model_.gaps->elements.size(); ++g) {
+  assert(gap_conductance.size() == gap_count());
+  for (std::size_t g = 0; g < gap_count(); ++g) {
     const GapElement& gap = model_.gaps->elements[g];
     ConductionData d;
     d.node_count = gap.node_count;
@@ -152,6 +156,12 @@ void ThermalSystem::assemble(std::span<const Conductivity> k, double inverse_dt,
     d.k = {gap_conductance[g] * gap_width_[g], 0.0, gap.angle_deg};
     const Eigen::Matrix4d K = conduction_matrix(d);
     assembler_.add(model_.elements.size() + g, ElementBlock::of(K, none), sink);
+  }
+  assert(contact_conductance.size() == contact_.row_count());
+  for (std::size_t r = 0; r < contact_.row_count(); ++r) {
+    const Eigen::MatrixXd K = contact_.block(r, contact_conductance[r]);
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(K.rows());
+    assembler_.add(model_.elements.size() + gap_count() + r, ElementBlock::of(K, zero), sink);
   }
 }
 

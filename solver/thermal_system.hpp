@@ -7,12 +7,16 @@
 /// Gap elements conduct across their M axis only: a gap of conductance H (power / area /
 /// temperature) is a conduction element with k_M = H w and k_L = 0, w its width across M (the
 /// distance of its two faces), so that the heat through it is H (T_a - T_b) per area of face.
+///
+/// Contact pairs with a `conductance` conduct through their mortar rows (contact_conductance.hpp):
+/// every row one more clique over its nodes, after the gap elements.
 
 #include <span>
 #include <vector>
 
 #include "assembler.hpp"
 #include "conduction_kernel.hpp"
+#include "contact_conductance.hpp"
 #include "dof_map.hpp"
 #include "model.hpp"
 
@@ -29,6 +33,7 @@ class ThermalSystem {
   [[nodiscard]] const DofMap& dofs() const { return dofs_; }
   [[nodiscard]] const CscPattern& pattern() const { return assembler_.pattern(); }
   [[nodiscard]] bool gaps_conduct() const { return gaps_conduct_; }
+  [[nodiscard]] const ContactConductance& contact() const { return contact_; }
 
   /// Each solid element's conductivity (k1, k2) at the mean of its nodes' temperatures T (one per node).
   [[nodiscard]] std::vector<Conductivity> conductivities(std::span<const double> T) const;
@@ -37,9 +42,10 @@ class ThermalSystem {
   /// rhs (dofs().size()), both zeroed here. k: conductivities(); inverse_dt: 1 / dt (0 for a steady
   /// solve), with previous the node temperatures of the step before (the capacity density c is
   /// taken at their element means); gap_conductance: H per gap element (gaps_conduct() only, else
-  /// empty).
+  /// empty); contact_conductance: H per row of contact().
   void assemble(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
-                std::span<const double> gap_conductance, std::span<double> values, std::span<double> rhs) const;
+                std::span<const double> gap_conductance, std::span<const double> contact_conductance,
+                std::span<double> values, std::span<double> rhs) const;
 
   /// Node temperatures from the free unknowns x (prescribed nodes take their values).
   [[nodiscard]] std::vector<double> node_temperatures(std::span<const double> x) const;
@@ -48,11 +54,14 @@ class ThermalSystem {
   [[nodiscard]] std::vector<Vec2> fluxes(std::span<const Conductivity> k, std::span<const double> T) const;
 
  private:
+  /// Gap elements in the pattern: all of model.gaps when they conduct, else none.
+  [[nodiscard]] std::size_t gap_count() const { return gaps_conduct_ ? model_.gaps->elements.size() : 0; }
   [[nodiscard]] ConductionData data(const Element& el, const Conductivity& k) const;
 
   const Model& model_;
   DofMap dofs_;
   bool gaps_conduct_ = false;
+  ContactConductance contact_;  // before assembler_: its rows are cliques of the pattern
   Assembler assembler_;
   std::vector<double> source_;          // per solid element: power density of its material
   std::vector<double> gap_width_;       // per gap element

@@ -286,6 +286,14 @@ void SectionReader::read_thermal(const Obj& root) {
       report("/gaps/conductance", "conduction across gap elements is solved in steady thermal runs only (not yet in "
                                   "transient ones); remove it or make the run steady");
     }
+    if (model_.contact) {
+      for (std::size_t i = 0; i < model_.contact->pairs.size(); ++i) {
+        if (!model_.contact->pairs[i].conductance) continue;
+        report("/contact/pairs/" + std::to_string(i) + "/conductance",
+               "conduction across contact pairs is solved in steady thermal runs only (not yet in transient "
+               "ones); remove it or make the run steady");
+      }
+    }
   }
   if (type) check_thermal_materials(thermal);
   model_.thermal = std::move(thermal);

@@ -20,6 +20,7 @@ std::string_view quantity_name(Quantity q) {
     case Quantity::strain: return "strain";
     case Quantity::length: return "length";
     case Quantity::temperature: return "temperature";
+    case Quantity::heat_flux: return "heat flux";
     case Quantity::percent: return "percent";
   }
   return "?";
@@ -59,6 +60,7 @@ const std::vector<FieldInfo>& fields() {
       {"eps_hoop", FieldLocation::element, "", "", "Hoop strain \u03b5hoop", strain_units, "", hoop},
       {"gamma_radial_hoop", FieldLocation::element, "", "", "Radial-hoop shear strain \u03b3rad,hoop (engineering)",
        strain_units, "", radial_hoop},
+      {"heat_flux", FieldLocation::element, "", "Heat flux magnitude |q|", "Heat flux magnitude |q|", Quantity::heat_flux},
       {"temperature", FieldLocation::node, "T", "Temperature", "Temperature", Quantity::temperature},
       {"displacement", FieldLocation::node, "", "Displacement magnitude |u|", "Displacement magnitude |u|",
        length_units},
@@ -119,6 +121,7 @@ double rotate_in_plane(double xx, double yy, double xy, double phi, Cylindrical 
 
 std::vector<std::string_view> element_keys(const FieldInfo& field) {
   if (field.location != FieldLocation::element) return {};
+  if (field.quantity == Quantity::heat_flux) return {"q_r", "q_z"};
   if (field.cylindrical == Cylindrical::none) return {field.key};
   if (field.quantity == Quantity::stress) return {"sigma_r", "sigma_z", "tau_rz"};
   return {"eps_r", "eps_z", "gamma_rz"};
@@ -129,6 +132,7 @@ std::string unit_name(Quantity quantity, const UnitNames& units) {
     case Quantity::stress: return units.stress;
     case Quantity::length: return units.length;
     case Quantity::temperature: return units.temperature;
+    case Quantity::heat_flux: return "";  // power / length^2: the model names no unit of power
     case Quantity::percent: return "%";
     case Quantity::strain: return "";
   }
@@ -153,6 +157,18 @@ std::vector<double> element_values(const PlotResult& result, const ResultMesh& m
     throw std::invalid_argument("'" + std::string(field.name) + "' is not an element field");
   }
   require_field_fits(field, mesh);
+  if (field.quantity == Quantity::heat_flux) {
+    std::vector<std::vector<double>> q;
+    try {
+      for (const std::string_view key : element_keys(field)) q.push_back(result.element_member(key));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("'heat_flux' is the heat flux of a thermal run, and this result has none (its "
+                                  "model has no thermal section): " + std::string(e.what()));
+    }
+    std::vector<double> values;
+    for (std::size_t e = 0; e < q[0].size(); ++e) values.push_back(std::hypot(q[0][e], q[1][e]));
+    return values;
+  }
   std::vector<std::vector<double>> stored;
   for (const std::string_view key : element_keys(field)) stored.push_back(result.element_member(key));
   if (field.cylindrical == Cylindrical::none) return std::move(stored[0]);

@@ -17,6 +17,10 @@
 ///   τrad,hoop = (σy − σx) sinφ cosφ + τxy (cos²φ − sin²φ)
 /// and for strains the same with εx, εy and γxy/2 (γrad,hoop = 2 × the rotated tensor shear).
 /// In an axisymmetric model sigma_r and sigma_theta already are the radial and hoop stresses.
+///
+/// Heat flux (thermal runs): `heat_flux` is the magnitude |q| = sqrt(q_r^2 + q_z^2) of each element's
+/// stored flux, averaged to the nodes like any element field (a magnitude of the average would
+/// cancel where the flux turns; this is the average of the magnitude).
 
 #include <array>
 #include <string>
@@ -37,7 +41,7 @@ enum class FieldLocation {
 };
 
 /// What a field measures, for its unit.
-enum class Quantity { stress, strain, length, temperature, percent };
+enum class Quantity { stress, strain, length, temperature, heat_flux, percent };
 
 /// A component of the in-plane tensor in polar axes about a centre (see above); none: as stored.
 enum class Cylindrical { none, radial, hoop, radial_hoop };

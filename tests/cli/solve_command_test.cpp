@@ -250,6 +250,8 @@ TEST_F(SolveCommand, ThermalRunWritesComputedTemperaturesAndHeatFluxThatPlotAndE
   }
   for (const auto& element : result["elements"]) EXPECT_LT(element["q_z"].get<double>(), 0.0) << element["id"];
   EXPECT_EQ(saasgaps("plot " + path("result.json") + " --field temperature -o " + path("T.png")).exit_code, 0);
+  EXPECT_EQ(saasgaps("plot " + path("result.json") + " --field heat_flux -o " + path("q.png")).exit_code, 0);
+  EXPECT_GT(std::filesystem::file_size(path("q.png")), 0U);
   ASSERT_EQ(saasgaps("export-vtu " + path("result.json") + " -o " + path("result.vtu")).exit_code, 0);
   std::ifstream vtu(path("result.vtu"));
   const std::string text((std::istreambuf_iterator<char>(vtu)), std::istreambuf_iterator<char>());

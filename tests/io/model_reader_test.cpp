@@ -1321,6 +1321,7 @@ TEST(ModelReader, ContactChangesTheModelDigest) {
   EXPECT_NE(model_digest(with_contact()), model_digest(valid_model()));
 }
 
+// ------------------------------------------------------------------------------------------------
 // Heat conduction (thermal section, k and c, gap conductance)
 
 /// The minimal model with conductivity and a steady thermal section: edge 1-2 held at 500, a film
@@ -1418,6 +1419,19 @@ TEST(ModelReaderRules, ThermalBoundaryEntriesAreWellFormed) {
   json clash = with(with_thermal(), "/thermal/boundary/2", json::parse(R"({"edges": [[3, 1]], "temperature": 20})"));
   EXPECT_TRUE(rejects(clash, "/thermal/boundary/2/temperature", {"already held at 500"}));
   EXPECT_TRUE(rejects(with(with_thermal(), "/thermal/sources/0/material", 7), "/thermal/sources/0/material", {"7"}));
+}
+
+TEST(ModelReaderRules, ContactConductanceIsSolvedInSteadyRunsOnly) {
+  json m = transient(with_thermal());
+  m["contact"] = json::parse(R"({
+    "surfaces": [{"name": "left", "edges": [[1, 2]]}, {"name": "right", "edges": [[3, 2]]}],
+    "pairs": [{"surfaces": ["left", "right"], "conductance": {"closed": 2}},
+              {"surfaces": ["right", "left"], "conductance": {"closed": 5, "gas_conductivity": 1e-4}}]
+  })");
+  EXPECT_TRUE(rejects(m, "/contact/pairs/0/conductance", {"steady thermal runs only"}));
+  EXPECT_TRUE(rejects(m, "/contact/pairs/1/conductance", {"steady thermal runs only"}));
+  for (json& pair : m["contact"]["pairs"]) pair.erase("conductance");
+  EXPECT_NO_THROW((void)read_model(m));
 }
 
 TEST(ModelReaderRules, GapConductanceIsANumberOrATableOverPressure) {

@@ -154,6 +154,30 @@ TEST(Field, ElementValuesAreAreaWeightedAtTheNodesWithoutGaps) {
   EXPECT_DOUBLE_EQ(gap_values(mesh, find_field("closure")).at(0), 50.0);
 }
 
+TEST(Field, HeatFluxIsTheMagnitudeOfEachElementsFluxAveragedToTheNodes) {
+  json result = two_squares();
+  EXPECT_THROW(
+      {
+        try {
+          (void)nodal_values(result, ResultMesh::from_result(result), find_field("heat_flux"));
+        } catch (const std::invalid_argument& e) {
+          EXPECT_NE(std::string(e.what()).find("thermal"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      std::invalid_argument);
+  result["elements"][0]["q_r"] = 3.0;
+  result["elements"][0]["q_z"] = -4.0;  // |q| = 5
+  result["elements"][1]["q_r"] = 0.0;
+  result["elements"][1]["q_z"] = 2.0;   // |q| = 2
+  const ResultMesh mesh = ResultMesh::from_result(result);
+  const std::vector<double> v = nodal_values(result, mesh, find_field("heat_flux"));
+  EXPECT_DOUBLE_EQ(v[0], 5.0);
+  EXPECT_DOUBLE_EQ(v[1], (1.0 * 5.0 + 2.0 * 2.0) / 3.0);  // areas 1 and 2
+  EXPECT_DOUBLE_EQ(v[2], 2.0);
+  EXPECT_EQ(element_keys(find_field("heat_flux")), (std::vector<std::string_view>{"q_r", "q_z"}));
+}
+
 TEST(Field, UnknownNamesListTheValidOnes) {
   try {
     find_field("sigma_x");
@@ -190,12 +214,17 @@ TEST(RenderPlot, SmallDocumentDrawsEveryKindOfPlot) {
   PlotRequest request;
   request.width = 400;
   request.height = 300;
+  json document = two_squares();
+  for (json& e : document["elements"]) {  // as a thermal run stores them, for heat_flux
+    e["q_r"] = 1.5 * e["id"].get<double>();
+    e["q_z"] = -2.0;
+  }
   for (const std::string& name : plot_names()) {
     request.name = name;
     if (name == "convergence") continue;  // two_squares has no history; see the next test
     for (const ImageFormat format : {ImageFormat::png, ImageFormat::svg}) {
       request.format = format;
-      const std::string image = render_plot(two_squares(), request);
+      const std::string image = render_plot(document, request);
       EXPECT_GT(image.size(), 1000U) << name;
     }
   }

@@ -144,11 +144,34 @@ TEST_F(Service, PlotsAndVtuOfAStoredResult) {
             std::string::npos);
   problem(client.Get(path + "/plots/effective.png?colormap=jet"), 400);
   EXPECT_EQ(client.Get(path + "/plots/sigma_r.png?colormap=diverging&levels=quantile")->status, 200);
+  // The heat flux of a run without heat: a 409 (the result does not fit the plot) that says why.
+  const json no_heat = problem(client.Get(path + "/plots/heat_flux.png"), 409);
+  EXPECT_NE(no_heat["detail"].get<std::string>().find("thermal"), std::string::npos) << no_heat.dump();
   // The dashboard is served from the binary.
   const httplib::Result page = client.Get("/");
   ASSERT_EQ(page->status, 200);
   EXPECT_NE(page->body.find("SAASGAPS"), std::string::npos);
   EXPECT_EQ(client.Get("/app.js")->status, 200);
+}
+
+TEST_F(Service, ThermalRunPlotsTemperatureAndHeatFlux) {
+  ServerProcess server(database());
+  httplib::Client client = server.client();
+  // The quickstart block with its temperatures computed: bottom held at 500, a source in the steel.
+  json model = json::parse(example_text("quickstart-plane-strain-block.json"));
+  model["loads"].erase("temperatures");
+  model["materials"][0]["table"][0]["k"] = 0.6;
+  model["thermal"] = json::parse(R"({"type": "steady",
+    "boundary": [{"edges": [[1, 2], [2, 3]], "temperature": 500}],
+    "sources": [{"material": 1, "power_density": 2.0}]})");
+  const std::int64_t job = submit(client, model.dump());
+  wait_for_state(client, job, {"converged"});
+  const std::string path = "/v1/jobs/" + std::to_string(job);
+  for (const char* field : {"temperature", "heat_flux"}) {
+    const httplib::Result png = client.Get(path + "/plots/" + field + ".png");
+    ASSERT_EQ(png->status, 200) << field << ": " << png->body;
+    EXPECT_EQ(png->body.substr(1, 3), "PNG") << field;
+  }
 }
 
 TEST_F(Service, EveryBadRequestClassGetsItsStatusAndAPointer) {
