@@ -563,13 +563,13 @@ TEST(GapRow, ARowFallsIntoItsConnectedParts) {
   EXPECT_NE(render_table(result, request).find("\n5,5,2,100,"), std::string::npos);
 }
 
-/// The colour of pixel (x, y) of a PNG, 0 .. 255 each.
-std::array<int, 3> pixel(const std::string& png, double x, double y) {
+/// A PNG decoded into a cairo image surface (the caller destroys it).
+cairo_surface_t* png_surface(const std::string& png) {
   struct Reader {
     const std::string* data;
     std::size_t at = 0;
   } reader{&png};
-  cairo_surface_t* image = cairo_image_surface_create_from_png_stream(
+  return cairo_image_surface_create_from_png_stream(
       [](void* closure, unsigned char* out, unsigned int length) {
         auto* r = static_cast<Reader*>(closure);
         if (r->at + length > r->data->size()) return CAIRO_STATUS_READ_ERROR;
@@ -578,6 +578,11 @@ std::array<int, 3> pixel(const std::string& png, double x, double y) {
         return CAIRO_STATUS_SUCCESS;
       },
       &reader);
+}
+
+/// The colour of pixel (x, y) of a PNG, 0 .. 255 each.
+std::array<int, 3> pixel(const std::string& png, double x, double y) {
+  cairo_surface_t* image = png_surface(png);
   const unsigned char* data = cairo_image_surface_get_data(image);
   const int stride = cairo_image_surface_get_stride(image);
   const auto value = *reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(std::lround(y)) * stride +
@@ -635,19 +640,7 @@ std::vector<std::uint32_t> pixels_of(cairo_surface_t* image) {
 
 /// The decoded pixels of a PNG (opaque RGB24, 0x00RRGGBB) and its width.
 std::pair<std::vector<std::uint32_t>, int> decode_png(const std::string& png) {
-  struct Reader {
-    const std::string* data;
-    std::size_t at = 0;
-  } reader{&png};
-  cairo_surface_t* image = cairo_image_surface_create_from_png_stream(
-      [](void* closure, unsigned char* out, unsigned int length) {
-        auto* r = static_cast<Reader*>(closure);
-        if (r->at + length > r->data->size()) return CAIRO_STATUS_READ_ERROR;
-        std::copy_n(r->data->data() + r->at, length, out);
-        r->at += length;
-        return CAIRO_STATUS_SUCCESS;
-      },
-      &reader);
+  cairo_surface_t* image = png_surface(png);
   std::vector<std::uint32_t> pixels = pixels_of(image);
   for (std::uint32_t& p : pixels) p &= 0xFFFFFFU;
   const int width = cairo_image_surface_get_width(image);
