@@ -12,7 +12,7 @@ BUILD_PACKAGES=(
   build-essential cmake pkg-config
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread
   libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev libcli11-dev libcairo2-dev zlib1g-dev
-  libgmsh-dev libexpat1-dev libseccomp-dev libsimdjson-dev
+  libgmsh-dev libexpat1-dev libseccomp-dev libsimdjson-dev rapidjson-dev
 )
 # What the README's examples use: the model generators in schemas/examples (python3) and the
 # service walk-through (curl).

@@ -14,6 +14,7 @@
 #include "material_state.hpp"
 #include "mortar_method.hpp"
 #include "plural.hpp"
+#include "reactions.hpp"
 #include "sparse_cholesky.hpp"
 #include "stiffness_system.hpp"
 
@@ -114,6 +115,8 @@ class GapContactAnalysis {
   Solution run(IterationObserver* observer, const RestartState* resume) {
     RestartState state = resume ? resumed(*resume) : fresh();
     begin_increment(state);
+    // A saved state is written after a solve, so it was solved in the increment it names.
+    solved_in_increment_ = state.iteration > 0;
     Evaluation& eval = eval_;
     if (state.iteration > 0) evaluate(state, eval);
 
@@ -141,6 +144,7 @@ class GapContactAnalysis {
       state.iteration += 1;
       if (state.position) state.position->iterations += 1;
       store_displacements(state.displacement);
+      solved_in_increment_ = true;
 
       evaluate(state, eval);
       now_->contact->check_solved(state, eval.contact);
@@ -190,17 +194,19 @@ class GapContactAnalysis {
   /// After a converged increment: the next one, carrying the materials', contact and gap history of
   /// this one in the state. False after the last.
   bool next_increment(RestartState& state) {
-    if (!state.position || !schedule_.advance(*state.position, state.displacement)) return false;
+    if (!state.position) return false;
+    // The peaks of this increment's yielded elements go into the state the next one starts from.
+    if (now_->materials.nonlinear()) now_->materials.record_peaks(state.materials, eval_.solids, eval_.materials.next);
+    if (!schedule_.advance(*state.position, state.displacement)) return false;
     begin_increment(state);
+    solved_in_increment_ = false;
     return true;
   }
 
   RestartState fresh() const {
     RestartState s;
-    if (schedule_.stepped()) {
-      s.version = RestartState::stepped_version;
-      s.position = schedule_.first();
-    }
+    s.version = restart_version(model_);
+    if (schedule_.stepped()) s.position = schedule_.first();
     s.node_count = model_.nodes.size();
     s.element_count = model_.elements.size();
     s.gap_count = model_.gap_count();
@@ -208,8 +214,11 @@ class GapContactAnalysis {
   }
 
   RestartState resumed(const RestartState& saved) {
-    const int expected = schedule_.stepped() ? RestartState::stepped_version : RestartState::plain_version;
-    if (saved.version != expected) {
+    const int expected = restart_version(model_);
+    // A plastic stepped model's state from before peaks were kept (version 2) reads as one without.
+    const bool before_peaks =
+        expected == RestartState::plastic_steps_version && saved.version == RestartState::stepped_version;
+    if (saved.version != expected && !before_peaks) {
       throw SolverError("restart state version " + std::to_string(saved.version) + " is not supported (expected " +
                         std::to_string(expected) + (schedule_.stepped() ? " for a model with steps)" : ")"));
     }
@@ -224,12 +233,31 @@ class GapContactAnalysis {
         saved.gaps.strain.size() != model_.gap_count() || saved.gaps.used.normal.size() != model_.gap_count()) {
       throw SolverError("the restart state does not belong to this model (its dimensions differ)");
     }
+    check_plastic_branches(saved.materials);
     RestartState s = saved;
+    s.version = expected;
     s.attempt = saved.attempt + 1;
     // The READ-card restart: a new schedule starts from its first value at the next iteration (-1 is
     // also what a model without gaps keeps there).
     if (schedule_changed_) s.gaps.used.schedule_step = -1;
     return s;
+  }
+
+  /// Peaks and unloading branches of a saved state: none, or one per element; an element unloads
+  /// only from a peak it reached, and only in a plastic stepped model.
+  void check_plastic_branches(const MaterialState& m) const {
+    const std::size_t n = model_.elements.size();
+    const bool kept = restart_version(model_) == RestartState::plastic_steps_version;
+    const auto fits = [&](std::size_t size) { return size == 0 || (kept && size == n); };
+    if (!fits(m.peaks.size()) || !fits(m.unloading.size())) {
+      throw SolverError("the restart state does not belong to this model (its plastic peaks differ)");
+    }
+    for (std::size_t e = 0; e < m.unloading.size(); ++e) {
+      if (m.unloads(e) && (m.peaks.empty() || !m.peaks[e].reached())) {
+        throw SolverError("the restart state does not belong to this model (element index " + std::to_string(e) +
+                          " unloads from no peak)");
+      }
+    }
   }
 
   /// K and f of the next iteration: the solids when their moduli changed, then the contact method's
@@ -357,10 +385,30 @@ class GapContactAnalysis {
       }
       s.gaps = v.contact.gaps;
       s.contact = now_->contact->surface_results(state);
+      s.reactions = reactions(state);
     }
     s.steps = step_results(state, status);
     s.message = message(state, v, status);
     return s;
+  }
+
+  /// The supports' forces in the state's last solve (reactions.hpp). A stepped run stopped right after
+  /// an increment converged holds that increment's solution while the system is already the next
+  /// increment's: its reactions are those of the increment it solved.
+  std::vector<NodeReaction> reactions(const RestartState& state) const {
+    std::vector<double> contact(state.displacement.size(), 0.0);
+    now_->contact->add_nodal_forces(state, contact);
+    SolidMaterials::LawMemo memo;
+    if (solved_in_increment_) {
+      const IncrementSystem& now = *now_;
+      return support_reactions(now.model, now.dofs, [&](std::size_t e) { return now.materials.law(e, state.materials, memo); },
+                               state.displacement, contact);
+    }
+    const Model solved = schedule_.increment_model(schedule_.previous(*state.position));
+    const DofMap dofs(solved);
+    const SolidMaterials materials(solved);
+    return support_reactions(solved, dofs, [&](std::size_t e) { return materials.law(e, state.materials, memo); },
+                             state.displacement, contact);
   }
 
   /// Steps before the state's are done; the state's is done only when the run converged.
@@ -429,6 +477,7 @@ class GapContactAnalysis {
   LoadSchedule schedule_;
   Model increment_model_;                 // stepped models: the current increment's
   std::unique_ptr<IncrementSystem> now_;  // the current increment's system
+  bool solved_in_increment_ = false;      // the state's displacements were solved with now_ (not the increment before)
   Evaluation eval_;                       // per-element buffers, reused every iteration
 };
 

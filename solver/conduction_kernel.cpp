@@ -20,6 +20,35 @@ Eigen::Matrix3d triangle_conductance(const Vec2& p0, const Vec2& p1, const Vec2&
   return t.w * G.transpose() * (k * G);
 }
 
+/// The conductance, capacity and source vector of one linear triangle (the class comment's formulas).
+struct TriangleBlock {
+  Eigen::Matrix3d K;
+  Eigen::Matrix3d C;
+  Eigen::Vector3d source;  ///< integral N_i dV
+};
+
+TriangleBlock triangle_block(const Vec2& p0, const Vec2& p1, const Vec2& p2, const ConductionData& e,
+                             const Eigen::Matrix2d& k) {
+  TriangleBlock b;
+  b.K = triangle_conductance(p0, p1, p2, e, k);
+  const double area = 0.5 * twice_signed_area(p0, p1, p2);
+  if (e.analysis != AnalysisType::axisymmetric) {
+    b.C = Eigen::Matrix3d::Constant(e.thickness * area / 12.0);
+    b.C.diagonal() *= 2.0;
+    b.source = Eigen::Vector3d::Constant(e.thickness * area / 3.0);
+    return b;
+  }
+  const std::array<double, 3> r{p0.x(), p1.x(), p2.x()};
+  const double sum = r[0] + r[1] + r[2];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      b.C(i, j) = i == j ? two_pi * area * (2.0 * r[i] + sum) / 30.0 : two_pi * area * (r[i] + r[j] + sum) / 60.0;
+    }
+    b.source[i] = two_pi * area * (r[i] + sum) / 12.0;
+  }
+  return b;
+}
+
 }  // namespace
 
 Eigen::Matrix2d Conductivity::tensor() const {
@@ -45,6 +74,84 @@ Eigen::Matrix4d conduction_matrix(const ConductionData& e) {
     }
   }
   return condense<4, 1>(Kq, Vec5::Zero()).K;
+}
+
+ConductionBlock conduction_block(const ConductionData& e, const ConductionLoad& load) {
+  const Eigen::Matrix2d k = e.k.tensor();
+  ConductionBlock out;
+  if (e.node_count == 3) {
+    const TriangleBlock t = triangle_block(e.x[0], e.x[1], e.x[2], e, k);
+    const Eigen::Vector3d previous(load.previous[0], load.previous[1], load.previous[2]);
+    out.K.topLeftCorner<3, 3>() = t.K + load.capacity_rate * t.C;
+    out.f.head<3>() = load.source * t.source + load.capacity_rate * (t.C * previous);
+    return out;
+  }
+  // The conduction is condensed statically; the capacity reads the centre as the mean of the
+  // corners at every time (C4 = P^T C5 P), so the centre keeps no heat of its own between steps.
+  const auto p = quad_points(e.x);
+  Mat5 K = Mat5::Zero();
+  Mat5 C = Mat5::Zero();
+  Vec5 f = Vec5::Zero();
+  for (const auto& tri : quad_triangles) {
+    const TriangleBlock t = triangle_block(p[tri[0]], p[tri[1]], p[tri[2]], e, k);
+    for (int i = 0; i < 3; ++i) {
+      f[tri[i]] += load.source * t.source[i];
+      for (int j = 0; j < 3; ++j) {
+        K(tri[i], tri[j]) += t.K(i, j);
+        C(tri[i], tri[j]) += t.C(i, j);
+      }
+    }
+  }
+  const auto condensed = condense<4, 1>(K, f);
+  out.K = condensed.K;
+  out.f = condensed.f;
+  if (load.capacity_rate > 0.0) {
+    Eigen::Matrix<double, 5, 4> P = Eigen::Matrix<double, 5, 4>::Zero();
+    P.topRows<4>() = Eigen::Matrix4d::Identity();
+    P.row(4).setConstant(0.25);
+    const Eigen::Matrix4d C4 = P.transpose() * C * P;
+    const Eigen::Vector4d previous(load.previous[0], load.previous[1], load.previous[2], load.previous[3]);
+    out.K += load.capacity_rate * C4;
+    out.f += load.capacity_rate * (C4 * previous);
+  }
+  return out;
+}
+
+Vec2 conduction_flux(const ConductionData& e, const std::array<double, 4>& T) {
+  const Eigen::Matrix2d k = e.k.tensor();
+  const auto gradient = [&](const Vec2& p0, const Vec2& p1, const Vec2& p2, const std::array<double, 3>& t) {
+    const LinearTriangle tri = linear_triangle(p0, p1, p2, e.analysis, e.thickness);
+    Vec2 g = Vec2::Zero();
+    for (int i = 0; i < 3; ++i) g += Vec2(tri.dN_dr[i], tri.dN_dz[i]) * t[i];
+    return std::pair{g, tri.area};
+  };
+  if (e.node_count == 3) return -k * gradient(e.x[0], e.x[1], e.x[2], {T[0], T[1], T[2]}).first;
+  const auto p = quad_points(e.x);
+  const auto t = quad_values(T);
+  Vec2 sum = Vec2::Zero();
+  double area = 0.0;
+  for (const auto& tri : quad_triangles) {
+    const auto [g, a] = gradient(p[tri[0]], p[tri[1]], p[tri[2]], {t[tri[0]], t[tri[1]], t[tri[2]]});
+    sum += a * g;
+    area += a;
+  }
+  return -k * (sum / area);
+}
+
+EdgeBlock film_block(const Vec2& a, const Vec2& b, AnalysisType analysis, double thickness, double film,
+                     double ambient) {
+  const double length = (b - a).norm();
+  EdgeBlock out;
+  if (analysis == AnalysisType::axisymmetric) {
+    const double s = two_pi * film * length / 12.0;
+    out.K << s * (3.0 * a.x() + b.x()), s * (a.x() + b.x()), s * (a.x() + b.x()), s * (a.x() + 3.0 * b.x());
+  } else {
+    const double s = film * thickness * length / 6.0;
+    out.K << 2.0 * s, s, s, 2.0 * s;
+  }
+  const auto w = edge_weights(a, b, analysis, thickness);
+  out.f << film * ambient * w[0], film * ambient * w[1];
+  return out;
 }
 
 }  // namespace saasgaps

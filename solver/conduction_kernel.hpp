@@ -9,6 +9,7 @@
 /// temperature does not vary around the axis, so only the (r, z) conductivities enter.
 
 #include <array>
+#include <Eigen/Dense>
 
 #include "element_geometry.hpp"
 #include "model.hpp"
@@ -39,5 +40,45 @@ struct ConductionData {
 /// The element conductance matrix in the leading n x n block, n = node_count (one unknown per
 /// corner, in corner order); the rest stays zero.
 Eigen::Matrix4d conduction_matrix(const ConductionData& e);
+
+/// What a conduction step adds to the element besides K: a heat source s (power / volume) and,
+/// for an implicit time step, the capacity rate m = density c / dt with the previous temperatures.
+struct ConductionLoad {
+  double source = 0.0;
+  double capacity_rate = 0.0;        ///< density c / dt; 0 for a steady solve
+  std::array<double, 4> previous{};  ///< corner temperatures of the previous step (capacity_rate > 0)
+};
+
+/// The element block of one conduction solve, condensed to the corners:
+///   A = K + m C,  f = integral s N dV + m C T_previous,
+/// C_ij = integral N_i N_j dV the consistent capacity matrix. Per linear triangle (corners i, j, k):
+///   plane:        C = t A / 12 [2 1 1; 1 2 1; 1 1 2],       integral N_i dV = t A / 3;
+///   axisymmetric: C_ii = 2 pi A (3 r_i + r_j + r_k) / 30,   C_ij = 2 pi A (2 r_i + 2 r_j + r_k) / 60,
+///                 integral N_i dV = 2 pi A (2 r_i + r_j + r_k) / 12
+/// (from integral N_i^a N_j^b N_k^c dA = 2 A a! b! c! / (a + b + c + 2)!, r = sum r_m N_m). In a quad
+/// K and the source are condensed to the corners as for the solid; the capacity takes the centre
+/// temperature as the mean of the corners' (the value the quad interpolates there) at every time,
+/// C4 = P^T C5 P with P the 5 x 4 map of that interpolation, so the centre stores no heat of its own
+/// between steps (a condensed centre with capacity would need its previous value kept per element).
+struct ConductionBlock {
+  Eigen::Matrix4d K = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d f = Eigen::Vector4d::Zero();
+};
+ConductionBlock conduction_block(const ConductionData& e, const ConductionLoad& load);
+
+/// The heat flux q = -k grad T of the element (power / area): per triangle constant; for a quad the
+/// area-weighted mean of its four triangles with the centre at the mean of the corner temperatures.
+Vec2 conduction_flux(const ConductionData& e, const std::array<double, 4>& T);
+
+/// A convection film on the element edge a-b: the edge matrix h integral N_a N_b dS and the load
+/// h T_ambient integral N_a dS (dS = t ds, or 2 pi r ds in axisymmetry):
+///   plane:        h t L / 6 [2 1; 1 2];
+///   axisymmetric: 2 pi h L / 12 [3 r_a + r_b, r_a + r_b; r_a + r_b, r_a + 3 r_b].
+struct EdgeBlock {
+  Eigen::Matrix2d K = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d f = Eigen::Vector2d::Zero();
+};
+EdgeBlock film_block(const Vec2& a, const Vec2& b, AnalysisType analysis, double thickness, double film,
+                     double ambient);
 
 }  // namespace saasgaps

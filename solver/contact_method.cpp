@@ -18,6 +18,8 @@ void ContactMethod::check_solved(const RestartState&, const ContactOutcome&) con
 
 void ContactMethod::add_columns(const RestartState&, IterationRecord&) const {}
 
+void ContactMethod::add_nodal_forces(const RestartState&, std::span<double>) const {}
+
 std::string ContactMethod::converged_note(const RestartState&, const ContactOutcome&) const { return {}; }
 
 std::vector<ContactPairResult> ContactMethod::surface_results(const RestartState&) const { return {}; }

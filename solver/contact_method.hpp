@@ -71,6 +71,11 @@ class ContactMethod {
   /// from the outcome). Default: none.
   virtual void add_columns(const RestartState& state, IterationRecord& row) const;
 
+  /// Adds to `forces` (f_r, f_z per node, every node) the forces the method's contact exerts on the
+  /// nodes in iteration K's state (state.displacement, state.gaps.used, state.contact): what the
+  /// support reactions balance besides the solids and the loads (reactions.hpp). Default: none.
+  virtual void add_nodal_forces(const RestartState& state, std::span<double> forces) const;
+
   /// What "converged in K iterations" goes on to say about the contact (empty: nothing). Default: "".
   [[nodiscard]] virtual std::string converged_note(const RestartState& state, const ContactOutcome& outcome) const;
 

@@ -48,6 +48,9 @@ std::vector<DofMap::Prescribed> displacement_constraints(const Model& model) {
 
 DofMap::DofMap(const Model& model) : DofMap(node_ids(model), "rz", displacement_constraints(model)) {}
 
+DofMap::DofMap(const Model& model, std::string_view component_names, std::span<const Prescribed> prescribed)
+    : DofMap(node_ids(model), component_names, prescribed) {}
+
 void DofMap::equations(std::span<const int> nodes, std::span<Index> out) const {
   assert(out.size() >= nodes.size() * static_cast<std::size_t>(components_));
   std::size_t k = 0;

@@ -35,6 +35,9 @@ class DofMap {
   /// The displacement field (u_r, u_z) of a model, its constraints prescribed.
   explicit DofMap(const Model& model);
 
+  /// Any field on a model's nodes (e.g. "T", the temperature of a thermal run).
+  DofMap(const Model& model, std::string_view component_names, std::span<const Prescribed> prescribed);
+
   [[nodiscard]] Index size() const { return free_count_; }
   [[nodiscard]] int components() const { return components_; }
   /// Equation number of a node's component (for displacement 0 = r, 1 = z), or prescribed_dof.

@@ -63,6 +63,13 @@ Vec6 triangle_body_loads(const Vec2& p0, const Vec2& p1, const Vec2& p2, const T
   return f;
 }
 
+/// Loads of the initial strain eps0 over strain-displacement B and weight w: w B^T D eps0, the
+/// same path as the thermal strain's w B^T beta dT. Called only for a law that has one, so that
+/// every other element's loads are computed exactly as before.
+Vec6 initial_strain_loads(const Mat46& B, double w, const ElementData& e) {
+  return w * (B.transpose() * (e.law.D * e.law.initial_strain));
+}
+
 /// The corner-and-centre system of a SAAS quad before condensation (DOFs 8, 9: centre).
 struct QuadSystem {
   Mat10 K = Mat10::Zero();
@@ -80,6 +87,7 @@ QuadSystem quad_system(const ElementData& e) {
     const Mat6 k = t.w * t.B.transpose() * DB;
     const double dT_tri = (dT[tri[0]] + dT[tri[1]] + dT[tri[2]]) / 3.0;
     Vec6 f = (t.w * dT_tri) * (t.B.transpose() * e.law.beta);
+    if (e.law.has_initial_strain()) f += initial_strain_loads(t.B, t.w, e);
     if (loaded) f += triangle_body_loads(p[tri[0]], p[tri[1]], p[tri[2]], t, e);
     for (int a = 0; a < 3; ++a) {
       for (int b = 0; b < 3; ++b) q.K.block<2, 2>(2 * tri[a], 2 * tri[b]) += k.block<2, 2>(2 * a, 2 * b);
@@ -105,6 +113,7 @@ Mat6 axisymmetric_triangle_stiffness(const ElementData& e, const Triangle& centr
     const double w = two_pi * r * centroid.area / 3.0;
     k += w * B.transpose() * (e.law.D * B);
     thermal += (w * dT) * (B.transpose() * e.law.beta);
+    if (e.law.has_initial_strain()) thermal += initial_strain_loads(B, w, e);
   }
   return k;
 }
@@ -119,6 +128,7 @@ ElementMatrices triangle_matrices(const ElementData& e) {
   } else {
     m.K.topLeftCorner<6, 6>() = t.w * t.B.transpose() * (e.law.D * t.B);
     f = (t.w * dT_tri) * (t.B.transpose() * e.law.beta);
+    if (e.law.has_initial_strain()) f += initial_strain_loads(t.B, t.w, e);
   }
   f += triangle_body_loads(e.x[0], e.x[1], e.x[2], t, e);
   m.f.head<6>() = f;
@@ -129,9 +139,11 @@ ElementMatrices triangle_matrices(const ElementData& e) {
 void accumulate_triangle_state(const Triangle& t, const Vec6& u, double dT, const ElementData& e,
                                ElementState& sum) {
   Vec4 strain = t.B * u;
-  const Vec4 stress = e.law.D * strain - e.law.beta * dT;
+  Vec4 stress = e.law.D * strain - e.law.beta * dT;
+  if (e.law.has_initial_strain()) stress -= e.law.D * e.law.initial_strain;
   if (e.analysis == AnalysisType::plane_stress) {
     strain[th] = e.law.out_of_plane.dot(stress) + e.law.alpha3 * dT;
+    if (e.law.has_initial_strain()) strain[th] += e.law.initial_strain[th];
   }
   sum.strain += t.w * strain;
   sum.stress += t.w * stress;

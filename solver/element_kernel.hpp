@@ -36,7 +36,7 @@ struct ElementData {
   double spin = 0.0;           ///< density * omega^2: adds spin * r per unit volume along r
 };
 
-/// Condensed stiffness and equivalent nodal loads (thermal and body force) of one element.
+/// Condensed stiffness and equivalent nodal loads (thermal, initial strain and body force) of one element.
 struct ElementMatrices {
   Mat8 K = Mat8::Zero();
   Vec8 f = Vec8::Zero();
@@ -44,7 +44,7 @@ struct ElementMatrices {
 
 /// Strain and stress at the element centre: the weighted average of its triangles.
 struct ElementState {
-  Vec4 strain = Vec4::Zero();  ///< total strain (rr, zz, gamma_rz, th), thermal part included
+  Vec4 strain = Vec4::Zero();  ///< total strain (rr, zz, gamma_rz, th), thermal and initial parts included
   Vec4 stress = Vec4::Zero();  ///< (rr, zz, rz, th)
 };
 

@@ -12,7 +12,7 @@ std::string summarise(const std::vector<InputIssue>& issues) {
 }
 }  // namespace
 
-ModelError::ModelError(std::vector<InputIssue> issues)
-    : std::runtime_error(summarise(issues)), issues_(std::move(issues)) {}
+ModelError::ModelError(std::vector<InputIssue> issues, std::string document)
+    : std::runtime_error(summarise(issues)), issues_(std::move(issues)), document_(std::move(document)) {}
 
 }  // namespace saasgaps

@@ -16,14 +16,18 @@ struct InputIssue {
   std::string detail;
 };
 
-/// The model is invalid; carries every problem found, not just the first.
+/// An input document is invalid; carries every problem found, not just the first. document: what
+/// the pointers point into, as messages name it: "model" (the default), "assembly", "resume
+/// settings".
 class ModelError : public std::runtime_error {
  public:
-  explicit ModelError(std::vector<InputIssue> issues);
+  explicit ModelError(std::vector<InputIssue> issues, std::string document = "model");
   [[nodiscard]] const std::vector<InputIssue>& issues() const { return issues_; }
+  [[nodiscard]] const std::string& document() const { return document_; }
 
  private:
   std::vector<InputIssue> issues_;
+  std::string document_;
 };
 
 /// One degree of freedom: a node (by user id) and a direction, 'r' or 'z'.

@@ -14,7 +14,7 @@
 namespace saasgaps {
 
 ExactContact::ExactContact(const Model& model, const DofMap& dofs, const CscPattern& pattern, ContactPairs pairs)
-    : model_(model), dofs_(dofs), pairs_(std::move(pairs)) {
+    : model_(model), dofs_(dofs), pattern_(pattern), pairs_(std::move(pairs)) {
   rows_.resize(pairs_.pairs.size());
   for (std::size_t i = 0; i < rows_.size(); ++i) {
     const ContactPair& p = pairs_.pairs[i];
@@ -120,6 +120,33 @@ double ExactContact::multipliers(const Solver& solve, std::span<const double> rh
     previous = worst;
   }
   return worst;
+}
+
+void ExactContact::refine_equilibrium(const Solver& solve, std::span<const double> values,
+                                      std::span<const double> rhs, const std::vector<std::uint8_t>& active,
+                                      std::vector<double>& force, std::span<double> u) {
+  // r = f + C_A^T lambda - K u, K symmetric from its upper triangle.
+  std::copy(rhs.begin(), rhs.end(), b_.begin());
+  for (std::size_t i = 0; i < rows_.size(); ++i) {
+    if (!active[i]) continue;
+    for (const Entry& e : entries(rows_[i])) b_[e.equation] += e.coefficient * force[i];
+  }
+  for (Index j = 0; j < pattern_.n; ++j) {
+    for (Index k = pattern_.colptr[j]; k < pattern_.colptr[j + 1]; ++k) {
+      const Index i = pattern_.rowind[k];
+      b_[i] -= values[k] * u[j];
+      if (i != j) b_[j] -= values[k] * u[i];
+    }
+  }
+  std::vector<double> du(u.size());
+  solve(b_, du);
+  for (std::size_t j = 0; j < u.size(); ++j) u[j] += du[j];
+  for (std::size_t i = 0; i < rows_.size(); ++i) {
+    if (!active[i]) continue;
+    double c_du = 0.0;
+    for (const Entry& e : entries(rows_[i])) c_du += e.coefficient * du[e.equation];
+    force[i] -= rows_[i].rho * c_du;
+  }
 }
 
 ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const double> values,
@@ -230,6 +257,7 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
       }
     }
     if (changes == 0) {
+      refine_equilibrium(*solver, values, rhs, active, force, u);
       state.active = active;
       state.force = force;
       report.complementarity = 0.0;
@@ -258,6 +286,19 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
     active = std::move(next);
     for (std::size_t i = 0; i < n; ++i) {
       if (!active[i]) force[i] = 0.0;
+    }
+  }
+}
+
+void ExactContact::add_nodal_forces(const ContactState& state, std::span<double> forces) const {
+  const std::vector<ContactPair>& pairs = pairs_.pairs;
+  if (state.force.size() != pairs.size()) return;  // nothing solved yet
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& pair = pairs[i];
+    for (std::size_t k = 0; k < pair.node.size(); ++k) {
+      const auto node = static_cast<std::size_t>(pair.node[k]);
+      forces[2 * node] += state.force[i] * pair.weight[k] * pair.normal[0];
+      forces[2 * node + 1] += state.force[i] * pair.weight[k] * pair.normal[1];
     }
   }
 }

@@ -15,6 +15,12 @@
 /// until A repeats; an active set seen before (a cycle) changes only its worst pair. The first A is
 /// the last solve's, or the pairs whose initial gap is within 1 % of the smallest, and every pair whose
 /// initial gap is <= 0 (closed, or an interference of contact surfaces).
+///
+/// Equilibrium refinement: K_A is stiffer than K by the penalty, so the round-off of a solve with it,
+/// about eps rho |u|, is an out-of-balance force rho / k_i times that of a solve with K (1e-8 of the
+/// load on the report's problem 3, enough to show in the support reactions). The settled set's
+/// answer is corrected once: r = f + C^T lambda - K u (no penalty in it), K_A du = r, u += du,
+/// lambda_A -= rho C_A du, after which K u = f + C^T lambda holds to the round-off of K alone.
 
 #include <cstdint>
 #include <functional>
@@ -66,6 +72,10 @@ class ExactContact {
 
   [[nodiscard]] const ContactPairs& pairs() const { return pairs_; }
 
+  /// Adds the contact forces lambda_i w_ik n_i of `state` to the nodal forces (u_r, u_z per node):
+  /// the C^T lambda of K u = f + C^T lambda. Nothing before the first solve.
+  void add_nodal_forces(const ContactState& state, std::span<double> forces) const;
+
   /// Solves the contact problem for the assembled K (values, upper triangle in `pattern`) and f (rhs):
   /// the free displacements into u, the forces and active set into state (which, when not empty,
   /// is the warm start). Throws NotPositiveDefinite from the factorization, SolverError when the
@@ -98,12 +108,16 @@ class ExactContact {
   void factor_active(SparseCholesky& cholesky, std::span<const double> values, const std::vector<std::uint8_t>& active);
   /// Brings updatable_ from the set `held` to `active` by a rank-k update and downdate.
   void update_active(const std::vector<std::uint8_t>& held, const std::vector<std::uint8_t>& active);
+  /// The equilibrium refinement of the settled set (above).
+  void refine_equilibrium(const Solver& solve, std::span<const double> values, std::span<const double> rhs,
+                          const std::vector<std::uint8_t>& active, std::vector<double>& force, std::span<double> u);
   /// Multiplier iterations on the current factorization; returns the final max |g_A|.
   double multipliers(const Solver& solve, std::span<const double> rhs, const std::vector<std::uint8_t>& active,
                      std::vector<double>& force, std::span<double> u, double length, int& iterations);
 
   const Model& model_;
   const DofMap& dofs_;
+  const CscPattern& pattern_;  // of K (the system's; it outlives the method)
   ContactPairs pairs_;
   std::vector<Row> rows_;
   std::vector<Entry> entries_;    // every row's entries, row after row

@@ -86,6 +86,23 @@ void GapElements::measure(const GapHistory& history, std::span<const double> dis
   }
 }
 
+void GapElements::add_nodal_forces(const GapHistory& history, std::span<const double> displacement,
+                                   std::span<double> forces) const {
+  const auto& elements = settings_.elements;
+  for (std::size_t g = 0; g < elements.size(); ++g) {
+    const GapElement& gap = elements[g];
+    const ElementMatrices m =
+        element_matrices(gap_element_data(model_, g, closure_.law(g, history.used, model_.analysis)));
+    // The upper triangle is what the system assembles.
+    const Mat8 K = m.K.selfadjointView<Eigen::Upper>();
+    const Vec8 internal = K * element_displacements(displacement, gap.nodes, gap.node_count) - m.f;
+    for (int a = 0; a < gap.node_count; ++a) {
+      forces[2 * static_cast<std::size_t>(gap.nodes[a])] -= internal[2 * a];
+      forces[2 * static_cast<std::size_t>(gap.nodes[a]) + 1] -= internal[2 * a + 1];
+    }
+  }
+}
+
 void GapElements::keep_strains(const ContactOutcome& outcome, GapHistory& history) const {
   const std::size_t n = outcome.gaps.size();
   if (history.strain.empty()) {

@@ -47,6 +47,11 @@ class GapElements {
   /// it). Leaves state, converged and failure to the method.
   void measure(const GapHistory& history, std::span<const double> displacement, ContactOutcome& outcome) const;
 
+  /// Adds the forces the gap elements under history.used exert on their nodes, -(K_g u_g), to
+  /// `forces` (f_r, f_z per node).
+  void add_nodal_forces(const GapHistory& history, std::span<const double> displacement,
+                        std::span<double> forces) const;
+
   /// Records the outcome's strains in history.strain after a solve. Resuming, the saved strains go on
   /// (the same build recomputes them to the last bit; a binary built differently may differ by
   /// round-off, and that is still this model's state); anything more throws SolverError: the state

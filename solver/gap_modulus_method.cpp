@@ -70,6 +70,10 @@ GapState GapModulusMethod::state_of(double eps) const {
   return GapState::partial;
 }
 
+void GapModulusMethod::add_nodal_forces(const RestartState& state, std::span<double> forces) const {
+  gaps_.add_nodal_forces(state.gaps, state.displacement, forces);
+}
+
 void GapModulusMethod::add_columns(const RestartState& state, IterationRecord& row) const {
   GapElements::add_columns(state.gaps, row);
 }
@@ -97,8 +101,8 @@ std::string GapModulusMethod::loaded_open_gaps(const RestartState& state, const 
   if (count == 0) return {};
   std::ostringstream text;
   const bool one = count == 1;
-  text << "; warning: " << plural(static_cast<long long>(count), "gap") << (one ? " does" : " do")
-       << " not touch (closure below " << 100.0 * touching << " %) yet " << (one ? "carries" : "carry")
+  text << "; warning: " << plural(static_cast<long long>(count), "gap") << (one ? " is" : " are")
+       << " not closed (closure below " << 100.0 * touching << " %) yet " << (one ? "carries" : "carry")
        << " more than " << 100.0 * share << " % of the largest gap pressure (gap " << gaps[worst].id
        << ": closure " << gaps[worst].closure << " %, sigma_m " << gaps[worst].sigma_m
        << "); the classic stopping rule accepts " << (one ? "it, so its pressure" : "them, so their pressures")

@@ -28,6 +28,8 @@ class GapModulusMethod final : public ContactMethod {
   /// fixed point of the iteration, so test (e) would otherwise accept the floor springs' answer.
   void check_solved(const RestartState& state, const ContactOutcome& outcome) const override;
   void add_columns(const RestartState& state, IterationRecord& row) const override;
+  /// The gap elements' forces.
+  void add_nodal_forces(const RestartState& state, std::span<double> forces) const override;
   /// The warning about loaded gaps that do not touch (loaded_open_gaps), or nothing.
   [[nodiscard]] std::string converged_note(const RestartState& state, const ContactOutcome& outcome) const override;
 

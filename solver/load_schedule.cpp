@@ -63,6 +63,20 @@ bool LoadSchedule::advance(StepPosition& position, std::span<const double> displ
   return true;
 }
 
+StepPosition LoadSchedule::previous(const StepPosition& position) const {
+  assert(position.step > 0 || position.increment > 1);
+  StepPosition p = position;
+  p.iterations = 0;
+  if (p.increment > 1) {
+    p.increment -= 1;
+  } else {
+    // The previous step's last increment solves its end values (lambda = 1): its own start is not read.
+    p.step -= 1;
+    p.increment = model_.steps[static_cast<std::size_t>(p.step)].increments;
+  }
+  return p;
+}
+
 bool LoadSchedule::holds(const StepPosition& p, std::size_t node_count) const {
   return p.step >= 0 && p.step < static_cast<int>(model_.steps.size()) && p.increment >= 1 &&
          p.increment <= model_.steps[static_cast<std::size_t>(p.step)].increments && p.iterations >= 0 &&

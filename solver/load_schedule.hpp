@@ -51,6 +51,10 @@ class LoadSchedule {
   /// when it was the last increment of the last step.
   bool advance(StepPosition& position, std::span<const double> displacement) const;
 
+  /// The increment before `position` (not the first of the run), whose model increment_model gives:
+  /// the same step's previous one, or the last of the previous step.
+  [[nodiscard]] StepPosition previous(const StepPosition& position) const;
+
   /// True when a saved position names an increment of this model (node_count nodes).
   [[nodiscard]] bool holds(const StepPosition& position, std::size_t node_count) const;
 

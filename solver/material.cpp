@@ -46,6 +46,13 @@ ElasticConstants interpolate(const std::vector<PropertyRow>& table, double T, bo
   return c;
 }
 
+ThermalConstants interpolate_thermal(const std::vector<PropertyRow>& table, double T) {
+  const auto [i, w] = locate(table, T);
+  const PropertyRow& a = table[i];
+  const PropertyRow& b = table.size() > 1 ? table[i + 1] : table[i];
+  return {lerp(a.k1, b.k1, w), lerp(a.k2, b.k2, w), lerp(a.k3, b.k3, w), lerp(a.c, b.c, w)};
+}
+
 PlasticityRow interpolate(const std::vector<PlasticityRow>& table, double T) {
   const auto [i, w] = locate(table, T);
   const PlasticityRow& a = table[i];

@@ -22,6 +22,14 @@ struct ElasticConstants {
 /// material G12 = E / (2 (1 + nu)) from the interpolated E and nu.
 ElasticConstants interpolate(const std::vector<PropertyRow>& table, double T, bool isotropic);
 
+/// Conductivities k1, k2, k3 and specific heat c at temperature T, interpolated like the elastic
+/// table (zeros for a material whose rows do not give them).
+struct ThermalConstants {
+  double k1 = 0.0, k2 = 0.0, k3 = 0.0;
+  double c = 0.0;
+};
+ThermalConstants interpolate_thermal(const std::vector<PropertyRow>& table, double T);
+
 /// Plasticity row at temperature T, interpolated like the elastic table.
 PlasticityRow interpolate(const std::vector<PlasticityRow>& table, double T);
 
@@ -51,12 +59,16 @@ bool positive_definite(const ElasticConstants& c);
 /// angle_deg from +r. Stresses transform back with its transpose: sigma_global = T^T sigma_mat.
 Mat4 strain_rotation(double angle_deg);
 
-/// The constitutive law of one element in global axes: stress = D strain - beta dT.
+/// The constitutive law of one element in global axes: stress = D (strain - initial_strain) - beta dT.
 struct Constitutive {
   Mat4 D = Mat4::Zero();
   Vec4 beta = Vec4::Zero();          ///< thermal stress per degree of temperature rise
-  Vec4 out_of_plane = Vec4::Zero();  ///< plane stress only: eps_th = out_of_plane . stress + alpha3 dT
+  Vec4 out_of_plane = Vec4::Zero();  ///< plane stress only: eps_th = out_of_plane . stress + alpha3 dT (+ initial)
   double alpha3 = 0.0;
+  /// A strain the element carries without stress, beside the thermal one (global axes rr, zz,
+  /// gamma_rz, th): the plastic strain of an element unloading elastically (plastic_history.hpp).
+  Vec4 initial_strain = Vec4::Zero();
+  [[nodiscard]] bool has_initial_strain() const { return (initial_strain.array() != 0.0).any(); }
 };
 
 /// Plane stress keeps sigma_th = 0 (3x3 reduced stiffness); plane strain keeps eps_th = 0 and

@@ -22,6 +22,16 @@ double reference_modulus(const ElasticConstants& c, bool isotropic) {
   return isotropic ? c.E1 : (c.E1 + c.E2 + c.E3) / 3.0;
 }
 
+bool operator==(const MaterialState& a, const MaterialState& b) {
+  if (a.secant_ratio != b.secant_ratio || a.compression != b.compression || a.peaks != b.peaks) return false;
+  if (a.unloading.size() == b.unloading.size()) return a.unloading == b.unloading;
+  const std::size_t n = std::max(a.unloading.size(), b.unloading.size());
+  for (std::size_t e = 0; e < n; ++e) {
+    if (a.unloads(e) != b.unloads(e)) return false;
+  }
+  return true;
+}
+
 SolidMaterials::SolidMaterials(const Model& model) : model_(model) {
   temperature_.reserve(model.elements.size());
   for (const Element& el : model.elements) {
@@ -46,7 +56,9 @@ ElasticConstants SolidMaterials::constants(std::size_t e, DirectionChoice choice
 
 Constitutive SolidMaterials::law(std::size_t e, const MaterialState& s) const {
   const ElasticConstants c = secant(constants(e, s.compression[e]), s.secant_ratio[e]);
-  return constitutive(c, model_.analysis, model_.elements[e].angle_deg);
+  Constitutive law = constitutive(c, model_.analysis, model_.elements[e].angle_deg);
+  law.initial_strain = s.initial_strain(e);
+  return law;
 }
 
 const Constitutive& SolidMaterials::law(std::size_t e, const MaterialState& s, LawMemo& memo) const {
@@ -55,6 +67,8 @@ const Constitutive& SolidMaterials::law(std::size_t e, const MaterialState& s, L
       memo.secant_ratio != s.secant_ratio[e] || memo.compression != s.compression[e]) {
     memo = {el.material, temperature_[e], el.angle_deg, s.secant_ratio[e], s.compression[e], law(e, s)};
   }
+  // The initial strain is the element's own; everything else the memo's key decides.
+  memo.law.initial_strain = s.initial_strain(e);
   return memo.law;
 }
 
@@ -95,16 +109,40 @@ void SolidMaterials::update(const MaterialState& used, std::span<const ElementSt
       const double E = reference_modulus(constants(e, used.compression[e]), m.isotropic);
       const BilinearCurve curve{E, row.yield_stress, row.hardening_ratio};
       const double sigma_eff = von_mises(stress);
-      // The solution's effective stress sits on the secant line E_s = ratio E: its effective
-      // (mechanical) strain is sigma_eff / E_s. Read the curve at that same strain.
-      const double eps_eff = sigma_eff / (used.secant_ratio[e] * E);
-      const double ratio = eps_eff > 0.0 ? curve.stress(eps_eff) / (E * eps_eff) : 1.0;
+      static const PlasticPeak never_yielded;
+      const PlasticBranch branch = next_branch(used.peaks.empty() ? never_yielded : used.peaks[e], curve,
+                                               used.unloads(e), used.secant_ratio[e], sigma_eff, tolerance);
+      const double ratio = branch.secant_ratio;
       u.next.secant_ratio[e] = ratio;
+      if (branch.unloading != used.unloads(e)) {
+        if (u.next.unloading.empty()) u.next.unloading.assign(n, 0);
+        u.next.unloading[e] = branch.unloading ? 1 : 0;
+      }
       u.yielded[e] = sigma_eff > row.yield_stress;
-      u.converged[e] = std::abs(ratio - used.secant_ratio[e]) <= tolerance * used.secant_ratio[e];
+      u.converged[e] = !branch.changed &&
+                       std::abs(ratio - used.secant_ratio[e]) <= tolerance * used.secant_ratio[e];
     }
     if (u.yielded[e]) ++u.yielded_count;
     if (!u.converged[e]) ++u.nonconverged_count;
+  }
+}
+
+void SolidMaterials::record_peaks(const MaterialState& used, std::span<const ElementState> states,
+                                  MaterialState& next) const {
+  const std::size_t n = model_.elements.size();
+  assert(states.size() == n);
+  for (std::size_t e = 0; e < n; ++e) {
+    const Element& el = model_.elements[e];
+    const Material& m = model_.materials[el.material];
+    // Below the yield strain the secant law is the elastic one: nothing to keep.
+    if (m.plasticity.empty() || used.unloads(e) || !(used.secant_ratio[e] < 1.0)) continue;
+    const ElasticConstants elastic = constants(e, used.compression[e]);
+    const double sigma_eff = von_mises(states[e].stress);
+    const double eps_eff = sigma_eff / (used.secant_ratio[e] * reference_modulus(elastic, m.isotropic));
+    if (!next.peaks.empty() && eps_eff <= next.peaks[e].strain) continue;
+    if (next.peaks.empty()) next.peaks.assign(n, PlasticPeak{});
+    next.peaks[e] = {eps_eff, sigma_eff,
+                     plastic_strain(elastic, secant(elastic, used.secant_ratio[e]), el.angle_deg, states[e].stress)};
   }
 }
 

@@ -30,6 +30,11 @@ struct PropertyRow {
   double nu12 = 0.0, nu13 = 0.0, nu23 = 0.0;
   double G12 = 0.0;
   double alpha1 = 0.0, alpha2 = 0.0, alpha3 = 0.0;  ///< secant expansion from the reference temperature
+  /// Heat conduction (thermal runs only; Material::conducts / stores_heat say whether the rows gave
+  /// them): conductivity along axes 1, 2, 3 (power / length / temperature; isotropic k1 = k2 = k3 =
+  /// k) and specific heat c (energy / mass / temperature, with Material::density).
+  double k1 = 0.0, k2 = 0.0, k3 = 0.0;
+  double c = 0.0;
 };
 
 /// Bilinear effective stress-strain curve at temperature T: yield stress and PEMR, the ratio of the
@@ -48,6 +53,8 @@ struct Material {
   std::vector<PropertyRow> table;              ///< sorted by T, at least one row
   std::vector<PropertyRow> compression_table;  ///< empty: same properties in tension and compression
   std::vector<PlasticityRow> plasticity;       ///< empty: linear elastic
+  bool conducts = false;     ///< every row of `table` gives k (or k1, k2, k3)
+  bool stores_heat = false;  ///< every row of `table` gives c
 };
 
 /// A solid element: 3 nodes (constant-strain triangle) or 4 nodes (SAAS quadrilateral of four
@@ -81,6 +88,20 @@ enum class GapMethod {
   exact,    ///< gap elements give node pairs; frictionless unilateral contact solved exactly
 };
 
+/// Heat conductance across an interface (power / area / temperature): `closed` over the contact
+/// pressure p for touching faces (linear in p between rows, constant beyond the ends; one row for a
+/// constant), and gas conduction k_gas / gap for open ones. The same shape serves gap elements
+/// (GapSettings::conductance) and contact pairs.
+struct ConductanceRow {
+  double p = 0.0;
+  double h = 0.0;
+};
+
+struct InterfaceConductance {
+  std::vector<ConductanceRow> closed;  ///< sorted by p, at least one row
+  double gas_conductivity = 0.0;       ///< k_gas >= 0 (0: open faces insulate)
+};
+
 struct GapSettings {
   GapMethod method = GapMethod::classic;
   double initial_modulus = 100.0;          ///< E0, every gap's modulus in iteration 1
@@ -90,6 +111,7 @@ struct GapSettings {
   double shear_ratio = 1.0e-6;             ///< gap shear modulus / current tensile modulus
   GapConvergenceTest convergence_test = GapConvergenceTest::report;
   std::vector<GapElement> elements;
+  std::optional<InterfaceConductance> conductance;  ///< heat across the gaps (thermal runs); none: insulating
 };
 
 /// Prescribed displacement components of one node.
@@ -152,30 +174,53 @@ struct SurfaceDefinition {
   std::vector<std::array<int, 2>> edges;
 };
 
-/// One row of a contact conductance table: h across touching faces at contact pressure p.
-struct ConductanceRow {
-  double p = 0.0;
-  double h = 0.0;
-};
-
-/// Heat conduction across a contact pair (read and stored; used by heat conduction only).
-struct ContactConductance {
-  /// h of touching faces over contact pressure, increasing p, held constant beyond its ends; a
-  /// number in the model is the one row {0, h}.
-  std::vector<ConductanceRow> closed;
-  double gas_conductivity = 0.0;  ///< open faces conduct gas_conductivity / gap
-};
-
 /// A pair of contact surfaces (model.contact.pairs): side A (non-mortar) first, side B second.
 struct SurfacePair {
   std::array<int, 2> surfaces{-1, -1};  ///< indices into ContactSettings::surfaces, distinct
   double friction = 0.0;                ///< Coulomb mu (0: frictionless, the only one solved today)
-  std::optional<ContactConductance> conductance;
+  std::optional<InterfaceConductance> conductance;  ///< heat across the pair (thermal runs)
 };
 
 struct ContactSettings {
   std::vector<SurfaceDefinition> surfaces;
   std::vector<SurfacePair> pairs;
+};
+
+/// One boundary edge of a thermal condition: a side of exactly one solid element.
+struct ThermalEdge {
+  int element = 0;  ///< index of the solid element that owns the edge
+  int node_a = 0;
+  int node_b = 0;
+};
+
+/// One entry of thermal.boundary: a prescribed temperature, a flux into the body (power / area), or
+/// a convection film whose outward flux is film (T - ambient).
+struct ThermalBoundary {
+  enum class Kind { temperature, flux, film };
+  Kind kind = Kind::temperature;
+  std::vector<ThermalEdge> edges;
+  double value = 0.0;    ///< the temperature, the flux or the film coefficient
+  double ambient = 0.0;  ///< film only
+};
+
+/// Heat generated per unit volume in every element of a material.
+struct HeatSource {
+  int material = 0;  ///< index into Model::materials
+  double power_density = 0.0;
+};
+
+enum class ThermalType { steady, transient };
+
+/// The thermal section: the temperatures of the stress analysis come from heat conduction on the
+/// same mesh (thermal_analysis.hpp). Edges without a boundary entry are insulated.
+struct Thermal {
+  ThermalType type = ThermalType::steady;
+  std::vector<ThermalBoundary> boundary;
+  std::vector<HeatSource> sources;
+  double initial_temperature = 0.0;  ///< transient
+  double time_step = 0.0;            ///< transient, > 0
+  double end_time = 0.0;             ///< transient, > 0
+  std::vector<double> output_times;  ///< transient: strictly increasing in (0, end_time]
 };
 
 /// Indices tracked in every iteration's history row.
@@ -208,6 +253,7 @@ struct Model {
   std::vector<Constraint> constraints;
   Loads loads;
   std::vector<Step> steps;  ///< empty: one step of one increment with `loads` (no step output at all)
+  std::optional<Thermal> thermal;  ///< present: node temperatures come from conduction, not loads
   SolverOptions solver;
   OutputOptions output;
 

@@ -124,6 +124,11 @@ void MortarMethod::add_columns(const RestartState& state, IterationRecord& row) 
   row.active_set_iterations = report_.active_set_iterations;
 }
 
+void MortarMethod::add_nodal_forces(const RestartState& state, std::span<double> forces) const {
+  if (gaps_) gaps_->add_nodal_forces(state, forces);
+  if (exact_) exact_->add_nodal_forces(state.contact, forces);
+}
+
 std::string MortarMethod::converged_note(const RestartState& state, const ContactOutcome& outcome) const {
   std::ostringstream text;
   if (gaps_) text << gaps_->converged_note(state, outcome);

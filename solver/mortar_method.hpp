@@ -71,6 +71,8 @@ class MortarMethod final : public ContactMethod {
   void evaluate(RestartState& state, ContactOutcome& outcome) const override;
   void check_solved(const RestartState& state, const ContactOutcome& outcome) const override;
   void add_columns(const RestartState& state, IterationRecord& row) const override;
+  /// The gap method's forces, then the rows' contact forces when this method solves them.
+  void add_nodal_forces(const RestartState& state, std::span<double> forces) const override;
   /// The gap method's note, then "(contact surfaces: N of M points in contact, ...)", and a warning
   /// for each pair whose surfaces never face each other (it has no rows).
   [[nodiscard]] std::string converged_note(const RestartState& state, const ContactOutcome& outcome) const override;

@@ -103,6 +103,11 @@ void NodePairMethod::add_columns(const RestartState& state, IterationRecord& row
   row.active_set_iterations = report_.active_set_iterations;
 }
 
+void NodePairMethod::add_nodal_forces(const RestartState& state, std::span<double> forces) const {
+  gaps_.add_nodal_forces(state.gaps, state.displacement, forces);
+  exact_.add_nodal_forces(state.contact, forces);
+}
+
 std::string NodePairMethod::converged_note(const RestartState& state, const ContactOutcome&) const {
   std::ostringstream text;
   std::size_t touching = 0;

@@ -36,6 +36,8 @@ class NodePairMethod final : public ContactMethod {
   void check_solved(const RestartState& state, const ContactOutcome& outcome) const override;
   /// Pairs in contact, complementarity residual, active sets of the last solve.
   void add_columns(const RestartState& state, IterationRecord& row) const override;
+  /// The floor springs' forces and the pairs' contact forces lambda_i w_ik n_i (K u = f + C^T lambda).
+  void add_nodal_forces(const RestartState& state, std::span<double> forces) const override;
   /// "(exact contact: N of M node pairs in contact, complementarity residual r)" (the node pairs
   /// only; the residual is of every row).
   [[nodiscard]] std::string converged_note(const RestartState& state, const ContactOutcome& outcome) const override;

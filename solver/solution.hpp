@@ -3,6 +3,7 @@
 /// stresses and strains, and gap states.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,14 @@ struct GapResult {
   GapFailure failure = GapFailure::none;
 };
 
+/// The force the supports exert on a constrained node (reactions.hpp): plane analyses on the whole
+/// thickness, axisymmetric ones on the full ring.
+struct NodeReaction {
+  int id = 0;        ///< node id
+  double f_r = 0.0;  ///< along r (0 where u_r is free)
+  double f_z = 0.0;  ///< along z (0 where u_z is free)
+};
+
 /// One load step of a stepped model: converged when its last increment converged; not_converged
 /// when the run ended (max_iterations, or a stop on request) before it did or before it began.
 /// (failed is the service's word for a run that threw; a finished run never says it.)
@@ -88,6 +97,18 @@ struct ContactPairResult {
   std::vector<ContactPointResult> points;
 };
 
+/// The heat conduction of a thermal run (thermal_analysis.hpp).
+struct ThermalResult {
+  std::vector<double> T;          ///< per node: steady, the solution; transient, at the last output time
+  std::vector<Vec2> flux;         ///< per solid element, (q_r, q_z) = -k grad T with T above
+  std::vector<double> times;      ///< transient: the output times (empty when steady)
+  std::vector<std::vector<double>> history;  ///< transient: T per node at each output time
+  int iterations = 0;             ///< steady: conduction solves of the k(T) iteration (last pass)
+  int passes = 1;                 ///< thermal-contact passes (conducting gaps), else 1
+  int time_steps = 0;             ///< transient: steps taken
+  int factorizations = 0;         ///< of the conduction matrix
+};
+
 struct Solution {
   RunStatus status = RunStatus::not_converged;
   int iterations = 0;
@@ -97,7 +118,9 @@ struct Solution {
   std::vector<ElementResult> elements;
   std::vector<GapResult> gaps;
   std::vector<ContactPairResult> contact;  ///< one per model.contact pair; empty without contact
+  std::vector<NodeReaction> reactions;  ///< every node with a prescribed component, in node order (empty before iteration 1)
   std::vector<StepResult> steps;  ///< stepped models only, one per Model::steps entry; else empty
+  std::optional<ThermalResult> thermal;  ///< models with `thermal` only
 };
 
 }  // namespace saasgaps

@@ -41,30 +41,33 @@ StiffnessSystem::StiffnessSystem(const Model& model, const DofMap& dofs, const C
   assemble_external_loads();
 }
 
-void StiffnessSystem::assemble_external_loads() {
-  external_.assign(static_cast<std::size_t>(dofs_.size()), 0.0);
-  const auto add = [this](int node, const Vec2& force) {
-    for (int dir = 0; dir < 2; ++dir) {
-      const Index eq = dofs_.equation(node, dir);
-      if (eq >= 0) external_[eq] += force[dir];
-    }
-  };
-  for (const NodalForce& f : model_.loads.nodal_forces) add(f.node, Vec2(f.f_r, f.f_z));
-  for (const EdgePressure& p : model_.loads.pressures) {
-    const Element& el = model_.elements[p.element];
-    const auto x = corner_coordinates(model_, el.nodes, el.node_count);
+void for_each_external_load(const Model& model, const std::function<void(int node, const Vec2& force)>& add) {
+  for (const NodalForce& f : model.loads.nodal_forces) add(f.node, Vec2(f.f_r, f.f_z));
+  for (const EdgePressure& p : model.loads.pressures) {
+    const Element& el = model.elements[p.element];
+    const auto x = corner_coordinates(model, el.nodes, el.node_count);
     Vec2 centroid = Vec2::Zero();
     for (int a = 0; a < el.node_count; ++a) centroid += x[a] / el.node_count;
-    const Vec2 a(model_.nodes[p.node_a].r, model_.nodes[p.node_a].z);
-    const Vec2 b(model_.nodes[p.node_b].r, model_.nodes[p.node_b].z);
+    const Vec2 a(model.nodes[p.node_a].r, model.nodes[p.node_a].z);
+    const Vec2 b(model.nodes[p.node_b].r, model.nodes[p.node_b].z);
     const Vec2 tangent = (b - a).normalized();
     Vec2 inward(-tangent.y(), tangent.x());
     if (inward.dot(centroid - 0.5 * (a + b)) < 0.0) inward = -inward;
     const Vec2 traction = p.normal * inward + p.shear * tangent;
-    const auto loads = edge_traction_loads(a, b, traction, model_.analysis, model_.thickness);
+    const auto loads = edge_traction_loads(a, b, traction, model.analysis, model.thickness);
     add(p.node_a, loads[0]);
     add(p.node_b, loads[1]);
   }
+}
+
+void StiffnessSystem::assemble_external_loads() {
+  external_.assign(static_cast<std::size_t>(dofs_.size()), 0.0);
+  for_each_external_load(model_, [this](int node, const Vec2& force) {
+    for (int dir = 0; dir < 2; ++dir) {
+      const Index eq = dofs_.equation(node, dir);
+      if (eq >= 0) external_[eq] += force[dir];
+    }
+  });
 }
 
 void StiffnessSystem::assemble_solids(const LawOf& law_of) {

@@ -23,6 +23,10 @@ namespace saasgaps {
 /// The constitutive law of element (or gap) number i.
 using LawOf = std::function<Constitutive(std::size_t)>;
 
+/// The model's nodal forces and the consistent nodal loads of its edge tractions, one add(node index,
+/// (f_r, f_z)) per node and load, in assembly order: f_loads of K u = f (element loads apart).
+void for_each_external_load(const Model& model, const std::function<void(int node, const Vec2& force)>& add);
+
 class StiffnessSystem {
  public:
   /// couplings: constraint rows across nodes no element joins (contact surfaces' rows), held by the

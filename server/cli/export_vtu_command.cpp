@@ -11,11 +11,12 @@ int run_export_vtu(const ExportVtuOptions& options) {
   const io::VtuFormat format = io::vtu_format(options.format);
   const std::string& out = options.output_path;
   if (out.size() > 4 && out.compare(out.size() - 4, 4, ".pvd") == 0) {
-    io::write_vtu_series(read_result_document(options.result_path), out.substr(0, out.size() - 4), format,
+    io::write_vtu_series(read_result_arrays(options.result_path, io::vtu_result_selection()),
+                         out.substr(0, out.size() - 4), format,
                          [](const std::string& file, const std::string& bytes) { write_file_atomically(file, bytes); });
     return 0;
   }
-  write_file_atomically(out, io::result_to_vtu(read_result_document(options.result_path), format));
+  write_file_atomically(out, io::result_to_vtu(read_result_arrays(options.result_path, io::vtu_result_selection()), format));
   return 0;
 }
 

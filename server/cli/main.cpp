@@ -19,6 +19,7 @@
 #include "cli/validate_command.hpp"
 #include "cli/worker_command.hpp"
 #include "io/run_limits.hpp"
+#include "plot/canvas.hpp"
 #include "plot/color_map.hpp"
 
 int main(int argc, char** argv) {
@@ -135,8 +136,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   plot_cmd->add_option("--deformed", plot.deformed, "Draw the deformed mesh, displacements times SCALE (or 'auto')");
   plot_cmd->add_flag("--mesh", plot.mesh, "Draw the element edges");
-  plot_cmd->add_option("--width", plot.width, "Image width, px")->check(CLI::Range(16, 8000))->capture_default_str();
-  plot_cmd->add_option("--height", plot.height, "Image height, px")->check(CLI::Range(16, 8000))->capture_default_str();
+  const CLI::Range image_side(saasgaps::plot::Canvas::min_side, saasgaps::plot::Canvas::max_side);
+  plot_cmd->add_option("--width", plot.width, "Image width, px")->check(image_side)->capture_default_str();
+  plot_cmd->add_option("--height", plot.height, "Image height, px")->check(image_side)->capture_default_str();
   plot_cmd->add_option("--bands", plot.bands, "At most this many colour bands")->check(CLI::Range(2, 40))
       ->capture_default_str();
   plot_cmd->add_option("--levels", plot.levels, "Band levels: even (round, equal width) or quantile (equal area)")

@@ -47,7 +47,7 @@ int run_plot(const PlotOptions& options) {
       throw std::invalid_argument(std::string("--path: ") + e.what());
     }
   }
-  const nlohmann::json result = read_result_document(options.result_path, plot::result_members_for(request));
+  const plot::PlotResult result(read_result_arrays(options.result_path, plot::result_selection_for(request)));
   write_file_atomically(options.output_path,
                         table ? plot::render_table(result, request) : plot::render_plot(result, request));
   return 0;

@@ -5,12 +5,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/json_subset.hpp"
+#include "io/result_arrays.hpp"
 
 namespace saasgaps::cli {
 
-/// The parsed result document; a file that cannot be read or is not JSON is a std::runtime_error
-/// naming the file. `members` (optional) keeps only what a reader needs (io/json_subset.hpp).
-nlohmann::json read_result_document(const std::string& path, const io::MemberFilter& members = nullptr);
+/// What `selection` names of the result document in the file, read as typed arrays in one pass over
+/// the file (io/result_arrays.hpp): the plots of a 10^6-unknown result never hold its text or a tree
+/// of it. A file that cannot be read, is not JSON, or is not a result (a model, a restart state) is a
+/// std::runtime_error naming the file; a malformed mesh is the arrays' mesh_error.
+io::ResultArrays read_result_arrays(const std::string& path, const io::ResultSelection& selection);
 
 }  // namespace saasgaps::cli

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "analysis.hpp"
+#include "thermal_analysis.hpp"
 #include "errors.hpp"
 #include "cli/file_io.hpp"
 #include "io/json_text.hpp"
@@ -112,7 +113,7 @@ int run_solve(const SolveOptions& options) {
   if (!options.cache_dir.empty()) cache.emplace(options.cache_dir);
   std::optional<Solution> solution;
   try {
-    solution = solve(model, &observer, resume ? &*resume : nullptr, options.changes, cache ? &*cache : nullptr);
+    solution = solve_with_heat(model, &observer, resume ? &*resume : nullptr, options.changes, cache ? &*cache : nullptr);
   } catch (const std::exception& e) {
     // The failure is reported by main(); the result document records it too.
     if (destination != "-") {
@@ -129,7 +130,9 @@ int run_solve(const SolveOptions& options) {
   // A VTU that cannot be written must not turn a good result into a failed one. The VTU writer
   // works from a result tree: only this opt-in export builds one.
   if (!options.vtu_path.empty()) {
-    write_file_atomically(options.vtu_path, io::result_to_vtu(nlohmann::json::parse(io::result_text(model, *solution))));
+    // The result's text read as arrays, as `saasgaps export-vtu` reads the file: no tree of it.
+    write_file_atomically(options.vtu_path, io::result_to_vtu(io::read_result_arrays(io::result_text(model, *solution),
+                                                                                     io::vtu_result_selection())));
   }
   return solution->status == RunStatus::converged ? 0 : 3;
 }

@@ -54,7 +54,16 @@ class Importer {
   json run();
 
  private:
-  void report(std::string pointer, std::string detail) { issues_.push_back({std::move(pointer), std::move(detail)}); }
+  void report(std::string pointer, std::string detail) {
+    // An upload's files sit in a private directory the client never saw: name them as uploaded.
+    if (access_ == FileAccess::base_only) {
+      const std::string directory = (base_ / "").string();
+      for (std::size_t at = detail.find(directory); at != std::string::npos; at = detail.find(directory, at)) {
+        detail.erase(at, directory.size());
+      }
+    }
+    issues_.push_back({std::move(pointer), std::move(detail)});
+  }
 
   // ---- shape checks
   bool object(const json& v, const std::string& p, std::initializer_list<std::string_view> required,
@@ -178,6 +187,11 @@ std::optional<fs::path> Importer::resolve_file(const std::string& name, const st
   if (access_ == FileAccess::base_only &&
       (given.filename() != given || name.empty() || name.front() == '.' || name.find('\\') != std::string::npos)) {
     report(pointer, "\"" + name + "\" must be the plain name of an uploaded file (no directories)");
+    return std::nullopt;
+  }
+  if (access_ == FileAccess::base_only && !fs::exists(base_ / given)) {
+    report(pointer, "no part of the upload carries the file \"" + name + "\": add a part with filename=\"" + name +
+                        "\" (curl -F 'file=@" + name + "')");
     return std::nullopt;
   }
   return given.is_absolute() ? given : base_ / given;
@@ -705,7 +719,7 @@ void Importer::validate(const json& model) {
 json Importer::run() {
   if (!object(doc_, "", {"schema_version", "title", "mesh", "analysis", "materials", "regions", "constraints"},
               {"description", "units", "loads", "gaps", "solver", "output"})) {
-    throw ModelError(std::move(issues_));
+    throw ModelError(std::move(issues_), "assembly");
   }
   if (const auto v = doc_.find("schema_version"); v != doc_.end() && !(v->is_number_integer() && *v == 1)) {
     report("/schema_version", "schema_version must be the integer 1, got " + shown(*v));
@@ -745,7 +759,7 @@ json Importer::run() {
     if (const auto v = doc_.find(key); v != doc_.end()) model[key] = *v;
   }
   if (issues_.empty()) validate(model);
-  if (!issues_.empty()) throw ModelError(std::move(issues_));
+  if (!issues_.empty()) throw ModelError(std::move(issues_), "assembly");
   return model;
 }
 

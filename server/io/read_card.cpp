@@ -32,7 +32,8 @@ ResumeOptions read_card_from_json(const json& value, ReadCardForm form, bool mod
   card.restart_schedule = form == ReadCardForm::changes;
   if (!value.is_object()) {
     throw ModelError(std::vector<InputIssue>{{"", "must be an object, like {\"max_iterations\": 40}, got " +
-                                                      json_text(value)}});
+                                                      json_text(value)}},
+                     "resume settings");
   }
   const bool with_limit = form != ReadCardForm::in_force;
   for (const auto& [key, member] : value.items()) {
@@ -78,7 +79,7 @@ ResumeOptions read_card_from_json(const json& value, ReadCardForm form, bool mod
                                      (form == ReadCardForm::stored ? ", restart_schedule" : "") + ")"});
     }
   }
-  if (!issues.empty()) throw ModelError(std::move(issues));
+  if (!issues.empty()) throw ModelError(std::move(issues), "resume settings");
   return card;
 }
 

@@ -27,9 +27,9 @@ void write_node_ids(JsonWriter& out, const Model& model, const std::array<int, 4
 
 // Keys in alphabetical order in every object (see the header).
 
-void write_node(JsonWriter& out, const Model& model, const NodeResult& n, std::size_t index) {
+void write_node(JsonWriter& out, const Model& model, const NodeResult& n, std::size_t index, double T) {
   out.begin_object()
-      .field("T", final_loads(model).node_temperature[index])
+      .field("T", T)
       .field("id", n.id)
       .field("r", model.nodes[index].r)
       .field("u_r", n.u_r)
@@ -38,7 +38,9 @@ void write_node(JsonWriter& out, const Model& model, const NodeResult& n, std::s
       .end_object();
 }
 
-void write_element(JsonWriter& out, const Model& model, const Element& el, const ElementResult& e) {
+/// temperature: the element's mean; flux: (q_r, q_z) of thermal runs, else nullptr.
+void write_element(JsonWriter& out, const Model& model, const Element& el, const ElementResult& e, double temperature,
+                   const Vec2* flux) {
   out.begin_object()
       .field("angle", e.principal.angle_deg)
       .field("effective", e.effective)
@@ -50,14 +52,15 @@ void write_element(JsonWriter& out, const Model& model, const Element& el, const
       .field("material", model.materials[el.material].id);
   out.key("nodes");
   write_node_ids(out, model, el.nodes, el.node_count);
-  out.field("plastic_converged", e.plastic_converged)
-      .field("sigma_1", e.principal.s1)
+  out.field("plastic_converged", e.plastic_converged);
+  if (flux != nullptr) out.field("q_r", flux->x()).field("q_z", flux->y());
+  out.field("sigma_1", e.principal.s1)
       .field("sigma_2", e.principal.s2)
       .field("sigma_r", e.stress[rr])
       .field("sigma_theta", e.stress[th])
       .field("sigma_z", e.stress[zz])
       .field("tau_rz", e.stress[rz])
-      .field("temperature", element_temperature(model, el.nodes, el.node_count))
+      .field("temperature", temperature)
       .field("yield", e.yielded)
       .end_object();
 }
@@ -106,7 +109,16 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s) {
   // Coordinates, connectivity and temperatures ride along so that a result can be plotted or
   // exported on its own.
   out.key("elements").begin_array();
-  for (std::size_t e = 0; e < s.elements.size(); ++e) write_element(out, model, model.elements[e], s.elements[e]);
+  for (std::size_t e = 0; e < s.elements.size(); ++e) {
+    const Element& el = model.elements[e];
+    if (s.thermal) {
+      double mean = 0.0;  // of the computed temperatures, as element_temperature does for given ones
+      for (int a = 0; a < el.node_count; ++a) mean += s.thermal->T[static_cast<std::size_t>(el.nodes[a])];
+      write_element(out, model, el, s.elements[e], mean / el.node_count, &s.thermal->flux[e]);
+    } else {
+      write_element(out, model, el, s.elements[e], element_temperature(model, el.nodes, el.node_count), nullptr);
+    }
+  }
   out.end_array();
   out.key("gaps").begin_array();
   for (std::size_t g = 0; g < s.gaps.size(); ++g) write_gap(out, model, model.gaps->elements[g], s.gaps[g]);
@@ -116,7 +128,13 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s) {
   out.end_array();
   out.field("iterations", s.iterations).field("message", s.message);
   out.key("nodes").begin_array();
-  for (std::size_t n = 0; n < s.nodes.size(); ++n) write_node(out, model, s.nodes[n], n);
+  const std::vector<double>& T = s.thermal ? s.thermal->T : final_loads(model).node_temperature;
+  for (std::size_t n = 0; n < s.nodes.size(); ++n) write_node(out, model, s.nodes[n], n, T[n]);
+  out.end_array();
+  out.key("reactions").begin_array();
+  for (const NodeReaction& r : s.reactions) {
+    out.begin_object().field("fr", r.f_r).field("fz", r.f_z).field("node", r.id).end_object();
+  }
   out.end_array();
   out.field("reference_temperature", model.reference_temperature)
       .field("status", s.status == RunStatus::converged ? "converged" : "not_converged");
@@ -141,6 +159,7 @@ void write_failed_result(JsonWriter& out, const std::string& message) {
   for (const char* list : {"elements", "gaps", "history"}) out.key(list).begin_array().end_array();
   out.field("iterations", 0).field("message", message);
   out.key("nodes").begin_array().end_array();
+  out.key("reactions").begin_array().end_array();
   out.field("status", "failed").end_object();
 }
 

@@ -16,4 +16,8 @@ inline constexpr int max_iterations_limit = 100000;
 /// one full linear solve, so this is already far beyond a run that finishes in reasonable time.
 inline constexpr int max_increments_limit = 100000;
 
+/// The most time steps a transient thermal run may take (thermal.end_time / thermal.time_step):
+/// each is a solve with the factorization reused, so 10^6 already takes minutes on a large mesh.
+inline constexpr double max_time_steps_limit = 1.0e6;
+
 }  // namespace saasgaps::io

@@ -42,25 +42,32 @@ std::string requirement(const Range& range, std::string_view name) {
 
 namespace {
 
-constexpr std::array<Field<PropertyRow>, 4> isotropic_fields{{
+// k and c are optional in every row: section_thermal.cpp judges whether a thermal run has them.
+constexpr std::array<Field<PropertyRow>, 6> isotropic_fields{{
     {"T", &PropertyRow::T, &any_number},
-    {"E", &PropertyRow::E1, &positive},
+    {"E", &PropertyRow::E1, &modulus},
     {"nu", &PropertyRow::nu12, &poisson_ratio},
     {"alpha", &PropertyRow::alpha1, &any_number},
+    {"k", &PropertyRow::k1, &positive, true},
+    {"c", &PropertyRow::c, &positive, true},
 }};
 
-constexpr std::array<Field<PropertyRow>, 11> orthotropic_fields{{
+constexpr std::array<Field<PropertyRow>, 15> orthotropic_fields{{
     {"T", &PropertyRow::T, &any_number},
-    {"E1", &PropertyRow::E1, &positive},
-    {"E2", &PropertyRow::E2, &positive},
-    {"E3", &PropertyRow::E3, &positive},
+    {"E1", &PropertyRow::E1, &modulus},
+    {"E2", &PropertyRow::E2, &modulus},
+    {"E3", &PropertyRow::E3, &modulus},
     {"nu12", &PropertyRow::nu12, &any_number},
     {"nu13", &PropertyRow::nu13, &any_number},
     {"nu23", &PropertyRow::nu23, &any_number},
-    {"G12", &PropertyRow::G12, &positive},
+    {"G12", &PropertyRow::G12, &modulus},
     {"alpha1", &PropertyRow::alpha1, &any_number},
     {"alpha2", &PropertyRow::alpha2, &any_number},
     {"alpha3", &PropertyRow::alpha3, &any_number},
+    {"k1", &PropertyRow::k1, &positive, true},
+    {"k2", &PropertyRow::k2, &positive, true},
+    {"k3", &PropertyRow::k3, &positive, true},
+    {"c", &PropertyRow::c, &positive, true},
 }};
 
 /// The object form of plasticity: one curve for every temperature (T stays 0).
@@ -209,12 +216,14 @@ template <class Row>
 std::optional<Row> SectionReader::read_row(const json& value, const std::string& pointer,
                                     std::span<const Field<Row>> fields) {
   std::vector<std::string_view> keys;
-  for (const Field<Row>& f : fields) keys.push_back(f.key);
-  if (!check_object(value, pointer, keys, {})) return std::nullopt;
+  std::vector<std::string_view> optional_keys;
+  for (const Field<Row>& f : fields) (f.optional ? optional_keys : keys).push_back(f.key);
+  if (!check_object(value, pointer, keys, optional_keys)) return std::nullopt;
   const Obj o{&value, pointer};
   Row row{};
   bool complete = true;
   for (const Field<Row>& f : fields) {
+    if (f.optional && o.find(f.key) == nullptr) continue;
     const auto v = number_field(o, f.key, *f.range);
     if (v) {
       row.*f.member = *v;
@@ -260,6 +269,7 @@ std::vector<PropertyRow> SectionReader::read_property_table(const Obj& o, std::s
   if (rows == nullptr) return {};
   const auto finish = [&](PropertyRow& row, const std::string& row_pointer) {
     if (isotropic) {
+      row.k2 = row.k3 = row.k1;
       row.E2 = row.E3 = row.E1;
       row.nu13 = row.nu23 = row.nu12;
       row.alpha2 = row.alpha3 = row.alpha1;

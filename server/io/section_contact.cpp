@@ -149,10 +149,12 @@ std::optional<SurfacePair> SectionReader::read_surface_pair(const json& item, co
   return pair;
 }
 
-std::optional<ContactConductance> SectionReader::read_conductance(const json& value, const std::string& pointer) {
-  if (!object(value, pointer, {}, {"closed", "gas_conductivity"})) return std::nullopt;
+/// {closed: h or [{p, h}] in strictly increasing p, gas_conductivity?: >= 0}: the one reader of a
+/// conductance, for contact pairs and for gap elements (GapSettings::conductance).
+std::optional<InterfaceConductance> SectionReader::read_conductance(const json& value, const std::string& pointer) {
+  if (!object(value, pointer, {"closed"}, {"gas_conductivity"})) return std::nullopt;
   const Obj o{&value, pointer};
-  ContactConductance conductance;
+  InterfaceConductance conductance;
   bool valid = true;
   if (const json* closed = o.find("closed")) {
     if (closed->is_array()) {

@@ -10,12 +10,12 @@ namespace {
 
 constexpr std::array<std::string_view, section_count> section_keys{
     "schema_version", "title", "description", "units", "analysis", "nodes", "materials",
-    "elements", "gaps", "constraints", "loads", "solver", "output", "steps", "contact"};
+    "elements", "gaps", "constraints", "loads", "solver", "output", "steps", "contact", "thermal"};
 
 constexpr std::array<std::string_view, 7> required_root_keys{"schema_version", "title", "analysis", "nodes",
                                                             "materials", "elements", "constraints"};
-constexpr std::array<std::string_view, 8> optional_root_keys{"description", "units", "gaps", "loads", "solver",
-                                                            "output", "steps", "contact"};
+constexpr std::array<std::string_view, 9> optional_root_keys{"description", "units", "gaps", "loads", "solver",
+                                                            "output", "steps", "contact", "thermal"};
 
 }  // namespace
 
@@ -39,6 +39,10 @@ std::span<const Section> dependencies(Section s) {
   static constexpr std::array<Section, 2> on_all_elements{Section::elements, Section::gaps};
   static constexpr std::array<Section, 4> on_loads_and_constraints{Section::analysis, Section::nodes,
                                                                    Section::elements, Section::constraints};
+  // thermal judges its edges, sources and conflicts against every section before it.
+  static constexpr std::array<Section, 8> on_everything_before{
+      Section::analysis, Section::nodes, Section::materials, Section::elements,
+      Section::gaps,     Section::constraints, Section::loads, Section::steps};
   switch (s) {
     case Section::nodes: return on_analysis;
     case Section::elements: return on_nodes_and_materials;
@@ -48,6 +52,7 @@ std::span<const Section> dependencies(Section s) {
     case Section::output: return on_all_elements;
     case Section::steps: return on_loads_and_constraints;
     case Section::contact: return on_nodes_and_elements;
+    case Section::thermal: return on_everything_before;
     default: return {};
   }
 }
@@ -102,6 +107,7 @@ void SectionReader::read_section(Section s, const json* value) {
     case Section::output: read_output(root); break;
     case Section::steps: read_steps(root); break;
     case Section::contact: read_contact(root); break;
+    case Section::thermal: read_thermal(root); break;
     case Section::nodes:
     case Section::elements:
     case Section::constraints: read_item_section(s, root); break;
@@ -270,6 +276,7 @@ void SectionReader::read_materials(const Obj& root) {
       m.isotropic = *kind == 0;
       m.table = read_property_table(o, "table", m.isotropic, 1);
       m.compression_table = read_property_table(o, "compression_table", m.isotropic, 0);
+      read_heat_properties(o, m);
     }
     m.plasticity = read_plasticity(o);
     if (!id || !is_new(materials_, *id, o.at("id"), "material")) continue;
@@ -309,7 +316,8 @@ void SectionReader::read_gaps(const Obj& root) {
   if (v == nullptr) return;
   const std::string pointer = root.at("gaps");
   if (!object(*v, pointer, {"initial_modulus", "tensile_schedule", "elements"},
-              {"method", "extrapolation_factor", "closure_tolerance", "shear_ratio", "convergence_test"})) {
+              {"method", "extrapolation_factor", "closure_tolerance", "shear_ratio", "convergence_test",
+               "conductance"})) {
     gaps_complete_ = false;
     return;
   }
@@ -331,6 +339,7 @@ void SectionReader::read_gaps(const Obj& root) {
   if (const auto test = choice_field(g, "convergence_test", convergence_test_names)) {
     s.convergence_test = static_cast<GapConvergenceTest>(*test);
   }
+  if (const json* conductance = g.find("conductance")) s.conductance = read_conductance(*conductance, g.at("conductance"));
   const json* list = array_field(g, "elements", 1);
   gaps_complete_ = list != nullptr;
   if (list == nullptr) return;
@@ -436,18 +445,8 @@ void SectionReader::read_nodal_forces(const Obj& loads, Loads& into) {
 void SectionReader::read_pressures(const Obj& loads, Loads& into) {
   const json* list = array_field(loads, "pressures", 0);
   if (list == nullptr) return;
-  // Solid elements owning each edge, keyed by the ordered pair of node indices. Gap elements never
-  // own a pressure edge: their stiffness is the program's, not a body's.
-  std::map<std::pair<int, int>, std::vector<int>> owners;
-  for (std::size_t e = 0; e < model_.elements.size(); ++e) {
-    const Element& element = model_.elements[e];
-    const auto corners = static_cast<std::size_t>(element.node_count);
-    for (std::size_t k = 0; k < corners; ++k) {
-      const int a = element.nodes[k];
-      const int b = element.nodes[(k + 1) % corners];
-      if (a >= 0 && b >= 0) owners[std::minmax(a, b)].push_back(as_index(e));
-    }
-  }
+  // Gap elements never own a pressure edge: their stiffness is the program's, not a body's.
+  const EdgeOwners owners = solid_edge_owners();
   for (std::size_t i = 0; i < list->size(); ++i) {
     const std::string pointer = pointer_append(loads.at("pressures"), i);
     if (!object((*list)[i], pointer, {"nodes"}, {"normal", "shear"})) continue;
@@ -486,6 +485,7 @@ void SectionReader::read_temperatures(const Obj& loads, Loads& into) {
   const json* v = loads.find("temperatures");
   if (v == nullptr || !object(*v, loads.at("temperatures"), {}, {"default", "nodal"})) return;
   const Obj temperatures{v, loads.at("temperatures")};
+  temperature_pointers_.push_back(temperatures.pointer);
   if (const auto fallback = number_field(temperatures, "default")) {
     into.node_temperature.assign(model_.nodes.size(), *fallback);
   }

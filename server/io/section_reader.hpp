@@ -7,6 +7,7 @@
 ///
 /// Files: section_reader.cpp (the sections, in document order), section_steps.cpp (load steps),
 /// section_contact.cpp (contact surfaces and pairs),
+/// section_thermal.cpp (heat conduction: the thermal section and the materials' k and c),
 /// section_checks.cpp (generic
 /// value checks and temperature tables), section_references.cpp (ids, references and element
 /// shapes), section_items.cpp (the typed fast path of valid items), value_quote.cpp (how values
@@ -51,6 +52,12 @@ struct Range {
 constexpr Range any_number{};
 constexpr Range positive{Bound{0.0, false}, std::nullopt};
 constexpr Range non_negative{Bound{0.0, true}, std::nullopt};
+/// Elastic moduli (E, E1..E3, G12). The material law inverts the 4x4 compliance, whose determinant
+/// is of the order of 1 / E^4: it underflows to 0 beyond E ~ 1e77 and overflows below 1e-77, and the
+/// element condensation squares the stiffness (overflow beyond ~1e150). Far inside both, 1e-30 ..
+/// 1e30 holds every unit system (2e11 Pa, 3e7 psi, 200 GPa) and keeps products of moduli finite.
+constexpr Range modulus{Bound{1e-30, true}, Bound{1e30, true},
+                        "moduli beyond this range overflow or underflow the material law's arithmetic"};
 constexpr Range poisson_ratio{Bound{-1.0, false}, Bound{0.5, false},
                               "an isotropic material is stable only for -1 < nu < 0.5"};
 constexpr Range hardening{Bound{0.0, true}, Bound{1.0, false}, "the secondary slope is a fraction of E"};
@@ -69,12 +76,14 @@ struct Field {
   std::string_view key;
   double Row::*member;
   const Range* range;
+  bool optional = false;  ///< the row may omit it (the member keeps its default)
 };
 
 constexpr std::array<std::string_view, 3> analysis_names{"plane_stress", "plane_strain", "axisymmetric"};
 constexpr std::array<std::string_view, 2> elastic_names{"isotropic", "orthotropic"};
 constexpr std::array<std::string_view, 2> convergence_test_names{"report", "strict"};
 constexpr std::array<std::string_view, 2> gap_method_names{"classic", "exact"};
+constexpr std::array<std::string_view, 2> thermal_type_names{"steady", "transient"};
 constexpr std::array<std::string_view, 4> unit_names{"length", "force", "stress", "temperature"};
 
 /// An object of the document (already checked by SectionReader::object) and its pointer; or a
@@ -172,9 +181,9 @@ inline int as_index(std::size_t i) { return static_cast<int>(i); }
 /// The top-level members of a model document, in the order the reader judges them.
 enum class Section {
   schema_version, title, description, units, analysis, nodes, materials, elements, gaps, constraints, loads,
-  solver, output, steps, contact
+  solver, output, steps, contact, thermal
 };
-constexpr std::size_t section_count = 15;
+constexpr std::size_t section_count = 16;
 
 /// The member name of a section.
 std::string_view section_key(Section s);
@@ -366,7 +375,18 @@ class SectionReader {
   std::optional<SurfaceDefinition> read_surface(const json& item, const std::string& pointer);
   /// surfaces_complete: every surface was read, so an unknown name is the pair's own issue.
   std::optional<SurfacePair> read_surface_pair(const json& item, const std::string& pointer, bool surfaces_complete);
-  std::optional<ContactConductance> read_conductance(const json& value, const std::string& pointer);
+  std::optional<InterfaceConductance> read_conductance(const json& value, const std::string& pointer);
+  // section_thermal.cpp
+  /// Solid elements owning each edge, keyed by the ordered pair of node indices (gap elements own none).
+  using EdgeOwners = std::map<std::pair<int, int>, std::vector<int>>;
+  void read_heat_properties(const Obj& material, Material& m);
+  void read_thermal(const Obj& root);
+  std::optional<ThermalBoundary> read_thermal_boundary(const json& item, const std::string& pointer,
+                                                        const EdgeOwners& owners);
+  std::optional<ThermalEdge> read_thermal_edge(const json& ids, const std::string& pointer, const EdgeOwners& owners);
+  void check_thermal_materials(const Thermal& thermal);
+  void read_output_times(const Obj& o, Thermal& thermal);
+  [[nodiscard]] EdgeOwners solid_edge_owners() const;
 
   struct RankedIssue {
     int rank = 0;  ///< -1 repeated keys, 0 the root object, 1 + Section: found reading that section
@@ -391,6 +411,7 @@ class SectionReader {
   const Range* radius_ = &any_number;  ///< nodes: the range of r
   std::size_t item_ = 0;               ///< index of the item being read
   PrescribedAt prescribed_;  ///< constraints: (node index, component) -> pointer
+  std::vector<std::string> temperature_pointers_;  ///< every loads.temperatures given (thermal excludes them)
 };
 
 }  // namespace saasgaps::io

@@ -130,4 +130,18 @@ void SectionReader::check_gap_axes(std::span<const GapElement> gaps, std::span<c
   }
 }
 
+SectionReader::EdgeOwners SectionReader::solid_edge_owners() const {
+  EdgeOwners owners;
+  for (std::size_t e = 0; e < model_.elements.size(); ++e) {
+    const Element& element = model_.elements[e];
+    const auto corners = static_cast<std::size_t>(element.node_count);
+    for (std::size_t k = 0; k < corners; ++k) {
+      const int a = element.nodes[k];
+      const int b = element.nodes[(k + 1) % corners];
+      if (a >= 0 && b >= 0) owners[std::minmax(a, b)].push_back(as_index(e));
+    }
+  }
+  return owners;
+}
+
 }  // namespace saasgaps::io

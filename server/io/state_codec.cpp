@@ -36,6 +36,44 @@ std::vector<T> dense(const json& pairs, std::size_t size, T usual) {
   return values;
 }
 
+/// Version 3: the elements' plastic peaks as [index, eps_max, sigma_max, eps_p (4)] and the indices
+/// of the elements on the unloading branch; both only for the elements that have them.
+json plastic_branches(const MaterialState& m) {
+  json peaks = json::array();
+  for (std::size_t e = 0; e < m.peaks.size(); ++e) {
+    const PlasticPeak& p = m.peaks[e];
+    if (!p.reached()) continue;
+    peaks.push_back(json::array({e, p.strain, p.stress, p.plastic_strain[0], p.plastic_strain[1], p.plastic_strain[2],
+                                 p.plastic_strain[3]}));
+  }
+  json unloading = json::array();
+  for (std::size_t e = 0; e < m.unloading.size(); ++e) {
+    if (m.unloads(e)) unloading.push_back(e);
+  }
+  return {{"peaks", peaks}, {"unloading", unloading}};
+}
+
+/// The inverse of plastic_branches for `elements` solid elements (empty vectors when none is listed).
+void read_plastic_branches(const json& j, std::size_t elements, MaterialState& m) {
+  const auto index = [elements](const json& value) {
+    const auto i = value.get<std::size_t>();
+    if (i >= elements) throw SolverError("restart state: plastic element index " + std::to_string(i) + " out of range");
+    return i;
+  };
+  for (const json& p : j.at("peaks")) {
+    if (p.size() != 7) throw SolverError("malformed restart state: a plastic peak is not 7 numbers");
+    const std::size_t e = index(p.at(0));
+    if (m.peaks.empty()) m.peaks.assign(elements, PlasticPeak{});
+    m.peaks[e] = {p.at(1).get<double>(), p.at(2).get<double>(),
+                  Vec4(p.at(3).get<double>(), p.at(4).get<double>(), p.at(5).get<double>(), p.at(6).get<double>())};
+  }
+  for (const json& u : j.at("unloading")) {
+    const std::size_t e = index(u);
+    if (m.unloading.empty()) m.unloading.assign(elements, 0);
+    m.unloading[e] = 1;
+  }
+}
+
 }  // namespace
 
 void Fingerprint::add(std::string_view text) {
@@ -95,7 +133,9 @@ json state_to_json(const RestartState& s, const std::string& digest) {
   if (!s.contact.empty()) {
     document["contact"] = {{"force", s.contact.force}, {"active", s.contact.active}};
   }
-  // Version 2 (stepped models) only: the increment of iteration K.
+  // Version 3 (stepped plastic models) only: the peaks and unloading branches.
+  if (s.version == RestartState::plastic_steps_version) document["plastic"] = plastic_branches(s.materials);
+  // Versions 2 and 3 (stepped models) only: the increment of iteration K.
   if (s.position) {
     const StepPosition& p = *s.position;
     document["position"] = {{"step", p.step},
@@ -113,10 +153,10 @@ RestartState state_from_json(const json& j, const std::string& expected_digest) 
     }
     RestartState s;
     s.version = j.at("version").get<int>();
-    if (s.version != RestartState::plain_version && s.version != RestartState::stepped_version) {
+    if (s.version < RestartState::plain_version || s.version > RestartState::plastic_steps_version) {
       throw SolverError("restart state version " + std::to_string(s.version) + " is not supported (expected " +
-                        std::to_string(RestartState::plain_version) + " or " +
-                        std::to_string(RestartState::stepped_version) + ")");
+                        std::to_string(RestartState::plain_version) + " to " +
+                        std::to_string(RestartState::plastic_steps_version) + ")");
     }
     if (!expected_digest.empty() && j.at("model_digest").get<std::string>() != expected_digest) {
       throw SolverError("the restart state was saved for a different model (digest " +
@@ -149,7 +189,12 @@ RestartState state_from_json(const json& j, const std::string& expected_digest) 
         throw SolverError("malformed restart state: contact force and active set differ in length");
       }
     }
-    if (s.version == RestartState::stepped_version) {
+    if (s.version == RestartState::plastic_steps_version) {
+      read_plastic_branches(j.at("plastic"), s.element_count, s.materials);
+    } else if (j.contains("plastic")) {
+      throw SolverError("malformed restart state: version " + std::to_string(s.version) + " has no plastic peaks");
+    }
+    if (s.version != RestartState::plain_version) {
       const json& p = j.at("position");
       s.position = StepPosition{p.at("step").get<int>(), p.at("increment").get<int>(), p.at("iterations").get<int>(),
                                 p.at("step_start").get<std::vector<double>>()};

@@ -1,6 +1,7 @@
 #pragma once
 /// A JSON tree built from SAX events (internal to io/): the model reader builds each item of a
-/// model with it, parse_json_subset the parts of a result a plot reads.
+/// model with it, parse_json_subset the members it keeps, read_result_arrays the small members of a
+/// result (io/result_arrays.hpp).
 
 #include <string>
 #include <utility>

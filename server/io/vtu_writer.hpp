@@ -10,6 +10,8 @@
 ///   displacement  (u_r, u_z, 0), the active vector: Warp By Vector shows the deformed shape
 ///   temperature   T
 ///   node_id       the model's node id
+///   reaction      (fr, fz, 0): the supports' force on the node, 0 at free nodes (only when the
+///                 result has `reactions`)
 /// and, when the result has contact surfaces (result `contact`), their points on side A's nodes
 /// (a point is at its node's reference position); nodes that are no pair's side A hold 0 and -1:
 ///   contact_pressure, contact_gap, contact_shear, contact_slip  the point's values
@@ -38,6 +40,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/result_arrays.hpp"
 #include "io/vtu_encoding.hpp"
 
 namespace saasgaps::io {
@@ -45,7 +48,17 @@ namespace saasgaps::io {
 /// The gap_state code written for a gap state name ("open" -> 0 .. "overclosed" -> 3).
 int vtu_gap_state_code(const std::string& state);
 
-/// The VTU document. A failed run, or a result without node coordinates, is a std::invalid_argument.
+/// " [psi]" when the result (its "units") names the unit of that kind ("stress", "length",
+/// "temperature"), the suffix of the arrays' names; "" otherwise.
+std::string vtu_unit_suffix(const nlohmann::json& result, const char* kind);
+
+/// What the VTU reads of a result (io/result_arrays.hpp): the mesh and the element members above.
+const ResultSelection& vtu_result_selection();
+
+/// The VTU document, from the arrays read with vtu_result_selection(). A failed run, or a result
+/// without node coordinates, is a std::invalid_argument.
+std::string result_to_vtu(const ResultArrays& result, VtuFormat format = VtuFormat::binary);
+/// The same from a tree (small in-memory documents and tests: it is dumped and read as text).
 std::string result_to_vtu(const nlohmann::json& result, VtuFormat format = VtuFormat::binary);
 
 /// The iterations as a ParaView collection: for each history row that holds every gap's closure,
@@ -55,6 +68,16 @@ std::string result_to_vtu(const nlohmann::json& result, VtuFormat format = VtuFo
 /// gap iteration. Only closures are kept per iteration (the history rows); displacements and
 /// stresses exist for the final state only. write(file name, bytes) is called once per file, the
 /// .pvd last; a result without per-iteration closures gives one file, the result.
+void write_vtu_series(const ResultArrays& result, const std::string& stem, VtuFormat format,
+                      const std::function<void(const std::string& file, const std::string& bytes)>& write);
+/// The collection's layout, for any writer of the files (this one, and the tree writer the tests keep
+/// as its reference): which history rows get a file, their names, the .pvd. whole() makes the last
+/// (or only) file, iteration_file(closures, iteration) the others.
+void write_vtu_collection(const nlohmann::json& document, const std::string& stem,
+                          const std::function<std::string()>& whole,
+                          const std::function<std::string(const nlohmann::json& closures, int iteration)>& iteration_file,
+                          const std::function<void(const std::string& file, const std::string& bytes)>& write);
+/// The same from a tree, as result_to_vtu.
 void write_vtu_series(const nlohmann::json& result, const std::string& stem, VtuFormat format,
                       const std::function<void(const std::string& file, const std::string& bytes)>& write);
 

@@ -37,9 +37,9 @@ ImageFormat image_format_for_path(const std::string& path) {
 const char* media_type(ImageFormat format) { return format == ImageFormat::png ? "image/png" : "image/svg+xml"; }
 
 Canvas::Canvas(ImageFormat format, int width, int height) : format_(format), width_(width), height_(height) {
-  if (width < 16 || height < 16 || width > max_side || height > max_side) {
+  if (width < min_side || height < min_side || width > max_side || height > max_side) {
     throw std::invalid_argument("image size " + std::to_string(width) + " x " + std::to_string(height) +
-                                " px is out of range (16 .. " + std::to_string(max_side) + " per side)");
+                                " px is out of range (" + std::to_string(min_side) + " .. " + std::to_string(max_side) + " per side)");
   }
   if (format == ImageFormat::png) {
     // RGB24: an opaque image, a third smaller as PNG than ARGB32.

@@ -38,9 +38,13 @@ enum class VAlign { top, middle, baseline, bottom };
 
 class Canvas {
  public:
-  static constexpr int max_side = 8000;  ///< px; larger requests are refused, not attempted
+  /// The one range of an image side, px, for every way of asking for a plot (saasgaps plot --width
+  /// and --height, the HTTP width and height parameters): larger requests are refused, not
+  /// attempted. 4000 x 4000 is 64 MB of pixels, what one request to a shared server may cost.
+  static constexpr int min_side = 16;
+  static constexpr int max_side = 4000;
 
-  /// A white canvas of width x height px (each 16 .. max_side, else std::invalid_argument).
+  /// A white canvas of width x height px (each min_side .. max_side, else std::invalid_argument).
   Canvas(ImageFormat format, int width, int height);
   ~Canvas();
   // The SVG surface writes into buffer_ through a pointer: the canvas stays where it was made.

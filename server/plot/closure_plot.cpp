@@ -21,9 +21,9 @@ struct Curve {
 
 /// Every history row that has one closure per gap, else the final closures as one curve; each
 /// curve holds the row's gaps in row order.
-std::vector<Curve> closure_curves(const json& result, const ResultMesh& mesh, const GapRow& row) {
+std::vector<Curve> closure_curves(const PlotResult& result, const ResultMesh& mesh, const GapRow& row) {
   std::vector<Curve> curves;
-  for (const json& history_row : array_member(result, "history")) {
+  for (const json& history_row : array_member(result.document(), "history")) {
     const auto closures = history_row.find("gap_closures");
     if (closures == history_row.end() || !closures->is_array() || closures->size() != mesh.gaps.size()) continue;
     Curve c{history_row.at("iteration").get<int>(), {}};
@@ -53,9 +53,9 @@ std::vector<Curve> thin_out(std::vector<Curve> curves, int count) {
 
 }  // namespace
 
-DataTable draw_closure_plot(const Canvas& canvas, const json& result, const GapRowOptions& row_options,
+DataTable draw_closure_plot(const Canvas& canvas, const PlotResult& result, const GapRowOptions& row_options,
                             const ClosureOptions& options) {
-  const ResultMesh mesh = ResultMesh::from_result(result);
+  const ResultMesh& mesh = result.mesh();
   if (mesh.gaps.empty()) throw std::invalid_argument("the result has no gap elements: there is no closure to plot");
   const GapRow row = select_gap_row(mesh, row_options, gap_labels_that_fit(canvas, mesh));
   const std::vector<Curve> all = closure_curves(result, mesh, row);

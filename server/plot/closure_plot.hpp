@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "plot/canvas.hpp"
+#include "plot/plot_result.hpp"
 #include "plot/data_table.hpp"
 #include "plot/gap_row.hpp"
 
@@ -20,7 +21,7 @@ struct ClosureOptions {
 /// Draws the closure plot over the whole canvas and returns its data table: per gap of the row its
 /// id, x, its closure in every iteration, and where the last iteration's marker is drawn. Throws
 /// std::invalid_argument when the result has no gaps or the row names a gap it does not have.
-DataTable draw_closure_plot(const Canvas& canvas, const nlohmann::json& result, const GapRowOptions& row,
+DataTable draw_closure_plot(const Canvas& canvas, const PlotResult& result, const GapRowOptions& row,
                        const ClosureOptions& options = {});
 
 }  // namespace saasgaps::plot

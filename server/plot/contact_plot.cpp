@@ -201,11 +201,11 @@ DataTable draw_surface_contact_plot(const Canvas& canvas, const json& result, Ro
   return table;
 }
 
-DataTable draw_contact_plot(const Canvas& canvas, const json& result, const GapRowOptions& row_options) {
-  if (row_options.gap_ids.empty() && has_contact_points(result)) {
-    return draw_surface_contact_plot(canvas, result, row_options.along);
+DataTable draw_contact_plot(const Canvas& canvas, const PlotResult& result, const GapRowOptions& row_options) {
+  if (row_options.gap_ids.empty() && has_contact_points(result.document())) {
+    return draw_surface_contact_plot(canvas, result.document(), row_options.along);
   }
-  const ResultMesh mesh = ResultMesh::from_result(result);
+  const ResultMesh& mesh = result.mesh();
   if (mesh.gaps.empty()) throw std::invalid_argument("the result has no gap elements: there is no contact pressure to plot");
   const GapRow row = select_gap_row(mesh, row_options, gap_labels_that_fit(canvas, mesh));
 

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "plot/canvas.hpp"
+#include "plot/plot_result.hpp"
 #include "plot/data_table.hpp"
 #include "plot/gap_row.hpp"
 
@@ -23,14 +24,15 @@ namespace saasgaps::plot {
 /// std::invalid_argument.
 /// With contact pairs in the result and no gap ids in `row`, the contact surfaces' plot is drawn
 /// instead (draw_surface_contact_plot).
-DataTable draw_contact_plot(const Canvas& canvas, const nlohmann::json& result, const GapRowOptions& row);
+DataTable draw_contact_plot(const Canvas& canvas, const PlotResult& result, const GapRowOptions& row);
 
-/// Whether the result has a contact pair with at least one point (result `contact`).
-bool has_contact_points(const nlohmann::json& result);
+/// Whether the result has a contact pair with at least one point (result `contact`; `document` is
+/// the result, or PlotResult::document(), which holds it).
+bool has_contact_points(const nlohmann::json& document);
 
 /// The contact surfaces' plot (see above) and its data table: per point its pair (1, 2, .., named
 /// in a note), the point's number along A, x, r, z, pressure, gap and state, and the px where
 /// the two markers were drawn. A result without contact points: std::invalid_argument.
-DataTable draw_surface_contact_plot(const Canvas& canvas, const nlohmann::json& result, RowAxis along);
+DataTable draw_surface_contact_plot(const Canvas& canvas, const nlohmann::json& document, RowAxis along);
 
 }  // namespace saasgaps::plot

@@ -13,6 +13,7 @@
 
 #include "plot/band_levels.hpp"
 #include "plot/canvas.hpp"
+#include "plot/plot_result.hpp"
 #include "plot/field.hpp"
 #include "plot/result_mesh.hpp"
 
@@ -36,7 +37,7 @@ struct ContourOptions {
 
 /// Draws the contour plot over the whole canvas. Unknown field or colour map, a gap field, or a
 /// result without a mesh: std::invalid_argument.
-void draw_contour_plot(const Canvas& canvas, const nlohmann::json& result, const ContourOptions& options);
+void draw_contour_plot(const Canvas& canvas, const PlotResult& result, const ContourOptions& options);
 
 /// A round magnification (1, 2 or 5 times a power of ten) that draws the largest displacement at
 /// about 8 % of the model's larger extent; 1 when nothing moves.

@@ -147,33 +147,14 @@ std::string unit_phrase(Quantity quantity, const UnitNames& units) {
   return "in the model's " + std::string(quantity_name(quantity)) + " units";
 }
 
-namespace {
-
-/// Per element, the value of each key, in the document's order.
-std::vector<std::vector<double>> stored_values(const nlohmann::json& result, const std::vector<std::string_view>& keys) {
-  std::vector<std::vector<double>> values(keys.size());
-  for (const nlohmann::json& e : result.at("elements")) {
-    for (std::size_t k = 0; k < keys.size(); ++k) {
-      const auto found = e.find(keys[k]);
-      if (found == e.end()) {
-        throw std::invalid_argument("element " + e.value("id", nlohmann::json()).dump() + " has no '" +
-                                    std::string(keys[k]) + "'");
-      }
-      values[k].push_back(found->get<double>());
-    }
-  }
-  return values;
-}
-
-}  // namespace
-
-std::vector<double> element_values(const nlohmann::json& result, const ResultMesh& mesh, const FieldInfo& field,
+std::vector<double> element_values(const PlotResult& result, const ResultMesh& mesh, const FieldInfo& field,
                                    const PlanePoint& centre) {
   if (field.location != FieldLocation::element) {
     throw std::invalid_argument("'" + std::string(field.name) + "' is not an element field");
   }
   require_field_fits(field, mesh);
-  std::vector<std::vector<double>> stored = stored_values(result, element_keys(field));
+  std::vector<std::vector<double>> stored;
+  for (const std::string_view key : element_keys(field)) stored.push_back(result.element_member(key));
   if (field.cylindrical == Cylindrical::none) return std::move(stored[0]);
   // The stored shear strain is engineering (γ = 2 εxy): rotate the tensor, give γ back.
   const double shear = field.quantity == Quantity::strain ? 0.5 : 1.0;
@@ -219,7 +200,7 @@ std::vector<double> average_to_nodes(const ResultMesh& mesh, const std::vector<d
   return values;
 }
 
-std::vector<double> nodal_values(const nlohmann::json& result, const ResultMesh& mesh, const FieldInfo& field,
+std::vector<double> nodal_values(const PlotResult& result, const ResultMesh& mesh, const FieldInfo& field,
                                  const PlanePoint& centre) {
   switch (field.location) {
     case FieldLocation::element:

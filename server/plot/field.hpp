@@ -25,6 +25,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "plot/plot_result.hpp"
 #include "plot/result_mesh.hpp"
 
 namespace saasgaps::plot {
@@ -90,7 +91,7 @@ std::string unit_phrase(Quantity quantity, const UnitNames& units);
 
 /// Values per solid element (element fields only), in mesh.solids order; cylindrical components
 /// about `centre`, at each element's centroid (the mean of its corners).
-std::vector<double> element_values(const nlohmann::json& result, const ResultMesh& mesh, const FieldInfo& field,
+std::vector<double> element_values(const PlotResult& result, const ResultMesh& mesh, const FieldInfo& field,
                                    const PlanePoint& centre = {0.0, 0.0});
 
 /// The cylindrical component of an in-plane tensor (xx, yy, xy: the tensor's shear, i.e. half the
@@ -107,7 +108,7 @@ std::vector<double> average_to_nodes(const ResultMesh& mesh, const std::vector<d
 /// Values per node for contouring: node fields directly (displacement = sqrt(u_r^2 + u_z^2)),
 /// element fields through average_to_nodes. Gap fields: std::invalid_argument (they have no nodal
 /// values; plot them with the closure plot).
-std::vector<double> nodal_values(const nlohmann::json& result, const ResultMesh& mesh, const FieldInfo& field,
+std::vector<double> nodal_values(const PlotResult& result, const ResultMesh& mesh, const FieldInfo& field,
                                  const PlanePoint& centre = {0.0, 0.0});
 
 /// The result document's element keys a field reads: its key, or the three in-plane components a

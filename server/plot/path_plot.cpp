@@ -83,7 +83,7 @@ std::string point_text(const std::array<double, 2>& p) {
 
 }  // namespace
 
-DataTable draw_path_plot(const Canvas& canvas, const json& result, const std::string& field_name,
+DataTable draw_path_plot(const Canvas& canvas, const PlotResult& result, const std::string& field_name,
                          const PathOptions& options, const PlanePoint& centre) {
   const FieldInfo& field = find_field(field_name);
   if (field.location == FieldLocation::gap) {
@@ -93,7 +93,7 @@ DataTable draw_path_plot(const Canvas& canvas, const json& result, const std::st
   if (options.samples < 2 || options.samples > 100000) {
     throw std::invalid_argument("a path takes 2 to 100000 samples, not " + std::to_string(options.samples));
   }
-  const ResultMesh mesh = ResultMesh::from_result(result);
+  const ResultMesh& mesh = result.mesh();
   if (mesh.solids.empty()) throw std::invalid_argument("the result has no solid elements to sample");
   const PointLocator locator(mesh);
   const bool per_element = field.location == FieldLocation::element;

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "plot/canvas.hpp"
+#include "plot/plot_result.hpp"
 #include "plot/data_table.hpp"
 #include "plot/field.hpp"
 
@@ -37,7 +38,7 @@ PlanePoint parse_point(const std::string& text);
 /// Draws the plot of the field (a name of fields(), not a gap field) over the whole canvas and
 /// returns its data table: per sample s, r, z, the element id (empty outside), the value and its px.
 /// Cylindrical components are taken about `centre`.
-DataTable draw_path_plot(const Canvas& canvas, const nlohmann::json& result, const std::string& field,
+DataTable draw_path_plot(const Canvas& canvas, const PlotResult& result, const std::string& field,
                          const PathOptions& options, const PlanePoint& centre = {0.0, 0.0});
 
 }  // namespace saasgaps::plot

@@ -45,26 +45,13 @@ std::vector<std::string> plot_names() {
   return names;
 }
 
-ResultMembers result_members_for(const PlotRequest& request) {
-  if (request.name == "convergence") {
-    // The history and the gaps; no mesh.
-    return [](int depth, std::string_view, std::string_view key) {
-      return depth != 1 || (key != "nodes" && key != "elements");
-    };
-  }
-  // Every other plot draws the mesh (result_mesh.cpp): all of each node and gap, but of each
-  // element only its id, material and nodes, and the value of the element field plotted (field.cpp).
-  // (a cylindrical component: the three in-plane components it is rotated from). An element holds
-  // 18 members; these are 3 to 6 of them.
-  // (Callers have checked the name: every plot but convergence is a field.)
-  std::vector<std::string> field_keys;
-  for (const std::string_view k : element_keys(find_field(request.name))) field_keys.emplace_back(k);
-  return [field_keys](int depth, std::string_view section, std::string_view key) {
-    // depth 3 under "elements": a member of one element.
-    if (depth != 3 || section != "elements") return true;
-    return key == "id" || key == "material" || key == "nodes" ||
-           std::find(field_keys.begin(), field_keys.end(), key) != field_keys.end();
-  };
+io::ResultSelection result_selection_for(const PlotRequest& request) {
+  if (request.name == "convergence") return {.mesh = false, .element_keys = {}};
+  // Every other plot draws the mesh (result_mesh.cpp), and an element field reads its stored
+  // values (field.cpp). (Callers have checked the name: every plot but convergence is a field.)
+  io::ResultSelection selection;
+  for (const std::string_view k : element_keys(find_field(request.name))) selection.element_keys.emplace_back(k);
+  return selection;
 }
 
 void require_plot_name(const std::string& name) {
@@ -78,20 +65,20 @@ void require_plot_name(const std::string& name) {
 namespace {
 
 /// Draws the plot; for the line plots that have one, returns their data table.
-std::optional<DataTable> draw(const Canvas& canvas, const nlohmann::json& result, const PlotRequest& request) {
+std::optional<DataTable> draw(const Canvas& canvas, const PlotResult& result, const PlotRequest& request) {
   require_plot_name(request.name);
   if (request.path) {
     if (request.name == "convergence") throw std::invalid_argument("the convergence plot does not run along a path");
     return draw_path_plot(canvas, result, request.name, *request.path, request.centre);
   }
   if (request.name == "convergence") {
-    draw_convergence_plot(canvas, result);
+    draw_convergence_plot(canvas, result.document());
   } else if (request.name == "contact_pressure") {
     return draw_contact_plot(canvas, result, request.row);
   } else if (request.name == "closure") {
     // Contact surfaces have no closure history: their closure is the gap along side A.
-    if (array_member(result, "gaps").empty() && has_contact_points(result)) {
-      return draw_surface_contact_plot(canvas, result, request.row.along);
+    if (array_member(result.document(), "gaps").empty() && has_contact_points(result.document())) {
+      return draw_surface_contact_plot(canvas, result.document(), request.row.along);
     }
     return draw_closure_plot(canvas, result, request.row, request.closure);
   } else {
@@ -105,13 +92,13 @@ std::optional<DataTable> draw(const Canvas& canvas, const nlohmann::json& result
 
 }  // namespace
 
-std::string render_plot(const nlohmann::json& result, const PlotRequest& request) {
+std::string render_plot(const PlotResult& result, const PlotRequest& request) {
   Canvas canvas(request.format, request.width, request.height);
   draw(canvas, result, request);
   return canvas.finish();
 }
 
-std::string render_table(const nlohmann::json& result, const PlotRequest& request) {
+std::string render_table(const PlotResult& result, const PlotRequest& request) {
   // The table gives px positions: lay the plot out on a canvas of the image's size, never encoded.
   Canvas canvas(ImageFormat::png, request.width, request.height);
   const std::optional<DataTable> table = draw(canvas, result, request);

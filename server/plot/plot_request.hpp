@@ -19,15 +19,16 @@
 #include <string>
 #include <vector>
 
-#include <functional>
-#include <string_view>
 #include <nlohmann/json.hpp>
+
+#include "io/result_arrays.hpp"
 
 #include "plot/canvas.hpp"
 #include "plot/closure_plot.hpp"
 #include "plot/contour_plot.hpp"
 #include "plot/gap_row.hpp"
 #include "plot/path_plot.hpp"
+#include "plot/plot_result.hpp"
 
 namespace saasgaps::plot {
 
@@ -65,24 +66,21 @@ std::vector<std::string> plot_names();
 /// unless name is one of plot_names().
 void require_plot_name(const std::string& name);
 
-/// Which members of a result document a plot reads: keep(depth, section, key), with depth 1 for the
-/// document's own members and section the document member an object lies under (the signature of
-/// io::MemberFilter, io/json_subset.hpp).
-using ResultMembers = std::function<bool(int depth, std::string_view section, std::string_view key)>;
-
-/// What the plot reads of a result: a convergence plot needs the history and the gaps, not the
-/// nodes and elements (at 10^6 unknowns, 1.6 GB of tree for the 300 MB document); the other plots
-/// need the nodes and gaps whole, but of each element only its id, material, nodes and the plotted
-/// field. The plot drawn from a document read with it is the plot drawn from the whole document.
-ResultMembers result_members_for(const PlotRequest& request);
+/// What a plot reads of a result (io/result_arrays.hpp): a convergence plot the history and the
+/// gaps, no mesh (at 10^6 unknowns the nodes and elements are 300 MB of text); every other plot the
+/// mesh, and of each element besides its id, material and nodes only the values of the field
+/// plotted (a cylindrical component: the three in-plane components it is rotated from). The plot
+/// drawn from a result read with it is the plot drawn from the whole document. The name must be one
+/// of plot_names() (require_plot_name).
+io::ResultSelection result_selection_for(const PlotRequest& request);
 
 /// Renders the plot. An unknown name is a std::invalid_argument
 /// "unknown field 'x'; fields: sigma_r, ..., closure, convergence"; so are bad options and results
 /// the plot cannot be drawn from.
-std::string render_plot(const nlohmann::json& result, const PlotRequest& request);
+std::string render_plot(const PlotResult& result, const PlotRequest& request);
 
 /// The numbers the plot draws, as CSV (data_table.hpp), laid out for the request's image size: for
 /// closure, contact_pressure and a field along a path. Other plots: std::invalid_argument.
-std::string render_table(const nlohmann::json& result, const PlotRequest& request);
+std::string render_table(const PlotResult& result, const PlotRequest& request);
 
 }  // namespace saasgaps::plot

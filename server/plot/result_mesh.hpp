@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/result_arrays.hpp"
+
 namespace saasgaps::plot {
 
 struct MeshNode {
@@ -68,6 +70,9 @@ struct ResultMesh {
   /// Reads the mesh. A failed run (no mesh) or a malformed document is a std::invalid_argument that
   /// says what is missing.
   static ResultMesh from_result(const nlohmann::json& result);
+  /// The same from the typed arrays of io::read_result_arrays (read with the mesh selected), with
+  /// the same checks and messages.
+  static ResultMesh from_arrays(const io::ResultArrays& result);
 
   bool plane() const { return analysis != "axisymmetric"; }
   /// Area of a solid element in the undeformed configuration (shoelace formula), length^2.

@@ -17,6 +17,7 @@
 #include "io/model_reader.hpp"
 #include "io/read_card.hpp"
 #include "io/restraint_issues.hpp"
+#include "io/result_arrays.hpp"
 #include "io/vtu_writer.hpp"
 #include "plot/color_map.hpp"
 #include "plot/plot_request.hpp"
@@ -199,23 +200,30 @@ bool not_modified(const httplib::Request& req, httplib::Response& res, const std
   return false;
 }
 
-/// The job's stored result as a document, for plots and exports; `members` (optional) keeps only
-/// what the caller reads (io/json_subset.hpp).
-json stored_result(JobStore& store, std::int64_t id, const io::MemberFilter& members = nullptr) {
-  const std::optional<std::string> result = store.result(id);
+/// The job's stored result text; 404 when it has none yet.
+std::string stored_result_text(JobStore& store, std::int64_t id) {
+  std::optional<std::string> result = store.result(id);
   if (!result) {
     throw HttpError(404, "Not Found", "job " + std::to_string(id) + " has no result yet (" + to_string(store.get(id).state) + ")");
   }
-  const auto damaged = [id](const std::string& what) {
-    return HttpError(500, "Internal Server Error", "the stored result of job " + std::to_string(id) + " is damaged (" +
-                                                       what + "); resume the job to compute it again");
-  };
+  return std::move(*result);
+}
+
+HttpError damaged_result(std::int64_t id, const std::string& what) {
+  return HttpError(500, "Internal Server Error", "the stored result of job " + std::to_string(id) + " is damaged (" +
+                                                     what + "); resume the job to compute it again");
+}
+
+/// What a plot or the VTU export reads of the job's stored result, as typed arrays
+/// (io/result_arrays.hpp): no tree of the nodes and elements.
+io::ResultArrays stored_result_arrays(JobStore& store, std::int64_t id, const io::ResultSelection& selection) {
+  const std::string result = stored_result_text(store, id);
   try {
-    return io::parse_json_subset(*result, members);
-  } catch (const json::exception&) {
-    throw damaged("not JSON");
-  } catch (const io::NestingTooDeep& e) {  // results are checked when stored: this is damage too
-    throw damaged(e.issues().front().pointer + ": " + e.issues().front().detail);
+    return io::read_result_arrays(result, selection);
+  } catch (const io::ResultTextError& e) {
+    throw damaged_result(id, std::string("not JSON: ") + e.what());
+  } catch (const io::NestingTooDeep& e) {
+    throw damaged_result(id, e.issues().front().pointer + ": " + e.issues().front().detail);
   }
 }
 
@@ -241,8 +249,9 @@ plot::PlotRequest plot_request(const httplib::Request& req) {
   plot::PlotRequest request;
   request.name = req.matches[2];
   request.format = req.matches[3] == "svg" ? plot::ImageFormat::svg : plot::ImageFormat::png;
-  request.width = static_cast<int>(integer_parameter(req, "width", 16, 4000).value_or(request.width));
-  request.height = static_cast<int>(integer_parameter(req, "height", 16, 4000).value_or(request.height));
+  constexpr int least = plot::Canvas::min_side, most = plot::Canvas::max_side;
+  request.width = static_cast<int>(integer_parameter(req, "width", least, most).value_or(request.width));
+  request.height = static_cast<int>(integer_parameter(req, "height", least, most).value_or(request.height));
   request.contour.max_bands = static_cast<int>(integer_parameter(req, "bands", 2, 40).value_or(request.contour.max_bands));
   request.contour.mesh = req.get_param_value("mesh") == "1" || req.get_param_value("mesh") == "true";
   const int samples = static_cast<int>(integer_parameter(req, "samples", 2, 100000).value_or(201));
@@ -411,9 +420,8 @@ void HttpApi::install(httplib::Server& server) {
     // The dashboard's contact tables: the result's contact member alone, however large the rest is.
     const std::int64_t id = job_in_path(req);
     if (not_modified(req, res, result_tag(store_, id, 0, "contact"))) return;
-    const json result =
-        stored_result(store_, id, [](int depth, std::string_view, std::string_view key) { return depth > 1 || key == "contact"; });
-    send_json(res, 200, {{"contact", result.value("contact", json::array())}});
+    const io::ResultArrays result = stored_result_arrays(store_, id, {.mesh = false, .element_keys = {}});
+    send_json(res, 200, {{"contact", result.document.value("contact", json::array())}});
   });
   server.Post(R"(/v1/jobs/(\d+)/cancel)", [this](const httplib::Request& req, httplib::Response& res) {
     const JobRecord job = store_.cancel(job_in_path(req));
@@ -430,8 +438,8 @@ void HttpApi::install(httplib::Server& server) {
   server.Get(R"(/v1/jobs/(\d+)/result\.vtu)", [this](const httplib::Request& req, httplib::Response& res) {
     const std::int64_t id = job_in_path(req);
     if (not_modified(req, res, result_tag(store_, id, 0, "vtu"))) return;
-    const json result = stored_result(store_, id);
-    if (result.value("status", "") == "failed") {
+    const io::ResultArrays result = stored_result_arrays(store_, id, io::vtu_result_selection());
+    if (result.document.value("status", "") == "failed") {
       throw HttpError(409, "Conflict", "job " + std::to_string(id) + " failed; there is no solution to export");
     }
     res.set_header("Content-Disposition", "attachment; filename=\"job-" + std::to_string(id) + ".vtu\"");
@@ -460,7 +468,10 @@ void HttpApi::install(httplib::Server& server) {
                       (job.state == JobState::queued || job.state == JobState::running || job.state == JobState::interrupted);
     const std::string variant = live ? req.target + "@" + std::to_string(job.iteration) : req.target;
     if (not_modified(req, res, result_tag(store_, id, 0, variant))) return;
-    const json result = live ? history_so_far(store_, job) : stored_result(store_, id, plot::result_members_for(request));
+    // The live history is a small tree; a stored result is read as typed arrays.
+    const std::optional<json> history = live ? std::optional<json>(history_so_far(store_, job)) : std::nullopt;
+    const plot::PlotResult result = history ? plot::PlotResult(*history)
+                                            : plot::PlotResult(stored_result_arrays(store_, id, plot::result_selection_for(request)));
     const bool table = req.matches[3] == "csv";
     std::string body;
     try {

@@ -1,6 +1,7 @@
 #include "service/job_execution.hpp"
 
 #include "analysis.hpp"
+#include "thermal_analysis.hpp"
 #include "io/history_json.hpp"
 #include "io/model_reader.hpp"
 #include "io/result_writer.hpp"
@@ -112,7 +113,7 @@ void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& 
     if (input.state) state = io::decode_stored_state(*input.state, parsed->digest);
 
     observer.emplace(sink, parsed->digest, shutting_down, pipeline);
-    const Solution solution = solve(model, &*observer, state ? &*state : nullptr, input.settings, ordering_cache);
+    const Solution solution = solve_with_heat(model, &*observer, state ? &*state : nullptr, input.settings, ordering_cache);
     // Every iteration is committed before the run's end is; a commit that failed ends the run here.
     pipeline.wait();
 

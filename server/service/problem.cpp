@@ -1,6 +1,7 @@
 #include "service/problem.hpp"
 
 #include "errors.hpp"
+#include "plural.hpp"
 #include "io/json_limits.hpp"
 #include "io/gmsh_mesh.hpp"
 #include "io/json_text.hpp"
@@ -57,9 +58,12 @@ void respond_to_exception(const httplib::Request& req, httplib::Response& res, s
   } catch (const ModelError& e) {
     json errors = json::array();
     for (const InputIssue& issue : e.issues()) errors.push_back({{"pointer", issue.pointer}, {"detail", issue.detail}});
-    write_problem(res, 422, "Invalid model",
-                  std::to_string(e.issues().size()) + (e.issues().size() == 1 ? " error" : " errors") +
-                      " in the model document",
+    // Titled by the document the pointers point into: "Invalid assembly", "2 errors in the assembly
+    // document"; resume settings are a request body, not a document.
+    const std::string& document = e.document();
+    write_problem(res, 422, "Invalid " + document,
+                  plural(static_cast<long long>(e.issues().size()), "error") + " in the " + document +
+                      (document == "resume settings" ? "" : " document"),
                   errors);
   } catch (const io::MeshTooLarge& e) {
     write_problem(res, 413, "Content Too Large", e.what(), json::array({{{"pointer", "/mesh"}, {"detail", e.what()}}}));

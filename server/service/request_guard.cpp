@@ -171,11 +171,17 @@ bool RequestGuard::admit(const httplib::Request& req, httplib::Response& res) co
                         req.has_header("Transfer-Encoding");
   // The one upload route takes multipart/form-data (an assembly and its mesh files); a foreign page
   // posting a form there is stopped by the Origin rule above.
-  const bool upload = req.path == "/v1/imports" &&
-                      lower(req.get_header_value("Content-Type")).rfind("multipart/form-data", 0) == 0;
+  const bool imports = req.path == "/v1/imports";
+  const bool upload = imports && lower(req.get_header_value("Content-Type")).rfind("multipart/form-data", 0) == 0;
   // Remote workers post CBOR (worker_protocol.hpp) to their own routes, which an HTML form cannot
   // reach with a body they accept either.
   const bool worker_body = is_worker_route(req.path) && is_media_type(req.get_header_value("Content-Type"), "application/cbor");
+  if (req.method == "POST" && has_body && imports && !upload) {
+    refuse(res, 415, "Unsupported Media Type",
+           "POST /v1/imports takes multipart/form-data (a part \"assembly\" and one part per file it names, "
+           "e.g. curl -F assembly=@a.json -F mesh=@a.msh), got \"" + req.get_header_value("Content-Type") + "\"");
+    return false;
+  }
   if (req.method == "POST" && has_body && !upload && !worker_body && !is_json_media_type(req.get_header_value("Content-Type"))) {
     refuse(res, 415, "Unsupported Media Type",
            "a POST body must be JSON (Content-Type: application/json), got \"" + req.get_header_value("Content-Type") + "\"");

@@ -9,7 +9,8 @@
 /// 3. Origin: a state-changing request (POST, PUT, PATCH, DELETE) whose Origin is not this server is
 ///    refused (403): a page elsewhere cannot submit, cancel or delete jobs;
 /// 4. Content-Type: a POST with a body must say JSON (415): an HTML form cannot send one (the
-///    upload route POST /v1/imports takes multipart/form-data, guarded by rule 3; the remote worker
+///    upload route POST /v1/imports takes only multipart/form-data, guarded by rule 3, and answers
+///    415 to any other body, JSON included; the remote worker
 ///    routes POST /v1/jobs/{id}/lease and /work/{iterations,finish} take application/cbor);
 /// 5. Idempotency-Key: printable ASCII, 1 to 255 characters (400);
 /// 6. authentication, with a token: `Authorization: Bearer TOKEN` (scheme case-insensitive, RFC 9110

@@ -21,26 +21,39 @@
 // The read rates are also printed as ratios of CPU rates, all measured in this one run.
 //   write, tree    the tree writer (kept in tests/io) + dump(2): what `saasgaps solve -o` wrote before
 //   write, stream  io::write_result, compact (the default) and --pretty, through a 64 KiB buffer
+//
+// With --plots RESULT.json, the pictures of a stored result instead, each stage reading the file
+// itself as `saasgaps plot` does (the parent holds nothing of it), a 1200 x 800 PNG:
+//   contour, tree     the text read whole, a tree of the nodes, gaps and each element's id,
+//                     material, nodes and plotted field (parse_json_subset, the plots' reader
+//                     before issue 23), then the contour of the effective stress
+//   contour, arrays   io::read_result_arrays_file (typed arrays, no tree) and the same contour
+//   arrays only       the read alone, without the drawing
+//   convergence, tree / arrays   the same for the convergence plot
+// and the ratios tree / arrays of wall time, CPU time and peak RSS, measured in this one run.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <functional>
 #include <random>
-#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "io/json_subset.hpp"
 #include "io/json_writer.hpp"
 #include "io/model_reader.hpp"
 #include "io/model_stream.hpp"
+#include "io/result_arrays.hpp"
 #include "io/result_tree_reference.hpp"
 #include "io/result_writer.hpp"
 #include "io/state_codec.hpp"
+#include "plot/plot_request.hpp"
 
 using namespace saasgaps;
 
@@ -139,21 +152,71 @@ Solution synthetic_solution(const Model& model) {
   return s;
 }
 
+/// The file's text, read straight into a string of its size (as saasgaps reads files): a string
+/// stream would hold a second copy for a moment, which at 300 MB would be the peak of a stage.
+std::string file_text(const char* path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  std::string text(static_cast<std::size_t>(in.tellg()), '\0');
+  in.seekg(0);
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  return text;
+}
+
+/// The plots' reading before issue 23: a tree of what the plot reads (a convergence plot: all but
+/// the nodes and elements; a contour: of each element only id, material, nodes and its field).
+nlohmann::json tree_before(const std::string& text, const plot::PlotRequest& request) {
+  const io::ResultSelection selection = plot::result_selection_for(request);
+  return io::parse_json_subset(text, [&selection](int depth, std::string_view section, std::string_view key) {
+    if (!selection.mesh) return depth != 1 || (key != "nodes" && key != "elements");
+    if (depth != 3 || section != "elements") return true;
+    return key == "id" || key == "material" || key == "nodes" ||
+           std::find(selection.element_keys.begin(), selection.element_keys.end(), key) != selection.element_keys.end();
+  });
+}
+
+void print_ratios(const char* what, const Measured& tree, const Measured& arrays) {
+  std::printf("%s, tree / arrays: wall %.2fx, CPU %.2fx, peak RSS %.2fx\n", what, tree.seconds / arrays.seconds,
+              tree.cpu_seconds / arrays.cpu_seconds, tree.peak_mib / arrays.peak_mib);
+}
+
+int plots(const char* path) {
+  const auto size = static_cast<double>(std::ifstream(path, std::ios::binary | std::ios::ate).tellg());
+  std::printf("result %s: %.1f MB of text; this process holds %.0f MiB\n", path, size / 1e6, peak_rss_mib());
+  for (const char* name : {"effective", "convergence"}) {
+    plot::PlotRequest request;
+    request.name = name;
+    const std::string what = std::string(name == std::string("effective") ? "contour" : "convergence");
+    const Measured tree = in_child([&] {
+      const nlohmann::json result = tree_before(file_text(path), request);
+      const std::string png = plot::render_plot(result, request);
+      return size;
+    });
+    print((what + ", tree (before)").c_str(), tree);
+    const Measured arrays = in_child([&] {
+      const plot::PlotResult result(io::read_result_arrays_file(path, plot::result_selection_for(request)));
+      const std::string png = plot::render_plot(result, request);
+      return size;
+    });
+    print((what + ", arrays").c_str(), arrays);
+    print((what + ", arrays only (no drawing)").c_str(), in_child([&] {
+            const io::ResultArrays read = io::read_result_arrays_file(path, plot::result_selection_for(request));
+            return size;
+          }));
+    print_ratios(what.c_str(), tree, arrays);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 3 && std::string(argv[1]) == "--plots") return plots(argv[2]);
   const bool reads_only = argc == 3 && std::string(argv[2]) == "--reads-only";
   if (argc != 2 && !reads_only) {
-    std::fprintf(stderr, "usage: %s MODEL.json [--reads-only]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s MODEL.json [--reads-only] | --plots RESULT.json\n", argv[0]);
     return 2;
   }
-  std::string text;
-  {
-    std::ifstream in(argv[1], std::ios::binary);
-    std::ostringstream all;
-    all << in.rdbuf();
-    text = all.str();
-  }
+  std::string text = file_text(argv[1]);
   const auto size = static_cast<double>(text.size());
   std::printf("model %s: %.1f MB of text; this process holds %.0f MiB\n", argv[1], size / 1e6, peak_rss_mib());
 

@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <vector>
 
 #include "command_fixture.hpp"
@@ -90,6 +91,41 @@ TEST_F(TerminalOutput, CompactTableFitsOneHundredTwentyColumnsAndWideShowsTheWat
   EXPECT_GT(widest(wide_lines), 120U);
   EXPECT_CONTAINS(wide_lines.front(), " s_th");
   EXPECT_CONTAINS(wide_lines.front(), " clos %");
+}
+
+TEST_F(TerminalOutput, GapCountsSayWhatTheyCountAndNoMeanOfNothing) {
+  // docs/results.md, "Gap words": "closed" is the gap state (touching). The classic table counts the
+  // report's gaps past 100 % instead, and says so; its mean over none of them is "-", not 0.0.
+  std::size_t rows_without_any = 0, rows_with_some = 0;
+  for (const char* model : {"report-problem2.json", "report-problem3-case1.json"}) {
+    const Outcome r = saasgaps(std::string("solve ") + example(model) + " -o " + path("r.json"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<std::string> lines = table_lines(r.err);
+    ASSERT_GE(lines.size(), 2U) << r.err;
+    EXPECT_CONTAINS(lines.front(), " > 100 %");
+    EXPECT_CONTAINS(lines.front(), " avg > 100 %");
+    EXPECT_EQ(lines.front().find("closed"), std::string::npos) << lines.front();
+    for (std::size_t k = 1; k < lines.size(); ++k) {
+      std::istringstream in(lines[k]);
+      std::string iteration, modulus, count, nonconverged, average;
+      in >> iteration >> modulus >> count >> nonconverged >> average;
+      if (count == "0") {
+        ++rows_without_any;
+        EXPECT_EQ(average, "-") << lines[k];
+      } else {
+        ++rows_with_some;
+        EXPECT_NE(average, "-") << lines[k];
+        EXPECT_GT(std::stod(average), 100.0) << lines[k];
+      }
+    }
+  }
+  EXPECT_GT(rows_without_any, 0U) << "no row shows the empty mean";
+  EXPECT_GT(rows_with_some, 0U);
+  // The exact mode counts the closed (touching) gaps, and heads the column so.
+  const Outcome exact = saasgaps("solve " + example("report-problem3-case1-exact.json") + " -o " + path("e.json"));
+  ASSERT_EQ(exact.exit_code, 0) << exact.err;
+  EXPECT_CONTAINS(table_lines(exact.err).front(), " closed");
+  EXPECT_CONTAINS(table_lines(exact.err).front(), " avg clos %");
 }
 
 TEST_F(TerminalOutput, ExactModeTableShowsTheExactColumnsNotTheClassicOnes) {

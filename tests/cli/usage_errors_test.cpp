@@ -50,6 +50,18 @@ TEST_F(UsageErrors, MissingArgumentIsAUsageError) {
   EXPECT_EQ(r.err.find("Usage:"), std::string::npos) << r.err;
 }
 
+TEST_F(UsageErrors, ImageSideHasTheServicesLimit) {
+  // One range for both ways of asking for a plot: 16 .. 4000 px, as GET .../plots?width= (the
+  // service test refuses width=4001 there).
+  const std::string result = solved_result();
+  for (const char* option : {"--width", "--height"}) {
+    const Outcome r = saasgaps("plot " + result + " --field effective -o " + path("p.png") + " " + option + " 4001");
+    EXPECT_EQ(r.exit_code, usage) << option;
+    EXPECT_CONTAINS(r.err, "4001");
+    EXPECT_CONTAINS(r.err, "4000");
+  }
+}
+
 TEST_F(UsageErrors, BadOptionValueNamesTheValue) {
   const Outcome r = saasgaps("solve " + example("report-problem1.json") + " --max-iterations many");
   EXPECT_EQ(r.exit_code, usage);

@@ -124,7 +124,8 @@ std::string in_contract_order(const json& document) {
   if (!document.is_object()) return document.dump();
   std::string text = "{";
   for (const char* key : {"schema_version", "title", "description", "units", "analysis", "nodes", "materials",
-                          "elements", "gaps", "constraints", "loads", "solver", "output", "steps", "contact"}) {
+                          "elements", "gaps", "constraints", "loads", "solver", "output", "steps", "contact",
+                          "thermal"}) {
     if (!document.contains(key)) continue;
     text += (text.size() > 1 ? ",\"" : "\"") + std::string(key) + "\":" + document[key].dump();
   }
@@ -626,7 +627,11 @@ TEST(ModelReaderRules, IsotropicRowsHaveExactlyTEnuAlpha) {
 }
 
 TEST(ModelReaderRules, YoungsModulusIsPositive) {
-  EXPECT_TRUE(rejects(with(valid_model(), "/materials/0/table/1/E", 0), "/materials/0/table/1/E", {"E = 0", "E > 0"}));
+  EXPECT_TRUE(rejects(with(valid_model(), "/materials/0/table/1/E", 0), "/materials/0/table/1/E", {"E = 0", "1e-30 <= E <= 1e+30"}));
+  // Beyond the arithmetic of the material law: an error at the modulus, not "not restrained" from
+  // the factorization of a stiffness that overflowed (issue 22).
+  EXPECT_TRUE(rejects(with(valid_model(), "/materials/0/table/1/E", 1e300), "/materials/0/table/1/E",
+                      {"E = 1e+300", "1e-30 <= E <= 1e+30", "overflow"}));
 }
 
 TEST(ModelReaderRules, IsotropicPoissonRatioIsBetweenMinus1AndHalf) {
@@ -1314,6 +1319,122 @@ TEST(ModelReaderRules, FrictionIsNotImplementedYetAndConductanceIsChecked) {
 
 TEST(ModelReader, ContactChangesTheModelDigest) {
   EXPECT_NE(model_digest(with_contact()), model_digest(valid_model()));
+// Heat conduction (thermal section, k and c, gap conductance)
+
+/// The minimal model with conductivity and a steady thermal section: edge 1-2 held at 500, a film
+/// on edge 2-3, a source in material 1.
+json with_thermal() {
+  json m = with(minimal_model(), "/materials/0/table/0/k", 2.5);
+  return with(m, "/thermal", json::parse(R"({
+    "type": "steady",
+    "boundary": [{"edges": [[1, 2]], "temperature": 500},
+                 {"edges": [[3, 2]], "film": 0.5, "ambient": 70},
+                 {"edges": [[3, 1]], "flux": 4}],
+    "sources": [{"material": 1, "power_density": 1.5}]
+  })"));
+}
+
+json transient(json m) {
+  m = with(m, "/thermal/type", "transient");
+  m = with(m, "/materials/0/table/0/c", 0.2);
+  m = with(m, "/materials/0/density", 0.1);
+  m = with(m, "/thermal/initial_temperature", 70);
+  m = with(m, "/thermal/time_step", 0.5);
+  return with(m, "/thermal/end_time", 10);
+}
+
+TEST(ModelReader, ThermalSectionAndConductivityAreRead) {
+  const Model m = read_model(with_thermal());
+  ASSERT_TRUE(m.thermal.has_value());
+  EXPECT_TRUE(m.materials[0].conducts);
+  EXPECT_FALSE(m.materials[0].stores_heat);
+  EXPECT_EQ(m.materials[0].table[0].k1, 2.5);
+  EXPECT_EQ(m.materials[0].table[0].k3, 2.5);
+  ASSERT_EQ(m.thermal->boundary.size(), 3u);
+  EXPECT_EQ(m.thermal->boundary[0].kind, ThermalBoundary::Kind::temperature);
+  EXPECT_EQ(m.thermal->boundary[0].value, 500.0);
+  EXPECT_EQ(m.thermal->boundary[1].kind, ThermalBoundary::Kind::film);
+  EXPECT_EQ(m.thermal->boundary[1].ambient, 70.0);
+  ASSERT_EQ(m.thermal->boundary[1].edges.size(), 1u);
+  EXPECT_EQ(m.thermal->boundary[1].edges[0].node_a, 2);  // node id 3 is index 2
+  EXPECT_EQ(m.thermal->boundary[2].kind, ThermalBoundary::Kind::flux);
+  ASSERT_EQ(m.thermal->sources.size(), 1u);
+  EXPECT_EQ(m.thermal->sources[0].power_density, 1.5);
+  const Model t = read_model(transient(with_thermal()));
+  EXPECT_EQ(t.thermal->type, ThermalType::transient);
+  EXPECT_EQ(t.thermal->output_times, std::vector<double>{10.0});  // default: the end
+  EXPECT_TRUE(t.materials[0].stores_heat);
+  // Without thermal a model reads as before.
+  EXPECT_FALSE(read_model(minimal_model()).thermal.has_value());
+}
+
+TEST(ModelReaderRules, ThermalExcludesGivenTemperatures) {
+  EXPECT_TRUE(rejects(with(with_thermal(), "/loads", json::parse(R"({"temperatures": {"default": 90}})")),
+                      "/loads/temperatures", {"/thermal", "remove one"}));
+}
+
+TEST(ModelReaderRules, ThermalNeedsPositiveConductivityInEveryRow) {
+  EXPECT_TRUE(rejects(without(with_thermal(), "/materials/0/table/0/k"), "/materials/0/table",
+                      {"material 1", "no conductivity"}));
+  EXPECT_TRUE(rejects(with(with_thermal(), "/materials/0/table/0/k", -1.0), "/materials/0/table/0/k", {"-1", "> 0"}));
+  json two_rows = with(with_thermal(), "/materials/0/table/1", json{{"T", 100}, {"E", 1e6}, {"nu", 0.25}, {"alpha", 0}});
+  EXPECT_TRUE(rejects(two_rows, "/materials/0/table/1", {"every row"}));
+  EXPECT_TRUE(rejects(with(with_thermal(), "/materials/0/compression_table",
+                           json::parse(R"([{"T": 0, "E": 1e6, "nu": 0.25, "alpha": 0, "k": 3}])")),
+                      "/materials/0/compression_table/0/k", {"belongs in table"}));
+}
+
+TEST(ModelReaderRules, TransientNeedsSpecificHeatAndDensity) {
+  EXPECT_TRUE(rejects(without(transient(with_thermal()), "/materials/0/table/0/c"), "/materials/0/table",
+                      {"specific heat"}));
+  EXPECT_TRUE(rejects(without(transient(with_thermal()), "/materials/0/density"), "/materials/0", {"density"}));
+  EXPECT_TRUE(rejects(without(transient(with_thermal()), "/thermal/time_step"), "/thermal", {"time_step"}));
+  EXPECT_TRUE(rejects(with(transient(with_thermal()), "/thermal/output_times", json{5, 3}), "/thermal/output_times/1",
+                      {"strictly increasing"}));
+  EXPECT_TRUE(rejects(with(transient(with_thermal()), "/thermal/output_times", json{12}), "/thermal/output_times/0",
+                      {"after end_time"}));
+  // A step that does not divide the output times is not an error: the run lands on each exactly.
+  EXPECT_NO_THROW((void)read_model(with(transient(with_thermal()), "/thermal/output_times", json{0.7, 5.75})));
+}
+
+TEST(ModelReaderRules, SteadyThermalNeedsATemperatureOrAFilm) {
+  json flux_only = with(with_thermal(), "/thermal/boundary", json::parse(R"([{"edges": [[3, 1]], "flux": 4}])"));
+  EXPECT_TRUE(rejects(flux_only, "/thermal/boundary", {"singular"}));
+  EXPECT_TRUE(rejects(without(with_thermal(), "/thermal/boundary"), "/thermal", {"singular"}));
+  EXPECT_TRUE(rejects(with(with_thermal(), "/thermal/time_step", 1), "/thermal/time_step", {"transient"}));
+}
+
+TEST(ModelReaderRules, ThermalBoundaryEntriesAreWellFormed) {
+  EXPECT_TRUE(rejects(with(with_thermal(), "/thermal/boundary/0/flux", 3), "/thermal/boundary/0", {"exactly one"}));
+  EXPECT_TRUE(rejects(without(with_thermal(), "/thermal/boundary/1/ambient"), "/thermal/boundary/1", {"ambient"}));
+  EXPECT_TRUE(rejects(with(with_thermal(), "/thermal/boundary/0/ambient", 3), "/thermal/boundary/0/ambient",
+                      {"film"}));
+  EXPECT_TRUE(rejects(with(with_thermal(), "/thermal/boundary/0/edges/0", json{1, 9}),
+                      "/thermal/boundary/0/edges/0/1", {"9"}));
+  EXPECT_TRUE(rejects(with(with_thermal(), "/thermal/boundary/2/temperature", 20.0), "/thermal/boundary/2",
+                      {"exactly one"}));
+  json clash = with(with_thermal(), "/thermal/boundary/2", json::parse(R"({"edges": [[3, 1]], "temperature": 20})"));
+  EXPECT_TRUE(rejects(clash, "/thermal/boundary/2/temperature", {"already held at 500"}));
+  EXPECT_TRUE(rejects(with(with_thermal(), "/thermal/sources/0/material", 7), "/thermal/sources/0/material", {"7"}));
+}
+
+TEST(ModelReaderRules, GapConductanceIsANumberOrATableOverPressure) {
+  json m = valid_model();
+  m = with(m, "/gaps/conductance", json::parse(R"({"closed": [{"p": 0, "h": 1}, {"p": 1000, "h": 8}],
+                                                   "gas_conductivity": 0.0002})"));
+  const Model read = read_model(m);
+  ASSERT_TRUE(read.gaps->conductance.has_value());
+  EXPECT_EQ(read.gaps->conductance->closed.size(), 2u);
+  EXPECT_EQ(read.gaps->conductance->gas_conductivity, 0.0002);
+  EXPECT_TRUE(rejects(with(m, "/gaps/conductance/closed/1/p", 0), "/gaps/conductance/closed/1/p", {"increasing"}));
+  EXPECT_TRUE(rejects(with(m, "/gaps/conductance/closed", -2), "/gaps/conductance/closed", {"-2"}));
+  EXPECT_EQ(read_model(with(m, "/gaps/conductance/closed", 5.0)).gaps->conductance->closed[0].h, 5.0);
+  json thermal = with(m, "/loads", json::object());
+  for (std::size_t i = 0; i < thermal["materials"].size(); ++i) {
+    for (json& row : thermal["materials"][i]["table"]) row[thermal["materials"][i]["elastic"] == "isotropic" ? "k" : "k1"] = 1.0;
+  }
+  EXPECT_TRUE(rejects(transient(with(thermal, "/thermal", json{{"type", "steady"}})), "/gaps/conductance",
+                      {"steady thermal runs only"}));
 }
 
 }  // namespace

@@ -81,6 +81,8 @@ json result_document(const Model& model, const Solution& s) {
   for (std::size_t e = 0; e < s.elements.size(); ++e) elements.push_back(element_json(model, model.elements[e], s.elements[e]));
   json gaps = json::array();
   for (std::size_t g = 0; g < s.gaps.size(); ++g) gaps.push_back(gap_json(model, model.gaps->elements[g], s.gaps[g]));
+  json reactions = json::array();
+  for (const NodeReaction& r : s.reactions) reactions.push_back({{"node", r.id}, {"fr", r.f_r}, {"fz", r.f_z}});
   json document = {{"status", s.status == RunStatus::converged ? "converged" : "not_converged"},
           {"iterations", s.iterations},
           {"message", s.message},
@@ -89,6 +91,7 @@ json result_document(const Model& model, const Solution& s) {
           {"reference_temperature", model.reference_temperature},
           {"history", history},
           {"nodes", nodes},
+          {"reactions", reactions},
           {"elements", elements},
           {"gaps", gaps}};
   // The model's unit names, only those given; no member when it gives none.
@@ -108,6 +111,7 @@ json failed_result_document(const std::string& message) {
           {"message", message},
           {"history", json::array()},
           {"nodes", json::array()},
+          {"reactions", json::array()},
           {"elements", json::array()},
           {"gaps", json::array()}};
 }

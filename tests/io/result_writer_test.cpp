@@ -179,6 +179,9 @@ TEST(ResultWriter, RandomSolutionIsTheTreeWritersDocument) {
     r.failure = r.converged ? GapFailure::none : GapFailure::overclosed;
     s.gaps.push_back(r);
   }
+  for (const Constraint& c : model.constraints) {
+    s.reactions.push_back({model.nodes[static_cast<std::size_t>(c.node)].id, random_value(rng), random_value(rng)});
+  }
   expect_same_document(model, s);
   const nlohmann::json written = nlohmann::json::parse(result_text(model, s));
   EXPECT_EQ(written["units"], (nlohmann::json{{"length", "in"}, {"stress", "lb/in\u00b2"}, {"temperature", "\u00b0F"}}));

@@ -193,6 +193,11 @@ def schema_expressible_cases(base):
         ("step increments 0", edits(m, ("/steps", [{"name": "a", "increments": 0}])), "/steps/0/increments"),
         ("step loads with an unknown member", edits(m, ("/steps", [{"name": "a", "loads": {"wind": 1}}])),
          "/steps/0/loads/wind"),
+        ("thermal type unknown", edits(m, ("/thermal", {"type": "radiant"})), "/thermal/type"),
+        ("negative conductivity", edits(m, ("/materials/0/table/0/k", -1.0)), "/materials/0/table/0/k"),
+        ("film without ambient",
+         edits(m, ("/thermal", {"type": "steady", "boundary": [{"edges": [[1, 2]], "film": 1.0}]})),
+         "/thermal/boundary/0"),
     ]
     return [(name, json.dumps(doc, indent=1), pointer) for name, doc, pointer in cases]
 
@@ -231,6 +236,14 @@ def semantic_cases(base):
         ("step constraint node not defined",
          edits(m, ("/steps", [{"name": "a", "constraints": [{"node": 99, "z": 0.1}]}])), "/steps/0/constraints/0/node"),
         ("step names repeated", edits(m, ("/steps", [{"name": "a"}, {"name": "a"}])), "/steps/1/name"),
+        ("thermal with given temperatures",
+         edits(m, ("/materials/0/table/0/k", 1.0), ("/thermal", {"type": "steady", "boundary": [{"edges": [[1, 2]], "temperature": 100.0}]})), "/loads/temperatures"),
+        ("thermal material without k", edits(m, ("/loads/temperatures", None), ("/thermal", {"type": "steady", "boundary": [{"edges": [[1, 2]], "temperature": 100.0}]})),
+         "/materials/0/table"),
+        ("steady thermal with nothing holding the temperature",
+         edits(m, ("/loads/temperatures", None), ("/materials/0/table/0/k", 1.0),
+               ("/thermal", {"type": "steady", "boundary": [{"edges": [[1, 2]], "flux": 1.0}]})),
+         "/thermal/boundary"),
         ("step load on an undefined node",
          edits(m, ("/steps", [{"name": "a", "loads": {"nodal_forces": [{"node": 99, "fz": 1.0}]}}])),
          "/steps/0/loads/nodal_forces/0/node"),

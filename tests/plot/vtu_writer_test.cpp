@@ -108,6 +108,16 @@ std::vector<T> values_of(const std::string& bytes) {
   return v;
 }
 
+TEST(VtuWriter, ReactionsArePointForcesZeroAtFreeNodes) {
+  json result = triangle_and_gap();
+  EXPECT_EQ(result_to_vtu(result, VtuFormat::ascii).find("Name=\"reaction"), std::string::npos)
+      << "a result written before reactions has none";
+  result["reactions"] = {{{"node", 40}, {"fr", 0.0}, {"fz", 12.5}}, {{"node", 50}, {"fr", -3.0}, {"fz", 0.0}}};
+  result["units"] = {{"force", "lbf"}};
+  const std::string vtu = result_to_vtu(result, VtuFormat::ascii);
+  EXPECT_EQ(array_text(vtu, "reaction [lbf]"), "0 0 0 0 0 0 0 0 0 0 12.5 0 -3 0 0");
+}
+
 TEST(VtuWriter, BinaryIsZlibCompressedAppendedDataWithTheSameValues) {
   const std::string vtu = result_to_vtu(triangle_and_gap());
   EXPECT_NE(vtu.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);

@@ -81,6 +81,21 @@ TEST_F(Service, ImportsAnUploadedAssembly) {
                                422);
   ASSERT_EQ(invalid["errors"].size(), 1u) << invalid.dump();
   EXPECT_EQ(invalid["errors"][0]["pointer"], "/regions/0/group");
+  // Titled by what was uploaded, not "Invalid model".
+  EXPECT_EQ(invalid["title"], "Invalid assembly");
+  EXPECT_EQ(invalid["detail"], "1 error in the assembly document");
+
+  // A file the assembly names but no part carries: named as the client knows it, not by a path on
+  // the server.
+  const json missing = problem(client.Post("/v1/imports", httplib::MultipartFormDataItems{
+                                                              {"assembly", assembly, "", "application/json"}}),
+                               422);
+  ASSERT_EQ(missing["errors"].size(), 1u) << missing.dump();
+  EXPECT_EQ(missing["errors"][0]["pointer"], "/mesh");
+  const std::string detail = missing["errors"][0]["detail"];
+  EXPECT_NE(detail.find("no part of the upload carries the file \"ring-fit.geo\""), std::string::npos) << detail;
+  EXPECT_EQ(detail.find("saasgaps-import-"), std::string::npos) << detail;
+  EXPECT_EQ(detail.find('/'), std::string::npos) << detail;
 
   bad = json::parse(assembly);
   bad["mesh"] = "../../etc/passwd.msh";
@@ -89,7 +104,9 @@ TEST_F(Service, ImportsAnUploadedAssembly) {
                                                               {"mesh", geo, "ring-fit.geo", "text/plain"}}),
                                422);
   EXPECT_EQ(escaped["errors"][0]["pointer"], "/mesh");
-  problem(client.Post("/v1/imports", assembly, "application/json"), 400);
+  // JSON (curl --json) is not an upload: 415 as for any POST body of the wrong type.
+  const json not_upload = problem(client.Post("/v1/imports", assembly, "application/json"), 415);
+  EXPECT_NE(not_upload["detail"].get<std::string>().find("multipart/form-data"), std::string::npos) << not_upload.dump();
 }
 
 TEST_F(Service, PlotsAndVtuOfAStoredResult) {
@@ -115,6 +132,9 @@ TEST_F(Service, PlotsAndVtuOfAStoredResult) {
   EXPECT_NE(unknown["detail"].get<std::string>().find("sigma_theta"), std::string::npos) << unknown.dump();
   problem(client.Get(path + "/plots/effective.png?deformed=lots"), 400);
   problem(client.Get(path + "/plots/effective.png?width=5"), 400);
+  // The command line's limit (saasgaps plot --width): one range, plot::Canvas::max_side.
+  const json wide = problem(client.Get(path + "/plots/effective.png?width=4001"), 400);
+  EXPECT_NE(wide["detail"].get<std::string>().find("4000"), std::string::npos) << wide.dump();
   // Cylindrical components about a centre (the beam is plane stress); a bad centre or colour map
   // is a 400 naming the parameter.
   const httplib::Result hoop = client.Get(path + "/plots/sigma_hoop.csv?centre=10,-5&path=0.5,0.5;8.5,0.5&samples=3");
@@ -164,6 +184,8 @@ TEST_F(Service, EveryBadRequestClassGetsItsStatusAndAPointer) {
   for (const json& e : bad_resume["errors"]) pointers.insert(e["pointer"].get<std::string>());
   EXPECT_TRUE(pointers.count("/tensile_schedule/1")) << bad_resume.dump();
   EXPECT_TRUE(pointers.count("/speed")) << bad_resume.dump();
+  EXPECT_EQ(bad_resume["title"], "Invalid resume settings");
+  EXPECT_EQ(bad_resume["detail"], "2 errors in the resume settings");
   // 409: resuming a converged job.
   problem(client.Post("/v1/jobs/" + std::to_string(job) + "/resume", "{}", "application/json"), 409);
   // 409: cancelling a finished job.

@@ -145,7 +145,7 @@ TEST(GapModulusMethod, ClassifiesEachGapByClosureAndVetoesUntilTheClosuresSettle
   // The partial gap was stiffened (b) and carries most of the pressure without touching: the note says so.
   EXPECT_GT(st.gaps.used.normal[0], 1.0);
   const std::string note = settled.converged_note(st, outcome);
-  EXPECT_NE(note.find("warning: 1 gap does not touch (closure below 95 %) yet carries more than"), std::string::npos) << note;
+  EXPECT_NE(note.find("warning: 1 gap is not closed (closure below 95 %) yet carries more than"), std::string::npos) << note;
   EXPECT_NE(note.find("accepts it, so its pressure and the stresses near it are approximate"), std::string::npos) << note;
   EXPECT_NE(note.find("gap 100"), std::string::npos) << note;
 }

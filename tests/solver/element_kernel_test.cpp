@@ -7,6 +7,8 @@
 #include <Eigen/Eigenvalues>
 #include <numbers>
 
+#include "support/graphite.hpp"
+
 namespace saasgaps {
 namespace {
 
@@ -19,20 +21,7 @@ ElasticConstants steel() {
   return c;
 }
 
-ElasticConstants graphite() {  // orthotropic, not aligned with anything
-  ElasticConstants c;
-  c.E1 = 1.6e6;
-  c.E2 = 1.1e6;
-  c.E3 = 1.3e6;
-  c.nu12 = 0.12;
-  c.nu13 = 0.1;
-  c.nu23 = 0.15;
-  c.G12 = 0.45e6;
-  c.alpha1 = 2.0e-6;
-  c.alpha2 = 3.0e-6;
-  c.alpha3 = 2.5e-6;
-  return c;
-}
+using testing::graphite;  // orthotropic, not aligned with anything
 
 ElementData distorted_quad(AnalysisType analysis, const ElasticConstants& c, double angle = 0.0) {
   ElementData e;

@@ -2,6 +2,8 @@
 /// The example models of schemas/examples, read through the io layer as a user's would be.
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -14,5 +16,9 @@ nlohmann::json example_document(const std::string& name);
 
 /// The model of schemas/examples/<name>.
 Model example_model(const std::string& name);
+
+/// Every JSON model of schemas/examples (not the assemblies), sorted, as (file, false), followed for
+/// those with classic gaps by (file, true): the run switched to "gaps.method": "exact".
+std::vector<std::pair<std::string, bool>> example_runs();
 
 }  // namespace saasgaps::testing

@@ -51,17 +51,8 @@ void PrintTo(const ExampleRun& run, std::ostream* os) { *os << run.stem(); }
 
 /// Every JSON model of schemas/examples, sorted, and the exact-contact variant of those with classic gaps.
 std::vector<ExampleRun> runs() {
-  std::vector<std::string> files;
-  for (const fs::directory_entry& entry : fs::directory_iterator(SAASGAPS_EXAMPLES_DIR)) {
-    if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path().filename().string());
-  }
-  std::sort(files.begin(), files.end());
   std::vector<ExampleRun> out;
-  for (const std::string& file : files) {
-    out.push_back({file, false});
-    const nlohmann::json doc = testing::example_document(file);
-    if (doc.contains("gaps") && doc["gaps"].value("method", "classic") == "classic") out.push_back({file, true});
-  }
+  for (const auto& [file, exact] : testing::example_runs()) out.push_back({file, exact});
   return out;
 }
 

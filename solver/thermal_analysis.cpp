@@ -1,0 +1,239 @@
+#include "thermal_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "sparse_cholesky.hpp"
+#include "thermal_system.hpp"
+
+namespace saasgaps {
+
+namespace {
+
+double largest_magnitude(std::span<const double> T) {
+  double m = 0.0;
+  for (double t : T) m = std::max(m, std::abs(t));
+  return m;
+}
+
+double largest_change(std::span<const double> a, std::span<const double> b) {
+  double m = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::abs(a[i] - b[i]));
+  return m;
+}
+
+bool same_conductivities(std::span<const Conductivity> a, std::span<const Conductivity> b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const Conductivity& x, const Conductivity& y) {
+    return x.k1 == y.k1 && x.k2 == y.k2 && x.angle_deg == y.angle_deg;
+  });
+}
+
+/// One conduction system with its factorization: assemble, factorize when the matrix changed, solve.
+class ConductionSolver {
+ public:
+  explicit ConductionSolver(const Model& model)
+      : system_(model),
+        cholesky_(system_.pattern(), system_.dofs().node_of_equation()),
+        values_(static_cast<std::size_t>(system_.pattern().nnz())),
+        rhs_(static_cast<std::size_t>(system_.dofs().size())),
+        x_(rhs_.size()) {}
+
+  [[nodiscard]] const ThermalSystem& system() const { return system_; }
+  [[nodiscard]] int factorizations() const { return factorizations_; }
+
+  std::vector<double> solve(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
+                            std::span<const double> gap_conductance) {
+    system_.assemble(k, inverse_dt, previous, gap_conductance, values_, rhs_);
+    if (values_ != factored_) {
+      try {
+        cholesky_.factorize(values_);
+      } catch (const NotPositiveDefinite& e) {
+        throw singular(e);
+      }
+      factored_ = values_;
+      ++factorizations_;
+    }
+    cholesky_.solve(rhs_, x_);
+    return system_.node_temperatures(x_);
+  }
+
+ private:
+  [[nodiscard]] SingularModelError singular(const NotPositiveDefinite& e) const {
+    std::vector<NodeDof> where;
+    for (Index column : e.columns()) where.push_back(system_.dofs().node_dof(column));
+    std::ostringstream text;
+    text << "the conduction matrix is singular: no temperature or film holds the temperature of the body at";
+    const std::size_t shown = std::min<std::size_t>(where.size(), 12);
+    for (std::size_t i = 0; i < shown; ++i) text << (i ? ", node " : " node ") << where[i].node_id;
+    if (where.size() > shown) text << " and " << where.size() - shown << " more";
+    return SingularModelError(text.str(), std::move(where));
+  }
+
+  ThermalSystem system_;
+  SparseCholesky cholesky_;
+  std::vector<double> values_;
+  std::vector<double> factored_;  // the values of the current factorization
+  std::vector<double> rhs_;
+  std::vector<double> x_;
+  int factorizations_ = 0;
+};
+
+/// h of a conductance table at contact pressure p: linear between rows, constant beyond the ends.
+double closed_conductance(const InterfaceConductance& c, double p) {
+  const auto& rows = c.closed;
+  if (p <= rows.front().p) return rows.front().h;
+  if (p >= rows.back().p) return rows.back().h;
+  const auto upper = std::upper_bound(rows.begin(), rows.end(), p, [](double v, const ConductanceRow& r) { return v < r.p; });
+  const ConductanceRow& b = *upper;
+  const ConductanceRow& a = *(upper - 1);
+  return a.h + (p - a.p) / (b.p - a.p) * (b.h - a.h);
+}
+
+bool touching(GapState s) { return s == GapState::closed || s == GapState::overclosed; }
+
+}  // namespace
+
+std::vector<double> gap_conductances(const Model& model, std::span<const GapResult> gaps) {
+  if (!model.gaps || !model.gaps->conductance || model.gaps->elements.empty()) return {};
+  const InterfaceConductance& c = *model.gaps->conductance;
+  std::vector<double> H(model.gaps->elements.size());
+  for (std::size_t g = 0; g < H.size(); ++g) {
+    const double w = gap_width(model, model.gaps->elements[g]);
+    if (!gaps.empty() && touching(gaps[g].state)) {
+      H[g] = closed_conductance(c, std::max(0.0, -gaps[g].sigma_m));  // sigma_m < 0 is compression
+      continue;
+    }
+    // Open: gas across the current opening; faces closer than 10^-6 of the width count as touching.
+    const double opening = w * (1.0 + (gaps.empty() ? 0.0 : gaps[g].eps_m));
+    H[g] = opening > 1.0e-6 * w ? c.gas_conductivity / opening : closed_conductance(c, 0.0);
+  }
+  return H;
+}
+
+ThermalResult solve_steady_conduction(const Model& model, std::span<const double> gap_conductance) {
+  ConductionSolver solver(model);
+  const ThermalSystem& system = solver.system();
+  std::vector<double> T(model.nodes.size(), model.reference_temperature);
+  std::vector<Conductivity> k = system.conductivities(T);
+  ThermalResult result;
+  double change = 0.0;
+  for (int pass = 1; pass <= max_conduction_iterations; ++pass) {
+    std::vector<double> next = solver.solve(k, 0.0, {}, gap_conductance);
+    change = largest_change(next, T);
+    T = std::move(next);
+    std::vector<Conductivity> k_next = system.conductivities(T);
+    const bool settled = same_conductivities(k_next, k) || change <= steady_tolerance * (1.0 + largest_magnitude(T));
+    if (settled) {
+      result.iterations = pass;
+      result.factorizations = solver.factorizations();
+      result.flux = system.fluxes(k_next, T);
+      result.T = std::move(T);
+      return result;
+    }
+    k = std::move(k_next);
+  }
+  std::ostringstream text;
+  text << "the steady conduction did not converge in " << max_conduction_iterations
+       << " passes of the k(T) iteration: the last changed a node temperature by " << change
+       << " (a conductivity that varies too steeply with T)";
+  throw SolverError(text.str());
+}
+
+ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance) {
+  const Thermal& thermal = *model.thermal;
+  ConductionSolver solver(model);
+  const ThermalSystem& system = solver.system();
+  std::vector<double> T(model.nodes.size(), thermal.initial_temperature);
+  ThermalResult result;
+  // Times count whole steps from the last output time (no drift from summing dt), so every full
+  // step has exactly the length time_step and reuses the factorization.
+  const double step = thermal.time_step;
+  const double sliver = 1.0e-9 * step;
+  double t = 0.0;
+  for (const double output : thermal.output_times) {
+    const double start = t;
+    for (long taken = 1; output - t > sliver; ++taken) {
+      const double remaining = output - t;
+      const double dt = std::abs(remaining - step) <= sliver ? step : std::min(step, remaining);
+      T = solver.solve(system.conductivities(T), 1.0 / dt, T, gap_conductance);
+      t = remaining - dt <= sliver ? output : start + static_cast<double>(taken) * step;
+      ++result.time_steps;
+    }
+    t = output;
+    result.times.push_back(output);
+    result.history.push_back(T);
+  }
+  result.factorizations = solver.factorizations();
+  result.flux = system.fluxes(system.conductivities(T), T);
+  result.T = std::move(T);
+  return result;
+}
+
+Model with_temperatures(const Model& model, const std::vector<double>& T) {
+  Model m = model;
+  m.loads.node_temperature = T;
+  for (Step& step : m.steps) {
+    if (step.loads) step.loads->node_temperature = T;
+  }
+  return m;
+}
+
+Model with_temperature_steps(const Model& model, const ThermalResult& transient) {
+  Model m = model;
+  m.steps.clear();
+  for (std::size_t k = 0; k < transient.times.size(); ++k) {
+    std::ostringstream name;
+    name << "t = " << transient.times[k];
+    Step step;
+    step.name = name.str();
+    step.loads = model.loads;
+    step.loads->node_temperature = transient.history[k];
+    m.steps.push_back(std::move(step));
+  }
+  return m;
+}
+
+Solution solve_with_heat(const Model& model, IterationObserver* observer, const RestartState* resume,
+                         const ResumeOptions& options, const OrderingCache* cache, const ContactMethodFactory& contact) {
+  if (!model.thermal) return solve(model, observer, resume, options, cache, contact);
+  std::vector<double> H = gap_conductances(model, {});
+  if (model.thermal->type == ThermalType::transient) {
+    if (!H.empty()) {
+      throw SolverError("conduction across gap elements is solved for steady runs only; a transient run with "
+                        "gaps.conductance is not supported yet");
+    }
+    ThermalResult heat = solve_transient_conduction(model);
+    Solution s = solve(with_temperature_steps(model, heat), observer, resume, options, cache, contact);
+    s.thermal = std::move(heat);
+    return s;
+  }
+  ThermalResult heat = solve_steady_conduction(model, H);
+  Solution s = solve(with_temperatures(model, heat.T), observer, resume, options, cache, contact);
+  if (H.empty()) {
+    s.thermal = std::move(heat);
+    return s;
+  }
+  // Conducting gaps: alternate conduction and stress until states and temperatures settle.
+  const auto states = [](const Solution& solution) {
+    std::vector<bool> touch;
+    for (const GapResult& g : solution.gaps) touch.push_back(touching(g.state));
+    return touch;
+  };
+  for (int pass = 2; pass <= max_coupling_passes; ++pass) {
+    const std::vector<bool> before = states(s);
+    ThermalResult next = solve_steady_conduction(model, gap_conductances(model, s.gaps));
+    const double change = largest_change(next.T, heat.T);
+    heat = std::move(next);
+    heat.passes = pass;
+    s = solve(with_temperatures(model, heat.T), observer, nullptr, options, cache, contact);
+    if (states(s) == before && change <= coupling_tolerance * (1.0 + largest_magnitude(heat.T))) {
+      s.thermal = std::move(heat);
+      return s;
+    }
+  }
+  throw SolverError("the thermal and contact solutions did not settle in " + std::to_string(max_coupling_passes) +
+                    " passes (gap states or temperatures kept changing)");
+}
+
+}  // namespace saasgaps

@@ -1,0 +1,179 @@
+#include "thermal_system.hpp"
+
+#include <cassert>
+
+#include "element_data.hpp"
+#include "gap_faces.hpp"
+#include "material.hpp"
+
+namespace saasgaps {
+
+namespace {
+
+std::vector<DofMap::Prescribed> prescribed_temperatures(const Model& model) {
+  std::vector<DofMap::Prescribed> fixed;
+  for (const ThermalBoundary& b : model.thermal->boundary) {
+    if (b.kind != ThermalBoundary::Kind::temperature) continue;
+    for (const ThermalEdge& e : b.edges) {
+      fixed.push_back({e.node_a, 0, b.value});
+      fixed.push_back({e.node_b, 0, b.value});
+    }
+  }
+  return fixed;
+}
+
+bool conducting_gaps(const Model& model) { return model.gaps && model.gaps->conductance && !model.gaps->elements.empty(); }
+
+/// The mean of an element's corner temperatures: where its properties are taken.
+double mean_temperature(const std::array<int, 4>& nodes, int count, std::span<const double> T) {
+  double sum = 0.0;
+  for (int k = 0; k < count; ++k) sum += T[static_cast<std::size_t>(nodes[k])];
+  return sum / count;
+}
+
+/// Position of node n among an element's corners.
+int corner_of(const Element& el, int n) {
+  for (int k = 0; k < el.node_count; ++k) {
+    if (el.nodes[k] == n) return k;
+  }
+  assert(false && "a thermal edge's node is a corner of its element");
+  return 0;
+}
+
+}  // namespace
+
+double gap_width(const Model& model, const GapElement& gap) {
+  return gap_faces(corner_coordinates(model, gap.nodes, gap.node_count), gap.node_count, gap.angle_deg).separation;
+}
+
+ThermalSystem::ThermalSystem(const Model& model)
+    : model_(model),
+      dofs_(model, "T", prescribed_temperatures(model)),
+      gaps_conduct_(conducting_gaps(model)),
+      assembler_(dofs_, model.elements.size() + (gaps_conduct_ ? model.gaps->elements.size() : 0),
+                 [&model](std::size_t e) {
+                   if (e < model.elements.size()) {
+                     const Element& el = model.elements[e];
+                     return std::span<const int>(el.nodes.data(), static_cast<std::size_t>(el.node_count));
+                   }
+                   const GapElement& g = model.gaps->elements[e - model.elements.size()];
+                   return std::span<const int>(g.nodes.data(), static_cast<std::size_t>(g.node_count));
+                 }) {
+  assert(model.thermal);
+  source_.assign(model.elements.size(), 0.0);
+  for (const HeatSource& s : model.thermal->sources) {
+    for (std::size_t e = 0; e < model.elements.size(); ++e) {
+      if (model.elements[e].material == s.material) source_[e] = s.power_density;
+    }
+  }
+  edges_.resize(model.elements.size());
+  for (const ThermalBoundary& b : model.thermal->boundary) {
+    if (b.kind == ThermalBoundary::Kind::temperature) continue;
+    for (const ThermalEdge& e : b.edges) {
+      const Element& el = model.elements[static_cast<std::size_t>(e.element)];
+      edges_[static_cast<std::size_t>(e.element)].push_back(
+          {corner_of(el, e.node_a), corner_of(el, e.node_b), b.kind, b.value, b.ambient});
+    }
+  }
+  if (gaps_conduct_) {
+    for (const GapElement& g : model.gaps->elements) {
+      gap_width_.push_back(gap_width(model, g));
+    }
+  }
+}
+
+ConductionData ThermalSystem::data(const Element& el, const Conductivity& k) const {
+  ConductionData d;
+  d.node_count = el.node_count;
+  d.x = corner_coordinates(model_, el.nodes, el.node_count);
+  d.analysis = model_.analysis;
+  d.thickness = model_.thickness;
+  d.k = k;
+  return d;
+}
+
+std::vector<Conductivity> ThermalSystem::conductivities(std::span<const double> T) const {
+  std::vector<Conductivity> k;
+  k.reserve(model_.elements.size());
+  for (const Element& el : model_.elements) {
+    const Material& m = model_.materials[static_cast<std::size_t>(el.material)];
+    const ThermalConstants c = interpolate_thermal(m.table, mean_temperature(el.nodes, el.node_count, T));
+    k.push_back({c.k1, c.k2, el.angle_deg});
+  }
+  return k;
+}
+
+void ThermalSystem::assemble(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
+                             std::span<const double> gap_conductance, std::span<double> values,
+                             std::span<double> rhs) const {
+  std::fill(values.begin(), values.end(), 0.0);
+  std::fill(rhs.begin(), rhs.end(), 0.0);
+  const SystemSink sink{values, rhs};
+  for (std::size_t e = 0; e < model_.elements.size(); ++e) {
+    const Element& el = model_.elements[e];
+    const ConductionData d = data(el, k[e]);
+    ConductionLoad load;
+    load.source = source_[e];
+    if (inverse_dt > 0.0) {
+      const Material& m = model_.materials[static_cast<std::size_t>(el.material)];
+      const double c = interpolate_thermal(m.table, mean_temperature(el.nodes, el.node_count, previous)).c;
+      load.capacity_rate = m.density * c * inverse_dt;
+      for (int a = 0; a < el.node_count; ++a) load.previous[a] = previous[static_cast<std::size_t>(el.nodes[a])];
+    }
+    ConductionBlock block = conduction_block(d, load);
+    for (const EdgeLoad& edge : edges_[e]) {
+      const Vec2& xa = d.x[edge.a];
+      const Vec2& xb = d.x[edge.b];
+      if (edge.kind == ThermalBoundary::Kind::flux) {
+        const auto w = edge_weights(xa, xb, model_.analysis, model_.thickness);
+        block.f[edge.a] += edge.value * w[0];
+        block.f[edge.b] += edge.value * w[1];
+        continue;
+      }
+      const EdgeBlock film = film_block(xa, xb, model_.analysis, model_.thickness, edge.value, edge.ambient);
+      const std::array<int, 2> at{edge.a, edge.b};
+      for (int i = 0; i < 2; ++i) {
+        block.f[at[i]] += film.f[i];
+        for (int j = 0; j < 2; ++j) block.K(at[i], at[j]) += film.K(i, j);
+      }
+    }
+    assembler_.add(e, ElementBlock::of(block.K, block.f), sink);
+  }
+  if (!gaps_conduct_) return;
+  assert(gap_conductance.size() == model_.gaps->elements.size());
+  const Eigen::Vector4d none = Eigen::Vector4d::Zero();
+  for (std::size_t g = 0; g < model_.gaps->elements.size(); ++g) {
+    const GapElement& gap = model_.gaps->elements[g];
+    ConductionData d;
+    d.node_count = gap.node_count;
+    d.x = corner_coordinates(model_, gap.nodes, gap.node_count);
+    d.analysis = model_.analysis;
+    d.thickness = model_.thickness;
+    d.k = {gap_conductance[g] * gap_width_[g], 0.0, gap.angle_deg};
+    const Eigen::Matrix4d K = conduction_matrix(d);
+    assembler_.add(model_.elements.size() + g, ElementBlock::of(K, none), sink);
+  }
+}
+
+std::vector<double> ThermalSystem::node_temperatures(std::span<const double> x) const {
+  std::vector<double> T(model_.nodes.size());
+  for (std::size_t n = 0; n < T.size(); ++n) {
+    const Index eq = dofs_.equation(static_cast<int>(n), 0);
+    T[n] = eq >= 0 ? x[static_cast<std::size_t>(eq)] : dofs_.prescribed(static_cast<int>(n), 0);
+  }
+  return T;
+}
+
+std::vector<Vec2> ThermalSystem::fluxes(std::span<const Conductivity> k, std::span<const double> T) const {
+  std::vector<Vec2> q;
+  q.reserve(model_.elements.size());
+  for (std::size_t e = 0; e < model_.elements.size(); ++e) {
+    const Element& el = model_.elements[e];
+    std::array<double, 4> t{};
+    for (int a = 0; a < el.node_count; ++a) t[a] = T[static_cast<std::size_t>(el.nodes[a])];
+    q.push_back(conduction_flux(data(el, k[e]), t));
+  }
+  return q;
+}
+
+}  // namespace saasgaps

@@ -1,0 +1,67 @@
+#pragma once
+/// The heat conduction system of a model's `thermal` section on its mesh: one unknown T per node,
+/// the prescribed temperatures eliminated, every solid element one clique (its film edges, fluxes
+/// and source added into its own block) and, when gap elements conduct, every gap element one more
+/// (conduction_kernel.hpp gives the element formulas, Assembler the scatter).
+///
+/// Gap elements conduct across their M axis only: a gap of conductance H (power / area /
+/// temperature) is a conduction element with k_M = H w and k_L = 0, w its width across M (the
+/// distance of its two faces), so that the heat through it is H (T_a - T_b) per area of face.
+
+#include <span>
+#include <vector>
+
+#include "assembler.hpp"
+#include "conduction_kernel.hpp"
+#include "dof_map.hpp"
+#include "model.hpp"
+
+namespace saasgaps {
+
+/// The width w of a gap element across its M axis: the distance of its two faces (gap_faces.hpp).
+double gap_width(const Model& model, const GapElement& gap);
+
+class ThermalSystem {
+ public:
+  /// The model must have `thermal`. Gap elements join the pattern when model.gaps has a conductance.
+  explicit ThermalSystem(const Model& model);
+
+  [[nodiscard]] const DofMap& dofs() const { return dofs_; }
+  [[nodiscard]] const CscPattern& pattern() const { return assembler_.pattern(); }
+  [[nodiscard]] bool gaps_conduct() const { return gaps_conduct_; }
+
+  /// Each solid element's conductivity (k1, k2) at the mean of its nodes' temperatures T (one per node).
+  [[nodiscard]] std::vector<Conductivity> conductivities(std::span<const double> T) const;
+
+  /// Assembles A = K + films (+ C / dt for a time step) and f into values (pattern().nnz()) and
+  /// rhs (dofs().size()), both zeroed here. k: conductivities(); inverse_dt: 1 / dt (0 for a steady
+  /// solve), with previous the node temperatures of the step before (the capacity density c is
+  /// taken at their element means); gap_conductance: H per gap element (gaps_conduct() only, else
+  /// empty).
+  void assemble(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
+                std::span<const double> gap_conductance, std::span<double> values, std::span<double> rhs) const;
+
+  /// Node temperatures from the free unknowns x (prescribed nodes take their values).
+  [[nodiscard]] std::vector<double> node_temperatures(std::span<const double> x) const;
+
+  /// Heat flux per solid element (q_r, q_z) at node temperatures T.
+  [[nodiscard]] std::vector<Vec2> fluxes(std::span<const Conductivity> k, std::span<const double> T) const;
+
+ private:
+  [[nodiscard]] ConductionData data(const Element& el, const Conductivity& k) const;
+
+  const Model& model_;
+  DofMap dofs_;
+  bool gaps_conduct_ = false;
+  Assembler assembler_;
+  std::vector<double> source_;          // per solid element: power density of its material
+  std::vector<double> gap_width_;       // per gap element
+  struct EdgeLoad {
+    int a = 0, b = 0;  // corner positions within the element
+    ThermalBoundary::Kind kind = ThermalBoundary::Kind::flux;
+    double value = 0.0, ambient = 0.0;
+  };
+  std::vector<std::vector<EdgeLoad>> edges_;  // per solid element, its film and flux edges
+};
+
+}  // namespace saasgaps
