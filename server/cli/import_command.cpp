@@ -38,8 +38,11 @@ int run_import(const ImportOptions& options) {
     return plural(model.contains(key) ? static_cast<long long>(model[key].size()) : 0, noun);
   };
   const long long gaps = model.contains("gaps") ? static_cast<long long>(model["gaps"]["elements"].size()) : 0;
+  // Exact face pairs import as contact surfaces (docs/import.md): say so, not only "0 gap elements".
+  const long long pairs = model.contains("contact") ? static_cast<long long>(model["contact"]["pairs"].size()) : 0;
   std::cerr << "imported " << options.assembly_path << ": " << count("nodes", "node") << ", " << count("elements", "element")
-            << ", " << plural(gaps, "gap element") << ", " << count("constraints", "constrained node") << '\n';
+            << ", " << plural(gaps, "gap element") << (pairs > 0 ? ", " + plural(pairs, "contact pair") : "") << ", "
+            << count("constraints", "constrained node") << '\n';
   return 0;
 }
 

@@ -153,8 +153,8 @@ int main(int argc, char** argv) {
                        "Plane models: the centre x,y of sigma_radial, sigma_hoop, tau_radial_hoop and their strains "
                        "(default 0,0)");
   plot_cmd->add_option("--gaps", plot.gaps, "The row of gaps for closure and contact_pressure, in order: ids and "
-                                            "ranges, e.g. 81-98 or 5,7,9-12 (default: every gap)");
-  plot_cmd->add_option("--along", plot.along, "Gap row x axis: index, position (arc length), r or z")
+                                            "ranges, e.g. 81-98 or 5,7,9-12 (default: every gap, or the contact pairs when the result has them)");
+  plot_cmd->add_option("--along", plot.along, "x axis along the gap row, or along side A of each contact pair: index, position (arc length), r or z")
       ->check(CLI::IsMember({"index", "position", "r", "z"}))
       ->capture_default_str();
   plot_cmd->add_option("--path", plot.path, "Plot the field along this polyline of points: 'r0,z0;r1,z1;...'");

@@ -27,8 +27,8 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 /// Sections of the model document the importer writes itself; the rest pass through.
-constexpr std::array<std::string_view, 5> generated_sections{"/nodes", "/elements", "/constraints", "/gaps/elements",
-                                                             "/loads/"};
+constexpr std::array<std::string_view, 6> generated_sections{"/nodes", "/elements", "/constraints", "/gaps/elements",
+                                                             "/loads/", "/contact"};
 
 /// A value for a message: its JSON text, cut short.
 std::string shown(const json& value) {
@@ -97,6 +97,10 @@ class Importer {
                         std::vector<std::string>& source);
   void gaps(json& model);
   std::optional<FaceChain> face(const json& name, const std::string& p);
+  /// An exact face pair {faces: [A, B]} (at p) as a contact pair of two surfaces in `contact`.
+  void contact_pair(const json& faces, const std::string& p, json& contact);
+  /// Index in contact["surfaces"] of the surface made of curve group `name` (at p), defined on first use.
+  std::optional<std::size_t> contact_surface(const json& name, const std::string& p, json& contact);
   void validate(const json& model);
 
 
@@ -110,6 +114,9 @@ class Importer {
   std::vector<int> ids_;
   std::optional<MeshGroups> groups_;  ///< once the mesh is loaded
   std::set<int> material_ids_;
+  /// Generated contact pointers (/contact/surfaces/k, /contact/pairs/k) and the assembly values they
+  /// come from, so that the model reader's findings are reported where the user wrote them.
+  std::vector<std::pair<std::string, std::string>> contact_origin_;
 };
 
 // ---- shape checks
@@ -549,8 +556,52 @@ std::optional<FaceChain> Importer::face(const json& name, const std::string& p) 
   return out;
 }
 
+/// A face pair of the exact method as contact: each face becomes a contact surface named for its
+/// curve group (its boundary edges as they are; the model reader judges the chain), the pair a contact
+/// pair [A, B], A the first face (the mortar's non-mortar side, docs/contact-surfaces.md).
+void Importer::contact_pair(const json& faces, const std::string& p, json& contact) {
+  const std::string a_at = pointer_append(p, std::size_t{0}), b_at = pointer_append(p, std::size_t{1});
+  const auto a = contact_surface(faces[0], a_at, contact);
+  const auto b = contact_surface(faces[1], b_at, contact);
+  if (!a || !b) return;
+  if (*a == *b) {
+    report(b_at, "a face cannot be paired with itself (\"" + faces[1].get<std::string>() +
+                     "\" is both faces); name the two curves that face each other");
+    return;
+  }
+  const std::string pair_at = pointer_append("/contact/pairs", contact["pairs"].size());
+  contact_origin_.emplace_back(pair_at, p.substr(0, p.rfind('/')));
+  contact["pairs"].push_back({{"surfaces", {contact["surfaces"][*a]["name"], contact["surfaces"][*b]["name"]}}});
+}
+
+std::optional<std::size_t> Importer::contact_surface(const json& name, const std::string& p, json& contact) {
+  const PhysicalGroup* g = named_group(name, p, {{1}, "a contact face", "a curve (dimension 1)"});
+  if (g == nullptr) return std::nullopt;
+  json& surfaces = contact["surfaces"];
+  for (std::size_t k = 0; k < surfaces.size(); ++k) {
+    if (surfaces[k]["name"] == g->name) return k;
+  }
+  json edges = json::array();
+  std::set<std::pair<int, int>> seen;  // an edge two curve entities share is one edge
+  for (const auto& [a, b] : groups_->edges(*g)) {
+    if (a < 0 || b < 0) {
+      report(p, "curve group \"" + g->name + "\" has nodes no surface element uses; a contact face bounds a meshed surface");
+      return std::nullopt;
+    }
+    if (seen.insert(std::minmax(a, b)).second) edges.push_back({tag_of(a), tag_of(b)});
+  }
+  if (edges.empty()) {
+    report(p, "curve group \"" + g->name + "\" has no line elements");
+    return std::nullopt;
+  }
+  contact_origin_.emplace_back(pointer_append("/contact/surfaces", surfaces.size()), p);
+  surfaces.push_back({{"name", g->name}, {"edges", std::move(edges)}});
+  return surfaces.size() - 1;
+}
+
 /// gaps: the settings pass through; pairs: [{faces: [curve, curve], first_id?, tolerance?}] become
-/// gaps.elements.
+/// gaps.elements, or with method "exact" contact surfaces and pairs (then no gap elements remain and
+/// the gaps block, whose settings concern gap elements only, is left out of the model).
 void Importer::gaps(json& model) {
   const auto it = doc_.find("gaps");
   if (it == doc_.end()) return;
@@ -568,6 +619,29 @@ void Importer::gaps(json& model) {
   settings["elements"] = json::array();
   if (list == nullptr || !mesh_loaded_) {
     model["gaps"] = std::move(settings);
+    return;
+  }
+  if (settings.value("method", json()) == "exact") {
+    json contact = {{"surfaces", json::array()}, {"pairs", json::array()}};
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const std::string p = pointer_append("/gaps/pairs", i);
+      const json& o = (*list)[i];
+      if (!object(o, p, {"faces"}, {"first_id", "tolerance"})) continue;
+      for (const char* key : {"first_id", "tolerance"}) {
+        if (o.contains(key)) {
+          report(pointer_append(p, key), std::string(key) + " concerns generated gap elements, and with gaps.method "
+                 "\"exact\" a face pair becomes contact surfaces instead (docs/import.md); remove it");
+        }
+      }
+      const auto faces = o.find("faces");
+      if (faces == o.end()) continue;
+      if (!faces->is_array() || faces->size() != 2) {
+        report(pointer_append(p, "faces"), "faces must name two curve groups, got " + shown(*faces));
+        continue;
+      }
+      contact_pair(*faces, pointer_append(p, "faces"), contact);
+    }
+    if (!contact["pairs"].empty()) model["contact"] = std::move(contact);
     return;
   }
   std::set<long long> used;  // element ids taken
@@ -628,7 +702,12 @@ void Importer::validate(const json& model) {
       const bool generated = std::any_of(generated_sections.begin(), generated_sections.end(), [&](std::string_view s) {
         return issue.pointer.starts_with(s) && !issue.pointer.starts_with("/loads/body_force");
       });
-      if (generated) {
+      const auto origin = std::find_if(contact_origin_.begin(), contact_origin_.end(), [&](const auto& o) {
+        return issue.pointer == o.first || issue.pointer.starts_with(o.first + "/");
+      });
+      if (origin != contact_origin_.end()) {
+        report(origin->second, "the generated " + issue.pointer + ": " + issue.detail);
+      } else if (generated) {
         report("/mesh", "the generated model's " + issue.pointer + ": " + issue.detail);
       } else {
         report(issue.pointer, issue.detail);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
+#include <utility>
 #include <unordered_map>
 #include <vector>
 
@@ -115,6 +117,44 @@ std::vector<VtuArray> id_arrays(const Mesh& m) {
   return {{"element_id", 1, std::move(ids)}, {"is_gap", 1, std::move(gap)}};
 }
 
+/// The contact_* point arrays (see the header): each point of result `contact` on the node at its
+/// (r, z), which is where the solver puts it (a side-A node's reference position, the same double).
+void add_contact_point_data(const json& result, const ResultNodes& nodes, const std::string& stress, const std::string& length,
+                            std::vector<VtuArray>& point_data) {
+  const auto contact = result.find("contact");
+  if (contact == result.end() || !contact->is_array() || contact->empty()) return;
+  std::map<std::pair<double, double>, std::size_t> at;
+  const std::size_t count = nodes.id.size();
+  for (std::size_t n = 0; n < count; ++n) at.emplace(std::pair{nodes.r[n], nodes.z[n]}, n);
+  std::vector<double> pressure(count, 0.0), gap(count, 0.0), shear(count, 0.0), slip(count, 0.0);
+  std::vector<std::int32_t> state(count, -1), pair_number(count, 0);
+  for (std::size_t k = 0; k < contact->size(); ++k) {
+    for (const json& point : (*contact)[k].at("points")) {
+      const double r = point.at("r").get<double>(), z = point.at("z").get<double>();
+      const auto node = at.find({r, z});
+      if (node == at.end()) {
+        throw std::invalid_argument("contact pair " + std::to_string(k + 1) + " has a point at (" + json(r).dump() + ", " +
+                                    json(z).dump() + "), which is not a node of the result");
+      }
+      const std::size_t n = node->second;
+      pressure[n] = point.at("pressure").get<double>();
+      gap[n] = point.at("gap").get<double>();
+      shear[n] = point.value("shear", 0.0);
+      slip[n] = point.value("slip", 0.0);
+      const std::string name = point.at("state").get<std::string>();
+      if (name != "open" && name != "stick" && name != "slip") throw std::invalid_argument("unknown contact state '" + name + "'");
+      state[n] = name == "open" ? 0 : name == "stick" ? 1 : 2;
+      pair_number[n] = static_cast<std::int32_t>(k + 1);
+    }
+  }
+  point_data.push_back({"contact_pressure" + stress, 1, std::move(pressure)});
+  point_data.push_back({"contact_gap" + length, 1, std::move(gap)});
+  point_data.push_back({"contact_shear" + stress, 1, std::move(shear)});
+  point_data.push_back({"contact_slip" + length, 1, std::move(slip)});
+  point_data.push_back({"contact_state", 1, std::move(state)});
+  point_data.push_back({"contact_pair", 1, std::move(pair_number)});
+}
+
 /// The solids' column of an element member (vtu_result_selection's keys).
 const std::vector<double>& solid_column(const ResultArrays& result, std::string_view key) {
   const std::vector<std::string>& keys = result.element_keys;
@@ -157,6 +197,7 @@ std::string vtu_document(const ResultArrays& result, VtuFormat format) {
     }
     m.piece.point_data.push_back({"reaction" + vtu_unit_suffix(document, "force"), 3, std::move(force)});
   }
+  add_contact_point_data(document, nodes, stress, length, m.piece.point_data);
 
   // ---- Cell data: element-only values (0 on gaps) and gap-only values (0 on solids), by their
   // document keys.

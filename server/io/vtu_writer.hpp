@@ -12,6 +12,14 @@
 ///   node_id       the model's node id
 ///   reaction      (fr, fz, 0): the supports' force on the node, 0 at free nodes (only when the
 ///                 result has `reactions`)
+/// and, when the result has contact surfaces (result `contact`), their points on side A's nodes
+/// (a point is at its node's reference position); nodes that are no pair's side A hold 0 and -1:
+///   contact_pressure, contact_gap, contact_shear, contact_slip  the point's values
+///   contact_state -1 not a side-A node, 0 open, 1 stick, 2 slip
+///   contact_pair  1, 2, .. the pair (in the result's order), 0 not a side-A node
+///   (a node on side A of two pairs holds the later pair's values). Point data rather than a second
+///   piece of vertices: one piece keeps every VTK reader's view of the file, and the contact values
+///   then deform, threshold and plot over a line with the mesh.
 /// Cell data (element-only values are 0 on gap cells, gap-only values are 0 on solid cells; use
 /// is_gap to tell them apart, e.g. with a Threshold filter):
 ///   element_id, is_gap (0/1), material (the material id; 0 on gap cells)

@@ -1,6 +1,9 @@
 #include "plot/contact_plot.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
 
 #include "plot/chart.hpp"
 #include "plot/field.hpp"
@@ -22,9 +25,186 @@ std::string tick_note(const char* panel, const Chart& chart) {
   return note;
 }
 
+constexpr Rgb part_colors[] = {{0.75, 0.10, 0.10}, {0.10, 0.30, 0.75}, {0.10, 0.55, 0.20},
+                               {0.85, 0.45, 0.00}, {0.50, 0.20, 0.65}, {0.35, 0.35, 0.35}};
+
+/// A number member of a contact point (0 when absent or not a number: the plot shows what is there).
+double member(const json& point, const char* key) {
+  const auto it = point.find(key);
+  return it != point.end() && it->is_number() ? it->get<double>() : 0.0;
+}
+
+/// One contact pair's points, as plotted.
+struct PairCurve {
+  std::string name;  ///< "A / B"
+  std::vector<double> x, r, z, pressure, gap;
+  std::vector<std::string> state;
+};
+
+std::vector<PairCurve> pair_curves(const json& result, RowAxis along) {
+  std::vector<PairCurve> curves;
+  for (const json& pair : array_member(result, "contact")) {
+    PairCurve c;
+    if (const auto s = pair.find("surfaces"); s != pair.end() && s->is_array() && s->size() == 2 &&
+                                              (*s)[0].is_string() && (*s)[1].is_string()) {
+      c.name = (*s)[0].get<std::string>() + " / " + (*s)[1].get<std::string>();
+    } else {
+      c.name = "pair " + std::to_string(curves.size() + 1);
+    }
+    double arc = 0.0;
+    for (const json& point : array_member(pair, "points")) {
+      const double r = member(point, "r"), z = member(point, "z");
+      if (!c.r.empty()) arc += std::hypot(r - c.r.back(), z - c.z.back());
+      c.r.push_back(r);
+      c.z.push_back(z);
+      c.pressure.push_back(member(point, "pressure"));
+      c.gap.push_back(member(point, "gap"));
+      const auto state = point.find("state");
+      c.state.push_back(state != point.end() && state->is_string() ? state->get<std::string>() : "");
+      switch (along) {
+        case RowAxis::index: c.x.push_back(static_cast<double>(c.r.size())); break;
+        case RowAxis::position: c.x.push_back(arc); break;
+        case RowAxis::r: c.x.push_back(r); break;
+        case RowAxis::z: c.x.push_back(z); break;
+      }
+    }
+    curves.push_back(std::move(c));
+  }
+  return curves;
+}
+
 }  // namespace
 
+bool has_contact_points(const json& result) {
+  const json& pairs = array_member(result, "contact");
+  return std::any_of(pairs.begin(), pairs.end(), [](const json& pair) { return !array_member(pair, "points").empty(); });
+}
+
+DataTable draw_surface_contact_plot(const Canvas& canvas, const json& result, RowAxis along) {
+  if (!has_contact_points(result)) {
+    throw std::invalid_argument("the result has no contact surface points: there is no contact pressure to plot");
+  }
+  const std::vector<PairCurve> curves = pair_curves(result, along);
+  UnitNames units;
+  if (const auto u = result.find("units"); u != result.end() && u->is_object()) {
+    units = {u->value("length", ""), u->value("force", ""), u->value("stress", ""), u->value("temperature", "")};
+  }
+  const auto text = [&](const char* key) {
+    const auto it = result.find(key);
+    return it != result.end() && it->is_string() ? it->get<std::string>() : std::string();
+  };
+  const std::string title = text("title"), status = text("status");
+  const auto count = result.find("iterations");
+  const int iterations = count != result.end() && count->is_number_integer() ? count->get<int>() : 0;
+
+  // Always show 0 in both panels (and a gap panel of some height when every gap is 0).
+  double low_x = INFINITY, high_x = -INFINITY, high_pressure = 0.0, low_gap = 0.0, high_gap = 0.0;
+  std::size_t points = 0;
+  for (const PairCurve& c : curves) {
+    points += c.x.size();
+    for (std::size_t i = 0; i < c.x.size(); ++i) {
+      low_x = std::min(low_x, c.x[i]);
+      high_x = std::max(high_x, c.x[i]);
+      high_pressure = std::max(high_pressure, c.pressure[i]);
+      low_gap = std::min(low_gap, c.gap[i]);
+      high_gap = std::max(high_gap, c.gap[i]);
+    }
+  }
+  if (!(high_x > low_x)) {
+    low_x -= 0.5;
+    high_x += 0.5;
+  }
+  // Touching points' gaps are round-off (1e-17 on a part of size 1): they belong on the 0 line, not
+  // spread over an axis of their own. Gaps below 1e-9 of the parts' size do not widen the axis.
+  double extent = 0.0;
+  for (const PairCurve& c : curves) {
+    for (std::size_t i = 0; i < c.r.size(); ++i) extent = std::max({extent, std::abs(c.r[i]), std::abs(c.z[i])});
+  }
+  const double negligible = 1e-9 * (extent > 0.0 ? extent : 1.0);
+  if (-low_gap < negligible) low_gap = 0.0;
+  if (high_gap < negligible) high_gap = 0.0;
+  if (!(high_gap > low_gap)) high_gap = low_gap + 1e3 * negligible;
+  const bool markers = points <= 200;
+  std::vector<Series> pressure_parts, gap_parts;
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    const PairCurve& c = curves[k];
+    if (c.x.empty()) continue;
+    Series pressure, gap;
+    pressure.name = gap.name = c.name;
+    pressure.color = gap.color = part_colors[k % std::size(part_colors)];
+    pressure.x = gap.x = c.x;
+    pressure.y = c.pressure;
+    gap.y = c.gap;
+    for (Series* s : {&pressure, &gap}) {
+      s->width = 2.0;
+      s->markers = markers;
+    }
+    pressure_parts.push_back(std::move(pressure));
+    gap_parts.push_back(std::move(gap));
+  }
+
+  static constexpr const char* axis_names[] = {"point along side A", "arc length along side A", "r", "z"};
+  const std::string x_name = axis_names[static_cast<int>(along)];
+  const Axis x_axis = along == RowAxis::index
+                         ? integer_axis(static_cast<int>(low_x), static_cast<int>(high_x), x_name, 10, 0.5)
+                         : numeric_axis(low_x, high_x, with_unit(x_name, Quantity::length, units));
+  const std::string subtitle = "Contact pressure " + unit_phrase(Quantity::stress, units) + " and gap along side A of " +
+                               std::to_string(pressure_parts.size()) + " contact pair" +
+                               (pressure_parts.size() == 1 ? "" : "s") + " (" + std::to_string(points) +
+                               " points) \u2014 " + run_summary(status, iterations);
+  const Rect area = draw_header(canvas, title.empty() ? "Contact along the contact surfaces" : title, subtitle);
+  const Typography t = typography(canvas);
+  const Rect upper{area.x, area.y, area.width, area.height / 2.0 - 0.2 * t.margin};
+  const Rect lower{area.x, upper.bottom() + 0.4 * t.margin, area.width, upper.height};
+  const Axis pressure_axis =
+      numeric_axis(0.0, high_pressure > 0.0 ? high_pressure : 1.0, with_unit("contact pressure", Quantity::stress, units));
+  const Axis gap_axis = numeric_axis(low_gap, high_gap, with_unit("gap", Quantity::length, units));
+  std::vector<Series> bottom_legend = gap_parts;
+  bottom_legend.push_back(reference_series("0 (touching)", colors::axis));
+  const Gutters a = Chart::gutters_for(canvas, pressure_axis, pressure_parts);
+  const Gutters b = Chart::gutters_for(canvas, gap_axis, bottom_legend);
+  const Gutters both{std::max(a.left, b.left), std::max(a.right, b.right)};
+  const Chart top(canvas, upper, x_axis, pressure_axis, pressure_parts, both);
+  top.draw_axes();
+  for (const Series& s : pressure_parts) top.draw(s);
+  top.draw_legend();
+  const Chart bottom(canvas, lower, x_axis, gap_axis, bottom_legend, both);
+  bottom.draw_axes();
+  bottom.draw_reference(0.0, colors::axis);
+  for (const Series& s : gap_parts) bottom.draw(s);
+  bottom.draw_legend();
+
+  DataTable table({"pair", "point", "x", "r", "z", "pressure", "gap", "state", "px", "py_pressure", "py_gap"});
+  table.note("SAASGAPS contact along the contact surfaces: " + title);
+  table.note("x: " + x_axis.title + "; pair: 1, 2, .. the result's contact pairs (one curve each); point: 1, 2, .. "
+             "along side A; pressure " + unit_phrase(Quantity::stress, units) + ", gap " +
+             unit_phrase(Quantity::length, units));
+  std::string names = "pairs (surfaces A / B):";
+  for (std::size_t k = 0; k < curves.size(); ++k) names += " " + std::to_string(k + 1) + " = " + curves[k].name + ";";
+  std::replace(names.begin(), names.end(), '\n', ' ');  // names are free text; a note is one line
+  table.note(names);
+  table.note("image " + std::to_string(canvas.width()) + "x" + std::to_string(canvas.height()) +
+             " px; px, py_*: where each marker is drawn");
+  table.note(tick_note("pressure", top));
+  table.note(tick_note("gap", bottom));
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    const PairCurve& c = curves[k];
+    for (std::size_t i = 0; i < c.x.size(); ++i) {
+      const Point p = top.to_device(c.x[i], c.pressure[i]);
+      const Point g = bottom.to_device(c.x[i], c.gap[i]);
+      table.add_row({std::to_string(k + 1), std::to_string(i + 1), DataTable::number(c.x[i]),
+                     DataTable::number(c.r[i]), DataTable::number(c.z[i]), DataTable::number(c.pressure[i]),
+                     DataTable::number(c.gap[i]), c.state[i], DataTable::number(p.x), DataTable::number(p.y),
+                     DataTable::number(g.y)});
+    }
+  }
+  return table;
+}
+
 DataTable draw_contact_plot(const Canvas& canvas, const PlotResult& result, const GapRowOptions& row_options) {
+  if (row_options.gap_ids.empty() && has_contact_points(result.document())) {
+    return draw_surface_contact_plot(canvas, result.document(), row_options.along);
+  }
   const ResultMesh& mesh = result.mesh();
   if (mesh.gaps.empty()) throw std::invalid_argument("the result has no gap elements: there is no contact pressure to plot");
   const GapRow row = select_gap_row(mesh, row_options, gap_labels_that_fit(canvas, mesh));
@@ -41,8 +221,6 @@ DataTable draw_contact_plot(const Canvas& canvas, const PlotResult& result, cons
     high_closure = std::max(high_closure, mesh.gaps[g].closure);
   }
   const bool markers = row.gaps.size() <= 200;
-  static constexpr Rgb part_colors[] = {{0.75, 0.10, 0.10}, {0.10, 0.30, 0.75}, {0.10, 0.55, 0.20},
-                                        {0.85, 0.45, 0.00}, {0.50, 0.20, 0.65}, {0.35, 0.35, 0.35}};
   std::vector<Series> pressure_parts, closure_parts;
   for (int k = 0; k < row.parts(); ++k) {
     const auto [begin, end] = row.part_range(k);

@@ -76,6 +76,10 @@ std::optional<DataTable> draw(const Canvas& canvas, const PlotResult& result, co
   } else if (request.name == "contact_pressure") {
     return draw_contact_plot(canvas, result, request.row);
   } else if (request.name == "closure") {
+    // Contact surfaces have no closure history: their closure is the gap along side A.
+    if (array_member(result.document(), "gaps").empty() && has_contact_points(result.document())) {
+      return draw_surface_contact_plot(canvas, result.document(), request.row.along);
+    }
     return draw_closure_plot(canvas, result, request.row, request.closure);
   } else {
     ContourOptions contour = request.contour;

@@ -9,8 +9,10 @@
 ///
 /// What a name draws:
 ///   a solid or node field        the contour plot; with a path, the field along the path
-///   closure                      gap closure along the gap row, one curve per iteration
-///   contact_pressure             contact pressure and closure along the gap row
+///   closure                      gap closure along the gap row, one curve per iteration (contact
+///                                surfaces only: as contact_pressure)
+///   contact_pressure             contact pressure and closure along the gap row, or pressure and gap
+///                                along each contact pair (contact_plot.hpp)
 ///   convergence                  the iteration's convergence
 
 #include <optional>

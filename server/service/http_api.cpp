@@ -416,6 +416,13 @@ void HttpApi::install(httplib::Server& server) {
   server.Get(R"(/v1/jobs/(\d+)/units)", [this](const httplib::Request& req, httplib::Response& res) {
     send_json(res, 200, model_units(store_.model(job_in_path(req))));
   });
+  server.Get(R"(/v1/jobs/(\d+)/contact)", [this](const httplib::Request& req, httplib::Response& res) {
+    // The dashboard's contact tables: the result's contact member alone, however large the rest is.
+    const std::int64_t id = job_in_path(req);
+    if (not_modified(req, res, result_tag(store_, id, 0, "contact"))) return;
+    const io::ResultArrays result = stored_result_arrays(store_, id, {.mesh = false, .element_keys = {}});
+    send_json(res, 200, {{"contact", result.document.value("contact", json::array())}});
+  });
   server.Post(R"(/v1/jobs/(\d+)/cancel)", [this](const httplib::Request& req, httplib::Response& res) {
     const JobRecord job = store_.cancel(job_in_path(req));
     log_info("job_cancel_requested", {{"job", job.id}, {"request_id", res.get_header_value("X-Request-Id")},

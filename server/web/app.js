@@ -100,6 +100,36 @@ function unitOf(units, kind) {
   return units && units[kind] ? ` [${units[kind]}]` : "";
 }
 
+// A contact pair of the result (its points along side A) as a table: its points, those in
+// contact, the peak pressure and the largest gap, with where they are.
+function contactPairTable(pair, index, units) {
+  const table = Object.assign(document.createElement("table"), { className: "grid numbers contact-pair" });
+  table.dataset.pair = String(index + 1);
+  const [a, b] = pair.surfaces || ["?", "?"];
+  table.createCaption().textContent = `Pair ${index + 1}: ${a} against ${b}`;
+  const points = pair.points || [];
+  const touching = points.filter(p => p.state !== "open");
+  const peak = points.reduce((best, p) => (best === null || p.pressure > best.pressure ? p : best), null);
+  const widest = points.reduce((best, p) => (best === null || p.gap > best.gap ? p : best), null);
+  const at = p => (p ? ` at (${p.r.toPrecision(5)}, ${p.z.toPrecision(5)})` : "");
+  const rows = [
+    ["points along " + a, String(points.length), "points"],
+    ["points in contact", String(touching.length), "in-contact"],
+    ["peak pressure" + unitOf(units, "stress"), peak ? peak.pressure.toPrecision(5) + at(peak) : "", "peak-pressure"],
+    ["largest gap" + unitOf(units, "length"), widest ? widest.gap.toPrecision(4) + at(widest) : "", "largest-gap"],
+  ];
+  const body = table.createTBody();
+  for (const [label, value, key] of rows) {
+    const tr = body.insertRow();
+    tr.dataset.key = key;
+    const th = document.createElement("th");
+    th.textContent = label;
+    tr.appendChild(th);
+    cell(tr, value);
+  }
+  return table;
+}
+
 // ---------------------------------------------------------------------------------------------
 // The job list.
 
@@ -360,12 +390,39 @@ async function showJob(id) {
     $("#resume").disabled = ["queued", "running", "converged"].includes(job.state);
     const hasResult = !active;
     if (job.last_row && Array.isArray(job.last_row.gap_closures)) hasGaps = job.last_row.gap_closures.length > 0;
-    $("#links").replaceChildren(...[["model", base + "/model"], ["iterations", base + "/iterations"]]
-      .concat(hasResult ? [["result (JSON)", base + "/result"], ["result (VTU for ParaView)", base + "/result.vtu"]] : [])
-      .concat(hasResult && hasGaps ? [["contact pressure (CSV)", base + "/plots/contact_pressure.csv"]] : [])
-      .map(([label, href]) => Object.assign(document.createElement("a"), { href: withToken(href), textContent: label })));
+    showLinks(hasResult);
     if (hasResult && !plotsShown) showPlots();
     if (!hasResult) showRunning();
+    if (hasResult && !contactAsked) loadContact(hasResult);
+  }
+
+  function showLinks(hasResult) {
+    $("#links").replaceChildren(...[["model", base + "/model"], ["iterations", base + "/iterations"]]
+      .concat(hasResult ? [["result (JSON)", base + "/result"], ["result (VTU for ParaView)", base + "/result.vtu"]] : [])
+      .concat(hasResult && (hasGaps || hasContact()) ? [["contact pressure (CSV)", base + "/plots/contact_pressure.csv"]] : [])
+      .map(([label, href]) => Object.assign(document.createElement("a"), { href: withToken(href), textContent: label })));
+  }
+
+  // Contact surfaces: the result's pairs (GET .../contact, the result's contact member alone), a
+  // table each, and the contact-pressure plot, which then draws them.
+  let contact = [], contactAsked = false;
+  const hasContact = () => contact.length > 0;
+  function loadContact(hasResult) {
+    contactAsked = true;
+    api(base + "/contact").then(answer => {
+      contact = Array.isArray(answer.contact) ? answer.contact : [];
+      if (!hasContact()) return;
+      $("#contact-pairs").replaceChildren(...contact.map((pair, k) => contactPairTable(pair, k, units)));
+      $("#contact-section").hidden = false;
+      $("#contact-caption").textContent = "contact pressure and gap along each contact pair";
+      $("#contact-plot").alt = "contact pressure and gap along each contact pair";
+      showLinks(hasResult);
+      if (plotsShown) {
+        $("#contact-plot").parentElement.hidden = false;
+        if ($("#contact-plot").hidden) placeholder("#contact-plot", "drawing ...");
+        loadPlot("#contact-plot", "contact_pressure", rowOptions());
+      }
+    }).catch(() => { contactAsked = false; });
   }
 
   // Plots are drawn for the space they get: the figure's width in device pixels, so a PNG is sharp
@@ -399,6 +456,8 @@ async function showJob(id) {
 
   let hasGaps = true;
   const gapPlot = selector => selector === "#contact-plot" || selector === "#closure-plot";
+  // A model without gaps has no gap plots; with contact surfaces, the contact plot draws those.
+  const noPlot = selector => gapPlot(selector) && !hasGaps && !(selector === "#contact-plot" && hasContact());
 
   // A figure's placeholder says what the figure waits for (or why it cannot be drawn); it shows
   // whenever its picture does not.
@@ -463,7 +522,7 @@ async function showJob(id) {
     plotsShown = false;
     for (const [selector] of plots) {
       if (selector !== "#convergence-plot") placeholder(selector, "drawn when the job has a result");
-      $(selector).parentElement.hidden = gapPlot(selector) && !hasGaps;
+      $(selector).parentElement.hidden = noPlot(selector);
     }
     if (rows.size === 0) {
       placeholder("#convergence-plot", "drawn after the first iteration");
@@ -485,9 +544,9 @@ async function showJob(id) {
   function showPlots() {
     plotsShown = true;
     // A model without gaps has no gap plots: their figures go before the others are measured.
-    for (const [selector] of plots) $(selector).parentElement.hidden = gapPlot(selector) && !hasGaps;
+    for (const [selector] of plots) $(selector).parentElement.hidden = noPlot(selector);
     for (const [selector, name, optionsOf] of plots) {
-      if (gapPlot(selector) && !hasGaps) continue;
+      if (noPlot(selector)) continue;
       if (selector === "#convergence-plot" && exact) { drawExactConvergence(); continue; }
       if ($(selector).hidden) placeholder(selector, "drawing ...");
       loadPlot(selector, name(), optionsOf());

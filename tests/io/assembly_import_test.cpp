@@ -313,6 +313,88 @@ TEST(AssemblyImport, ZeroClearanceNamesThePair) {
   EXPECT_NE(issue.detail.find("node 4 at (0, 1) and node 7"), std::string::npos) << issue.detail;
 }
 
+// ---- exact face pairs: contact surfaces
+
+/// The two-block assembly with gaps.method "exact" (and without what concerns gap elements).
+json exact_two_blocks() {
+  json assembly = load(data_dir / "two_blocks.assembly.json");
+  assembly["gaps"]["method"] = "exact";
+  assembly["gaps"]["pairs"][0].erase("first_id");
+  assembly["output"].erase("watch_gaps");
+  return assembly;
+}
+
+/// (node ids of each edge) of a contact surface.
+std::vector<std::vector<int>> surface_edges(const Model& m, std::size_t surface) {
+  std::vector<std::vector<int>> edges;
+  for (const auto& [a, b] : m.contact->surfaces[surface].edges) {
+    edges.push_back({m.nodes[static_cast<std::size_t>(a)].id, m.nodes[static_cast<std::size_t>(b)].id});
+  }
+  return edges;
+}
+
+TEST(AssemblyImport, ExactFacePairsBecomeContactSurfacesAtAnyClearance) {
+  const Scratch scratch;
+  // The upper block's bottom nodes 7, 8, 9 at z = 1.01 (a clearance), 1 (touching), 0.99 (an
+  // interference), and with node 8 moved along the face (the faces' nodes no longer face each other).
+  const std::vector<std::pair<std::string, std::string>> variants{
+      {"8 1 1.01 0", "8 1 1.01 0"}, {"1.01 0", "1 0"}, {"1.01 0", "0.99 0"}, {"8 1 1.01 0", "8 1.4 1.01 0"}};
+  for (const auto& [from, to] : variants) {
+    std::string text = text_of(data_dir / "two_blocks.msh");
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+      text.replace(at, from.size(), to);
+    }
+    scratch.write("two_blocks.msh", text);
+    const Model m = io::read_model(io::import_assembly(exact_two_blocks(), scratch.dir()));
+    EXPECT_FALSE(m.gaps) << to;  // no gap elements, so no gaps block
+    ASSERT_TRUE(m.contact) << to;
+    ASSERT_EQ(m.contact->surfaces.size(), 2u);
+    EXPECT_EQ(m.contact->surfaces[0].name, "lower_top");
+    EXPECT_EQ(m.contact->surfaces[1].name, "upper_bottom");
+    EXPECT_EQ(surface_edges(m, 0), (std::vector<std::vector<int>>{{4, 5}, {5, 6}}));
+    EXPECT_EQ(surface_edges(m, 1), (std::vector<std::vector<int>>{{7, 8}, {8, 9}}));
+    ASSERT_EQ(m.contact->pairs.size(), 1u);
+    EXPECT_EQ(m.contact->pairs[0].surfaces, (std::array<int, 2>{0, 1}));
+  }
+  // The classic method still generates gap elements (ImportedMshEqualsTheHandWrittenModel); a face
+  // used by two pairs is one surface.
+  json twice = exact_two_blocks();
+  twice["gaps"]["pairs"].push_back({{"faces", {"upper_bottom", "top"}}});
+  const Model m = io::read_model(io::import_assembly(twice, data_dir));
+  ASSERT_TRUE(m.contact);
+  EXPECT_EQ(m.contact->surfaces.size(), 3u);
+  ASSERT_EQ(m.contact->pairs.size(), 2u);
+  EXPECT_EQ(m.contact->pairs[1].surfaces, (std::array<int, 2>{1, 2}));
+}
+
+TEST(AssemblyImport, ExactFacePairErrorsAtTheirPointers) {
+  struct BadPair {
+    const char* what;
+    json pair;
+    const char* pointer;
+    const char* says;
+  };
+  const std::vector<BadPair> cases{
+      {"first_id", {{"faces", {"lower_top", "upper_bottom"}}, {"first_id", 100}}, "/gaps/pairs/0/first_id",
+       "becomes contact surfaces"},
+      {"tolerance", {{"faces", {"lower_top", "upper_bottom"}}, {"tolerance", 0.2}}, "/gaps/pairs/0/tolerance",
+       "becomes contact surfaces"},
+      {"a face with itself", {{"faces", {"lower_top", "lower_top"}}}, "/gaps/pairs/0/faces/1", "paired with itself"},
+      {"an unknown group", {{"faces", {"lower_top", "uper_bottom"}}}, "/gaps/pairs/0/faces/1", "did you mean"},
+      {"a surface group", {{"faces", {"lower", "upper_bottom"}}}, "/gaps/pairs/0/faces/0", "a curve (dimension 1)"},
+      // "left" runs up both blocks' sides: two pieces, not one chain (the model reader's finding).
+      {"not a chain", {{"faces", {"left", "upper_bottom"}}}, "/gaps/pairs/0/faces/0", "/contact/surfaces/0/edges/"},
+      {"three faces", {{"faces", {"lower_top", "upper_bottom", "top"}}}, "/gaps/pairs/0/faces", "two curve groups"},
+  };
+  for (const BadPair& c : cases) {
+    json assembly = exact_two_blocks();
+    assembly["gaps"]["pairs"][0] = c.pair;
+    const InputIssue issue = single_issue(assembly, data_dir);
+    EXPECT_EQ(issue.pointer, c.pointer) << c.what << ": " << issue.detail;
+    EXPECT_NE(issue.detail.find(c.says), std::string::npos) << c.what << ": " << issue.detail;
+  }
+}
+
 TEST(AssemblyImport, AFileThatIsNotAMesh) {
   const Scratch scratch;
   scratch.write("two_blocks.msh", "{\"this\": \"is JSON, not a mesh\"}\n");

@@ -46,6 +46,8 @@ def broken(doc):
         ("gap elements given", edit(lambda d: d["gaps"].update({"elements": []})), "/gaps/elements"),
         ("one face", edit(lambda d: d["gaps"]["pairs"][0].update({"faces": ["x_axis"]})), "/gaps/pairs/0/faces"),
         ("zero tolerance", edit(lambda d: d["gaps"]["pairs"][0].update({"tolerance": 0})), "/gaps/pairs/0/tolerance"),
+        ("first_id of an exact pair (contact surfaces)", edit(lambda d: d["gaps"].update({"method": "exact"})),
+         "/gaps/pairs/0/first_id"),
         ("temperature file without path",
          edit(lambda d: d["loads"]["temperatures"].update({"file": {"field": "T"}})), "/loads/temperatures/file"),
     ]

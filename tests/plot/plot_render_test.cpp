@@ -307,6 +307,29 @@ TEST_F(PlotRender, PlotCommandWritesTheFileTheExtensionNames) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 
+TEST_F(PlotRender, ContactSurfacesFromTheCommandLineOneCurvePerPair) {
+  // The press fit imported as contact surfaces (docs/import.md), solved and plotted as a user does.
+  const std::string assembly = std::string(SAASGAPS_EXAMPLES_DIR) + "/assemblies/ring-press-fit.assembly.json";
+  Outcome r = run("import " + assembly + " -o " + path("press-fit-model.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run("solve " + path("press-fit-model.json") + " -q -o " + path("press-fit.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run("plot " + path("press-fit.json") + " --field contact_pressure --along z -o " + path("press-fit.csv"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string csv = read(dir_ / "press-fit.csv");
+  EXPECT_NE(csv.find("pairs (surfaces A / B): 1 = hub_bore / shaft_outside;"), std::string::npos) << csv;
+  std::size_t rows = 0;
+  std::istringstream lines(csv.substr(csv.find("pair,point,x,r,z,pressure,gap,state")));
+  for (std::string line; std::getline(lines, line);) rows += line.rfind("1,", 0) == 0 ? 1 : 0;
+  EXPECT_EQ(rows, 13U) << "a row per point of the hub's bore";
+  // The closure plot of a model with surfaces only draws them rather than failing.
+  for (const char* field : {"contact_pressure", "closure"}) {
+    r = run("plot " + path("press-fit.json") + " --field " + field + " -o " + path(std::string(field) + "-pf.png"));
+    ASSERT_EQ(r.exit_code, 0) << field << ": " << r.err;
+    EXPECT_GT(png_colours(read(dir_ / (std::string(field) + "-pf.png")), 1200, 800), 30U) << field;
+  }
+}
+
 TEST_F(PlotRender, UnknownFieldIsAClearErrorListingTheFields) {
   const Outcome r = run("plot " + path("p3.json") + " --field stress -o " + path("x.png"));
   EXPECT_NE(r.exit_code, 0);

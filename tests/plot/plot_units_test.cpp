@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <map>
 #include <sstream>
+#include <utility>
 #include <nlohmann/json.hpp>
 
 #include "plot/band_levels.hpp"
@@ -591,6 +592,18 @@ std::array<int, 3> pixel(const std::string& png, double x, double y) {
   return {static_cast<int>((value >> 16) & 0xFF), static_cast<int>((value >> 8) & 0xFF), static_cast<int>(value & 0xFF)};
 }
 
+/// A PNG's lines break between two curves and join the points of one: midway from `end` (the first
+/// curve's last marker, px) to `start` (the second's first) is background, midway between `a` and `b`
+/// (neighbours on the first curve, drawn in red) is the line.
+void expect_break_between(const std::string& png, std::pair<double, double> end, std::pair<double, double> start,
+                          std::pair<double, double> a, std::pair<double, double> b) {
+  const std::array<int, 3> across = pixel(png, (end.first + start.first) / 2.0, (end.second + start.second) / 2.0);
+  EXPECT_GT(std::min({across[0], across[1], across[2]}), 200) << "background, not a line: " << across[0] << ","
+                                                              << across[1] << "," << across[2];
+  const std::array<int, 3> within = pixel(png, (a.first + b.first) / 2.0, (a.second + b.second) / 2.0);
+  EXPECT_GT(within[0], within[2] + 80) << "the first curve's line, in red";
+}
+
 TEST(GapRow, NoLineJoinsTwoSeparateRows) {
   // Between gap 3 (end of the first row, 140) and gap 4 (start of the second, 30) nothing is drawn;
   // within a row, the line between neighbours is.
@@ -610,16 +623,102 @@ TEST(GapRow, NoLineJoinsTwoSeparateRows) {
     at[std::stoi(cells[0])] = {std::stod(cells[7]), std::stod(cells[8])};
   }
   ASSERT_EQ(at.size(), 5U) << csv;
-  const auto middle = [&at](int a, int b) {
-    return std::pair{(at[a].first + at[b].first) / 2.0, (at[a].second + at[b].second) / 2.0};
+  expect_break_between(png, at[3], at[4], at[1], at[2]);
+}
+
+/// Contact surfaces only (no gap elements): two pairs, the first along z = 0 from r = 0 to 3, the
+/// second along z = 4 from r = 5 to 7, open at its last point.
+json two_contact_pairs() {
+  const auto point = [](double r, double z, double gap, double pressure) {
+    return json{{"r", r}, {"z", z}, {"gap", gap}, {"pressure", pressure}, {"shear", 0.0},
+                {"state", pressure > 0.0 ? "stick" : "open"}, {"slip", 0.0}};
   };
-  const auto [jx, jy] = middle(3, 4);
-  const std::array<int, 3> across = pixel(png, jx, jy);
-  EXPECT_GT(std::min({across[0], across[1], across[2]}), 200) << "background, not a line: " << across[0] << ","
-                                                              << across[1] << "," << across[2];
-  const auto [wx, wy] = middle(1, 2);
-  const std::array<int, 3> within = pixel(png, wx, wy);
-  EXPECT_GT(within[0], within[2] + 80) << "the first row's line, in red";
+  json first = json::array(), second = json::array();
+  for (int i = 0; i <= 3; ++i) first.push_back(point(i, 0.0, 0.0, 100.0 + 20.0 * i));
+  second.push_back(point(5.0, 4.0, 0.0, 30.0));
+  second.push_back(point(6.0, 4.0, 0.0, 20.0));
+  second.push_back(point(7.0, 4.0, 0.002, 0.0));
+  json nodes = json::array();
+  nodes.push_back({{"id", 1}, {"r", 0.0}, {"z", 0.0}, {"u_r", 0.0}, {"u_z", 0.0}});
+  return {{"status", "converged"}, {"iterations", 1}, {"title", "two pairs"}, {"analysis", "plane_strain"},
+          {"units", {{"length", "mm"}, {"stress", "MPa"}}},
+          {"history", json::array()}, {"nodes", nodes}, {"elements", json::array()}, {"gaps", json::array()},
+          {"contact", {{{"surfaces", {"shaft", "hub"}}, {"points", first}},
+                       {{"surfaces", {"cap", "rim"}}, {"points", second}}}}};
+}
+
+/// The data rows of a plot's CSV, split into cells.
+std::vector<std::vector<std::string>> csv_rows(const std::string& csv) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream lines(csv);
+  bool header = true;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    if (std::exchange(header, false)) continue;
+    std::vector<std::string> cells;
+    std::istringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    rows.push_back(std::move(cells));
+  }
+  return rows;
+}
+
+TEST(SurfaceContactPlot, OneCurvePerPairAlongSideA) {
+  PlotRequest request;
+  request.name = "contact_pressure";
+  request.width = 800;
+  request.height = 600;
+  request.row.along = RowAxis::r;
+  const std::string csv = render_table(two_contact_pairs(), request);
+  EXPECT_NE(csv.find("pair,point,x,r,z,pressure,gap,state,px,py_pressure,py_gap"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("pairs (surfaces A / B): 1 = shaft / hub; 2 = cap / rim;"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("x: r [mm]"), std::string::npos) << csv;
+  const auto rows = csv_rows(csv);
+  ASSERT_EQ(rows.size(), 7U) << csv;
+  EXPECT_EQ(rows[3][0] + "," + rows[3][1] + "," + rows[3][2] + "," + rows[3][5] + "," + rows[3][7], "1,4,3,160,stick");
+  EXPECT_EQ(rows[6][0] + "," + rows[6][1] + "," + rows[6][2] + "," + rows[6][5] + "," + rows[6][6] + "," + rows[6][7],
+            "2,3,7,0,0.002,open");
+
+  // Between the first pair's last point and the second pair's first nothing is drawn; within a
+  // pair, the line between neighbours is (in the first pair's colour, red).
+  const std::string png = render_plot(two_contact_pairs(), request);
+  const auto at = [&rows](std::size_t row) { return std::pair{std::stod(rows[row][8]), std::stod(rows[row][9])}; };
+  expect_break_between(png, at(3), at(4), at(0), at(1));
+
+  // Arc length along A restarts at each pair; the index numbers the points.
+  request.row.along = RowAxis::position;
+  const auto along = csv_rows(render_table(two_contact_pairs(), request));
+  EXPECT_EQ(along[4][2], "0");
+  EXPECT_EQ(along[6][2], "2");
+  request.row.along = RowAxis::index;
+  EXPECT_EQ(csv_rows(render_table(two_contact_pairs(), request))[6][2], "3");
+}
+
+TEST(SurfaceContactPlot, ClosureAndContactPlotsOfSurfacesOnlyAreDrawnNotRefused) {
+  PlotRequest request;
+  request.width = 400;
+  request.height = 300;
+  for (const char* name : {"contact_pressure", "closure"}) {
+    request.name = name;
+    for (const ImageFormat format : {ImageFormat::png, ImageFormat::svg}) {
+      request.format = format;
+      EXPECT_GT(render_plot(two_contact_pairs(), request).size(), 1000U) << name;
+    }
+    request.format = ImageFormat::png;
+    EXPECT_EQ(csv_rows(render_table(two_contact_pairs(), request)).size(), 7U) << name;
+  }
+  // Neither gaps nor contact points: still a clear refusal.
+  json none = two_contact_pairs();
+  none["contact"] = json::array();
+  request.name = "contact_pressure";
+  EXPECT_THROW(render_plot(none, request), std::invalid_argument);
+  // A gap row asked for by ids draws the gaps, even where there are contact pairs.
+  json both = two_gap_rows();
+  both["contact"] = two_contact_pairs()["contact"];
+  request.row.gap_ids = {1, 2, 3};
+  EXPECT_NE(render_table(both, request).find("gap,x,row_part,contact_pressure"), std::string::npos);
+  request.row.gap_ids.clear();
+  EXPECT_NE(render_table(both, request).find("pair,point,x"), std::string::npos);
 }
 
 

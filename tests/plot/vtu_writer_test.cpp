@@ -187,5 +187,32 @@ TEST(VtuWriter, RefusesResultsWithoutAMesh) {
   EXPECT_THROW(result_to_vtu(dangling), std::invalid_argument);
 }
 
+TEST(VtuWriter, ContactPointsArePointDataOnSideANodes) {
+  json result = triangle_and_gap();
+  // Without contact no contact arrays (a result without contact exports as before).
+  EXPECT_EQ(result_to_vtu(result, VtuFormat::ascii).find("Name=\"contact_"), std::string::npos);
+  result["units"] = {{"stress", "psi"}, {"length", "in"}};
+  const auto point = [](double r, double z, double gap, double pressure, const char* state) {
+    return json{{"r", r}, {"z", z}, {"gap", gap}, {"pressure", pressure}, {"shear", 0.0}, {"state", state}, {"slip", 0.0}};
+  };
+  result["contact"] = {{{"surfaces", {"a", "b"}}, {"points", {point(0.0, 0.0, 0.0, 12.5, "stick"), point(1.0, 0.0, 0.003, 0.0, "open")}}},
+                       {{"surfaces", {"c", "d"}}, {"points", {point(0.0, -0.01, 0.0, 7.0, "stick")}}}};
+  const std::string vtu = result_to_vtu(result, VtuFormat::ascii);
+  // Nodes 10, 20, 30, 40, 50: 10 and 20 are side A of pair 1, 50 of pair 2.
+  EXPECT_EQ(array_text(vtu, "contact_pressure [psi]"), "12.5 0 0 0 7");
+  EXPECT_EQ(array_text(vtu, "contact_gap [in]"), "0 0.003 0 0 0");
+  EXPECT_EQ(array_text(vtu, "contact_state"), "1 0 -1 -1 1");
+  EXPECT_EQ(array_text(vtu, "contact_pair"), "1 1 0 0 2");
+  EXPECT_EQ(array_text(vtu, "contact_slip [in]"), "0 0 0 0 0");
+  EXPECT_NE(vtu.find("NumberOfPoints=\"5\" NumberOfCells=\"2\""), std::string::npos) << "one piece, the same mesh";
+
+  json astray = result;
+  astray["contact"][1]["points"][0]["r"] = 0.5;
+  EXPECT_THROW(result_to_vtu(astray), std::invalid_argument);
+  json bad_state = result;
+  bad_state["contact"][0]["points"][0]["state"] = "glued";
+  EXPECT_THROW(result_to_vtu(bad_state), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace saasgaps::io

@@ -230,6 +230,8 @@ def exercise(client, repo, document_bytes, directory):
     _, _, model = client.request("GET", f"/v1/jobs/{job}/model", expect=200)
     check(model == problem1, "the stored model differs from the submitted one")
     client.request("GET", f"/v1/jobs/{job}/units", expect=200)
+    contact = client.json("GET", f"/v1/jobs/{job}/contact", expect=200)
+    check(contact == {"contact": []}, f"contact of a model without contact surfaces: {contact}")
     client.request("GET", f"/v1/jobs/{job}/result.vtu", expect=200)
     client.request("GET", f"/v1/jobs/{job}/plots/effective.png?width=300&height=200&mesh=1", expect=200)
     client.request("GET", f"/v1/jobs/{job}/plots/closure.svg?along=position", expect=200)
@@ -247,7 +249,8 @@ def exercise(client, repo, document_bytes, directory):
     for missing in ("424242", "99999999999999999999"):
         problem = client.json("GET", f"/v1/jobs/{missing}", expect=404)
         check(missing in problem["detail"], f"404 for job {missing} does not name it: {problem['detail']}")
-        for suffix in ("/iterations", "/events", "/result", "/model", "/units", "/result.vtu", "/plots/effective.png"):
+        for suffix in ("/iterations", "/events", "/result", "/model", "/units", "/contact", "/result.vtu",
+                       "/plots/effective.png"):
             client.request("GET", f"/v1/jobs/{missing}{suffix}", expect=404)
         client.request("POST", f"/v1/jobs/{missing}/cancel", body="", expect=404)
         client.request("POST", f"/v1/jobs/{missing}/resume", body="", expect=404)

@@ -24,4 +24,18 @@ double contact_pressure(double closure);
 /// contact_pressure(1) (gtest expectations; prints the worst relative error).
 void expect_contact(const Model& m, const Solution& s, double tolerance);
 
+/// Two rings of different materials fitted with a radial interference: a ring a..b (E_in, nu_in)
+/// inside a ring b..c (E_out, nu_out), their faces overlapping by `interference` at radius b, in
+/// plane strain along z (also an axisymmetric slice held in z). Under a pressure p the inner face
+/// moves in by p C_in and the outer face out by p C_out (u = (1 + nu) r / E [(1 - 2 nu) A + B / r^2]
+/// with sigma_r = A - B / r^2),
+///   C_in  = (1 + nu_in)  b [(1 - 2 nu_in)  b^2 + a^2] / (E_in  (b^2 - a^2)),
+///   C_out = (1 + nu_out) b [(1 - 2 nu_out) b^2 + c^2] / (E_out (c^2 - b^2)),
+/// and the fit closes the overlap: p = interference / (C_in + C_out).
+struct RingPair {
+  double a, b, c;
+  double E_in, nu_in, E_out, nu_out;
+};
+double plane_strain_interference_pressure(const RingPair& rings, double interference);
+
 }  // namespace saasgaps::testing::lame_rings

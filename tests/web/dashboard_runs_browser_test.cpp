@@ -1,9 +1,11 @@
 // How the dashboard shows runs that are not the plain classic case, in headless Chromium against a
 // real `saasgaps serve`: a convergence that carries a warning, an exact-mode run, a job followed live
-// (placeholders, then its convergence drawn and redrawn while it runs) and an assembly upload.
+// (placeholders, then its convergence drawn and redrawn while it runs), an assembly upload and a run
+// with contact surfaces (a table per pair and the contact-pressure plot).
 // Screenshots land in build/tests/artifacts/.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -281,6 +283,61 @@ TEST_F(DashboardRuns, AnAssemblyUploadImportsAndSubmitsOrListsItsErrorsAtTheirPo
                                   " document.querySelectorAll('#iterations tbody tr').length > 0;",
                          std::chrono::seconds(30)));
   save_artifact("dashboard-import-job.png", browser.screenshot());
+}
+
+TEST_F(DashboardRuns, AContactRunShowsATablePerPairAndTheContactPressurePlot) {
+  // The press fit on non-matching meshes: its exact face pair imports as contact surfaces.
+  const httplib::MultipartFormDataItems parts{
+      {"assembly", example_text("assemblies/ring-press-fit.assembly.json"), "ring-press-fit.assembly.json", "application/json"},
+      {"mesh", example_text("assemblies/ring-press-fit.geo"), "ring-press-fit.geo", "text/plain"}};
+  const httplib::Result submitted = client.Post("/v1/imports?submit=true", parts);
+  ASSERT_TRUE(submitted);
+  ASSERT_EQ(submitted->status, 202) << submitted->body;
+  const auto job = json::parse(submitted->body)["id"].get<std::int64_t>();
+  ASSERT_EQ(wait_for_state(client, job, {"converged", "not_converged", "failed"})["state"], "converged");
+  const json contact = get_json(client, "/v1/jobs/" + std::to_string(job) + "/contact")["contact"];
+  ASSERT_EQ(contact.size(), 1U) << contact.dump();
+  const json& points = contact[0]["points"];
+  std::size_t touching = 0;
+  double peak = 0.0;
+  for (const json& p : points) {
+    touching += p["state"] != "open" ? 1 : 0;
+    peak = std::max(peak, p["pressure"].get<double>());
+  }
+  ASSERT_GT(touching, 0U);
+
+  Browser browser(dir / "chromium-profile");
+  open_job(browser, server, job);
+  ASSERT_TRUE(wait_until(browser, "return !document.querySelector('#contact-section').hidden;", std::chrono::seconds(30)));
+  const json table = browser.run(
+      "const t = [...document.querySelectorAll('#contact-pairs table.contact-pair')];"
+      "const value = (table, key) => table.querySelector(`tr[data-key=\"${key}\"] td`).textContent;"
+      "return t.map(table => [table.caption.textContent, value(table, 'points'), value(table, 'in-contact'),"
+      " value(table, 'peak-pressure'), [...table.querySelectorAll('th')].map(h => h.textContent)]);");
+  ASSERT_EQ(table.size(), 1U) << table;
+  EXPECT_EQ(table[0][0], "Pair 1: hub_bore against shaft_outside");
+  EXPECT_EQ(table[0][1], std::to_string(points.size()));
+  EXPECT_EQ(table[0][2], std::to_string(touching));
+  const std::string shown_peak = table[0][3].get<std::string>();
+  EXPECT_NEAR(std::strtod(shown_peak.c_str(), nullptr), peak, 1e-4 * peak) << shown_peak;
+  EXPECT_NE(table[0][4].dump().find("peak pressure [psi]"), std::string::npos) << table[0][4];
+  EXPECT_NE(table[0][4].dump().find("largest gap [in]"), std::string::npos) << table[0][4];
+
+  // The contact-pressure plot is shown, drawn from the pairs, and no figure shows a broken image.
+  EXPECT_TRUE(wait_until(browser,
+                         "const i = document.querySelector('#contact-plot');"
+                         "return i.checkVisibility() && i.complete && i.naturalWidth > 100;",
+                         std::chrono::seconds(60)));
+  EXPECT_EQ(browser.run("return document.querySelector('#contact-caption').textContent;"),
+            "contact pressure and gap along each contact pair");
+  EXPECT_FALSE(browser.run("return [...document.querySelectorAll('img')].some(i => i.checkVisibility() && i.naturalWidth === 0);")
+                   .get<bool>())
+      << "a broken image is shown";
+  const httplib::Result csv = client.Get("/v1/jobs/" + std::to_string(job) + "/plots/contact_pressure.csv");
+  ASSERT_TRUE(csv);
+  ASSERT_EQ(csv->status, 200) << csv->body;
+  EXPECT_NE(csv->body.find("pair,point,x,r,z,pressure,gap,state"), std::string::npos) << csv->body;
+  save_artifact("dashboard-contact-job.png", browser.screenshot());
 }
 
 }  // namespace
