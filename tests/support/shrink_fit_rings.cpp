@@ -1,16 +1,18 @@
 #include "shrink_fit_rings.hpp"
 
+#include "lame_rings.hpp"
 #include "mesh_builder.hpp"
 #include "stacked_blocks.hpp"
 
 namespace saasgaps::testing::shrink_fit_rings {
 
 double lame_interference_pressure(AnalysisType type) {
-  const bool stress = type == AnalysisType::plane_stress;
-  const double Ci = stress ? b * ((1 - nu1) * b * b + (1 + nu1) * a1 * a1) / (E1 * (b * b - a1 * a1))
-                           : (1 + nu1) * b * ((1 - 2 * nu1) * b * b + a1 * a1) / (E1 * (b * b - a1 * a1));
-  const double Co = stress ? b * ((1 - nu2) * b * b + (1 + nu2) * b2 * b2) / (E2 * (b2 * b2 - b * b))
-                           : (1 + nu2) * b * ((1 - 2 * nu2) * b * b + b2 * b2) / (E2 * (b2 * b2 - b * b));
+  // Plane strain and the axisymmetric slice held in z share lame_rings' closed form.
+  if (type != AnalysisType::plane_stress) {
+    return lame_rings::plane_strain_interference_pressure({a1, b, b2, E1, nu1, E2, nu2}, delta);
+  }
+  const double Ci = b * ((1 - nu1) * b * b + (1 + nu1) * a1 * a1) / (E1 * (b * b - a1 * a1));
+  const double Co = b * ((1 - nu2) * b * b + (1 + nu2) * b2 * b2) / (E2 * (b2 * b2 - b * b));
   return delta / (Ci + Co);
 }
 
