@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -47,7 +48,14 @@ class Worker : public ::testing::Test {
   }
   void TearDown() override {
     ::setenv("PATH", path_.c_str(), 1);
-    fs::remove_all(dir_);
+    // A fake sbatch the server started just before it stopped can still be writing its ticket file
+    // here (seen once: "Directory not empty"): try again for a moment rather than fail on cleanup.
+    std::error_code error;
+    for (int attempt = 0; attempt < 50; ++attempt) {
+      fs::remove_all(dir_, error);
+      if (!error && !fs::exists(dir_)) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
   }
 
   void write_program(const std::string& name, const std::string& body) const {
