@@ -26,7 +26,9 @@ bool IterationRecord::same_numbers(const IterationRecord& o) const {
          max_closure == o.max_closure && yielded_elements == o.yielded_elements &&
          nonconverged_plastic == o.nonconverged_plastic && bimodulus_changes == o.bimodulus_changes &&
          extrapolated == o.extrapolated && contact_pairs == o.contact_pairs &&
-         complementarity == o.complementarity && active_set_iterations == o.active_set_iterations && same_rows(watch_elements, o.watch_elements) &&
+         complementarity == o.complementarity && active_set_iterations == o.active_set_iterations &&
+         stick_points == o.stick_points && slip_points == o.slip_points &&
+         friction_residual == o.friction_residual && same_rows(watch_elements, o.watch_elements) &&
          same_rows(watch_gaps, o.watch_gaps) && gap_closures == o.gap_closures;
 }
 

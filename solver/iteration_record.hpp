@@ -41,6 +41,13 @@ struct IterationRecord {
   int contact_pairs = 0;
   double complementarity = 0.0;
   int active_set_iterations = 0;
+  /// Contact pairs with friction > 0 only (0 otherwise): points that stick and that slip at the
+  /// end of the iteration, and the largest residual of Coulomb's law over the touching points,
+  /// relative to mu x pressure (dimensionless, 0 when the law holds exactly; the method defines it
+  /// in docs/contact.md).
+  int stick_points = 0;
+  int slip_points = 0;
+  double friction_residual = 0.0;
   std::vector<WatchedElement> watch_elements;
   std::vector<WatchedGap> watch_gaps;
   std::vector<double> gap_closures;  ///< closure (%) of every gap, in model order: the closure plot
