@@ -28,8 +28,27 @@ FrictionalContact::FrictionalContact(const Model& model, const DofMap& dofs, con
   assert(mu_.size() == pairs_.pairs.size());
   assert(std::all_of(mu_.begin(), mu_.end(), [](double mu) { return mu >= 0.0; }) && "the reader refuses mu < 0");
   for (const ContactPair& p : pairs_.pairs) {
-    rows_.add(p.node, p.weight, p.normal, p.g0);
-    rows_.add(p.node, p.weight, Vec2(-p.normal.y(), p.normal.x()), 0.0);
+    // The gap row by its gradient (a mortar row on a curved side bends with its normal field); the
+    // tangential row by its weights along the point's tangent.
+    std::vector<Vec2> coefficients(p.node.size());
+    for (std::size_t k = 0; k < p.node.size(); ++k) coefficients[k] = p.coefficient(k);
+    rows_.add(p.node, coefficients, p.g0);
+    rows_.add(p.node, p.weight, tangent(p), 0.0);
+  }
+}
+
+void FrictionalContact::add_nodal_forces(const FrictionState& state, std::span<double> forces) const {
+  const std::vector<ContactPair>& pairs = pairs_.pairs;
+  if (state.normal_force.size() != pairs.size() || state.tangential_force.size() != pairs.size()) return;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const ContactPair& pair = pairs[i];
+    const Vec2 t = tangent(pair);
+    for (std::size_t k = 0; k < pair.node.size(); ++k) {
+      const auto node = static_cast<std::size_t>(pair.node[k]);
+      const Vec2 f = state.normal_force[i] * pair.coefficient(k) + state.tangential_force[i] * pair.weight[k] * t;
+      forces[2 * node] += f[0];
+      forces[2 * node + 1] += f[1];
+    }
   }
 }
 

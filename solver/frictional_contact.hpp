@@ -1,8 +1,9 @@
 #pragma once
 /// Unilateral contact with Coulomb friction, solved exactly, one load increment at a time. Point i
 /// (a ContactPair: any number of nodes with weights, unit normal n_i, tangent t_i = (-n_z, n_r)) has
-/// two rows of the same weights (constraint_rows.hpp):
-///   g_i(u) = g0_i + n_i . sum_k w_ik u_k     (gap, length),
+/// two rows (constraint_rows.hpp):
+///   g_i(u) = g0_i + n_i . sum_k w_ik u_k     (gap, length; sum_k c_ik . u_k by the pair's gradient
+///                                             when it has one: a mortar row of a curved side),
 ///   h_i(u) =        t_i . sum_k w_ik u_k     (tangential position of side b relative to side a),
 /// and the increment from the previous one's converged state (h_i^prev, part of FrictionState) solves
 ///   K u = f + sum_i (lambda_n,i c_n,i + lambda_t,i c_t,i),
@@ -92,6 +93,11 @@ class FrictionalContact {
                     std::vector<double> friction);
 
   [[nodiscard]] const ContactPairs& pairs() const { return pairs_; }
+  /// t_i = (-n_z, n_r): on a contact surface's point, side A's chain direction.
+  static Vec2 tangent(const ContactPair& pair) { return Vec2(-pair.normal.y(), pair.normal.x()); }
+  /// Adds the contact forces lambda_n,i c_n,ik + lambda_t,i w_ik t_i of `state` to the nodal forces
+  /// (f_r, f_z per node): the C^T lambda of the increment's equilibrium. Nothing before the first solve.
+  void add_nodal_forces(const FrictionState& state, std::span<double> forces) const;
   [[nodiscard]] const ConstraintRows& rows() const { return rows_; }
   /// The rows of point i: normal 2 i, tangential 2 i + 1.
   static constexpr std::size_t normal_row(std::size_t i) { return 2 * i; }

@@ -1,8 +1,10 @@
 #include "mortar_method.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
+#include "errors.hpp"
 #include "plural.hpp"
 
 namespace saasgaps {
@@ -59,7 +61,8 @@ Cliques contact_couplings(const SurfaceContact& surfaces, const DofMap& dofs) {
 
 std::vector<ContactPairResult> contact_pair_results(const Model& model, const SurfaceContact& surfaces,
                                                     std::size_t offset, const ContactState& contact,
-                                                    std::span<const double> displacement) {
+                                                    std::span<const double> displacement,
+                                                    const FrictionState* friction) {
   std::vector<ContactPairResult> out;
   const bool solved = contact.force.size() == offset + surfaces.pairs.pairs.size();
   for (std::size_t k = 0; k < surfaces.pair_count(); ++k) {
@@ -79,6 +82,18 @@ std::vector<ContactPairResult> contact_pair_results(const Model& model, const Su
       const bool touching = solved && contact.active[offset + i];
       point.pressure = touching ? std::max(0.0, contact.force[offset + i]) / row.area : 0.0;
       point.state = touching ? ContactPointState::stick : ContactPointState::open;
+      if (friction != nullptr && friction->size() == offset + surfaces.pairs.pairs.size()) {
+        const std::size_t f = offset + i;
+        // A frictionless pair's touching points stay "stick" (the result format's word for touching).
+        if (pair.friction > 0.0) point.state = static_cast<ContactPointState>(friction->state[f]);
+        // lambda_t is side A's force on side B along t: B's traction on A is its opposite.
+        if (touching) point.shear = -friction->tangential_force[f] / row.area;
+        // The finished increments' slip, and the current one's when it slips.
+        point.slip = friction->slip[f];
+        if (friction->state[f] == static_cast<std::uint8_t>(SlipState::slip)) {
+          point.slip += std::abs(friction->position[f] - friction->previous[f]);
+        }
+      }
       result.points.push_back(point);
     }
     out.push_back(std::move(result));
@@ -89,20 +104,69 @@ std::vector<ContactPairResult> contact_pair_results(const Model& model, const Su
 MortarMethod::MortarMethod(const ContactSetup& setup, const SurfaceContact& surfaces,
                            std::unique_ptr<ContactMethod> gaps, bool rows_solved_by_gaps)
     : model_(setup.model), surfaces_(surfaces), gaps_(std::move(gaps)) {
-  if (!rows_solved_by_gaps) exact_.emplace(setup.model, setup.dofs, setup.pattern, surfaces.pairs);
+  // mu per row: its pair's friction.
+  std::vector<double> mu(surfaces.pairs.pairs.size(), 0.0);
+  bool frictional = false;
+  for (std::size_t k = 0; k < surfaces.pair_count(); ++k) {
+    const double friction = setup.model.contact->pairs[k].friction;
+    frictional = frictional || friction > 0.0;
+    std::fill(mu.begin() + static_cast<std::ptrdiff_t>(surfaces.first[k]),
+              mu.begin() + static_cast<std::ptrdiff_t>(surfaces.first[k + 1]), friction);
+  }
+  if (frictional && rows_solved_by_gaps) {
+    // The reader refuses this combination (/contact/pairs/<k>/friction); a direct caller gets it here.
+    throw SolverError("friction on contact surfaces needs gaps.method \"classic\" (or no gap elements): the exact "
+                      "gap mode solves the surfaces' rows frictionless");
+  }
+  if (rows_solved_by_gaps) return;
+  if (frictional) {
+    friction_.emplace(setup.model, setup.dofs, setup.pattern, surfaces.pairs, std::move(mu));
+  } else {
+    exact_.emplace(setup.model, setup.dofs, setup.pattern, surfaces.pairs);
+  }
 }
 
 void MortarMethod::begin_iteration(RestartState& state, StiffnessSystem& system) {
   if (gaps_) gaps_->begin_iteration(state, system);
+  // The first iteration of an increment after the first: the last one's converged state is the
+  // slip history this one starts from. (A resumed run passes here exactly where the uninterrupted
+  // one did: a state is saved after a solve, never between finish and the next solve.)
+  if (friction_ && state.position && state.position->iterations == 0) finish_increment(state.friction);
 }
 
 void MortarMethod::solve(SparseCholesky& cholesky, std::span<const double> values, std::span<const double> rhs,
                          RestartState& state, std::span<double> u) {
+  if (friction_) {
+    try {
+      friction_report_ = friction_->solve(cholesky, values, rhs, state.friction, u);
+    } catch (const SolverError& e) {
+      // Which increment failed, so that it can be resumed with smaller increments.
+      if (!state.position) throw;
+      const StepPosition& p = *state.position;
+      const Step& step = model_.steps[static_cast<std::size_t>(p.step)];
+      std::ostringstream text;
+      text << "step " << p.step + 1 << " \"" << step.name << "\", increment " << p.increment << " of "
+           << step.increments << ": " << e.what();
+      throw SolverError(text.str());
+    }
+    return;
+  }
   if (!exact_) {
     gaps_->solve(cholesky, values, rhs, state, u);
     return;
   }
   report_ = exact_->solve(cholesky, values, rhs, state.contact, u);
+}
+
+ContactState MortarMethod::rows_state(const RestartState& state) const {
+  if (!friction_) return state.contact;
+  ContactState rows;
+  const FrictionState& f = state.friction;
+  if (f.size() != surfaces_.pairs.pairs.size() || f.normal_force.size() != f.size()) return rows;  // nothing solved
+  rows.force = f.normal_force;
+  rows.active.resize(f.size());
+  for (std::size_t i = 0; i < f.size(); ++i) rows.active[i] = f.state[i] != static_cast<std::uint8_t>(SlipState::open);
+  return rows;
 }
 
 void MortarMethod::evaluate(RestartState& state, ContactOutcome& outcome) const {
@@ -119,6 +183,16 @@ void MortarMethod::check_solved(const RestartState& state, const ContactOutcome&
 
 void MortarMethod::add_columns(const RestartState& state, IterationRecord& row) const {
   if (gaps_) gaps_->add_columns(state, row);
+  if (friction_) {
+    const FrictionReport& r = friction_report_;
+    row.contact_pairs = r.in_contact;
+    row.complementarity = r.complementarity;
+    row.active_set_iterations = r.active_set_iterations;
+    row.stick_points = r.sticking;
+    row.slip_points = r.slipping;
+    row.friction_residual = r.friction_residual;
+    return;
+  }
   if (!exact_) return;
   row.contact_pairs = report_.pairs_in_contact;
   row.complementarity = report_.complementarity;
@@ -128,6 +202,7 @@ void MortarMethod::add_columns(const RestartState& state, IterationRecord& row) 
 void MortarMethod::add_nodal_forces(const RestartState& state, std::span<double> forces) const {
   if (gaps_) gaps_->add_nodal_forces(state, forces);
   if (exact_) exact_->add_nodal_forces(state.contact, forces);
+  if (friction_) friction_->add_nodal_forces(state.friction, forces);
 }
 
 std::string MortarMethod::converged_note(const RestartState& state, const ContactOutcome& outcome) const {
@@ -135,12 +210,20 @@ std::string MortarMethod::converged_note(const RestartState& state, const Contac
   if (gaps_) text << gaps_->converged_note(state, outcome);
   // The rows come last in state.contact (after the exact gaps' node pairs, when those solve them).
   const std::size_t rows = surfaces_.pairs.pairs.size();
-  const std::size_t offset = state.contact.active.size() >= rows ? state.contact.active.size() - rows : 0;
+  const ContactState contact = rows_state(state);
+  const std::size_t offset = contact.active.size() >= rows ? contact.active.size() - rows : 0;
   std::size_t touching = 0;
-  for (std::size_t i = offset; i < state.contact.active.size(); ++i) touching += state.contact.active[i];
+  for (std::size_t i = offset; i < contact.active.size(); ++i) touching += contact.active[i];
   text << " (contact surfaces: " << touching << " of " << plural(static_cast<long long>(rows), "point")
        << " in contact";
-  if (exact_ && !state.history.empty()) text << ", complementarity residual " << state.history.back().complementarity;
+  if (friction_ && !state.history.empty()) {
+    const IterationRecord& last = state.history.back();
+    text << ", " << last.stick_points << " sticking, " << last.slip_points << " slipping";
+  }
+  if ((exact_ || friction_) && !state.history.empty()) {
+    text << ", complementarity residual " << state.history.back().complementarity;
+  }
+  if (friction_ && !state.history.empty()) text << ", friction residual " << state.history.back().friction_residual;
   text << ")";
   // A pair without rows can never touch: most likely the wrong surfaces, or surfaces facing away.
   for (std::size_t k = 0; k < surfaces_.pair_count(); ++k) {
@@ -157,8 +240,10 @@ std::string MortarMethod::converged_note(const RestartState& state, const Contac
 std::vector<ContactPairResult> MortarMethod::surface_results(const RestartState& state) const {
   // The rows come after the exact gaps' node pairs when those solve them.
   const std::size_t rows = surfaces_.pairs.pairs.size();
-  const std::size_t offset = state.contact.force.size() >= rows ? state.contact.force.size() - rows : 0;
-  return contact_pair_results(model_, surfaces_, offset, state.contact, state.displacement);
+  const ContactState contact = rows_state(state);
+  const std::size_t offset = contact.force.size() >= rows ? contact.force.size() - rows : 0;
+  return contact_pair_results(model_, surfaces_, offset, contact, state.displacement,
+                              friction_ ? &state.friction : nullptr);
 }
 
 }  // namespace saasgaps

@@ -17,6 +17,14 @@
 /// equations for the Assembler's extra couplings, so the pattern (and the factorization's) holds
 /// them.
 ///
+/// Friction (docs/contact.md, section 9): when some pair has friction > 0, every row of every pair
+/// gets a tangential row beside it (the same weights M_jk / D_j along t_j = (-n_z, n_r), side A's
+/// chain direction) and FrictionalContact solves them all (mu = 0 on the frictionless pairs), its
+/// FrictionState in RestartState::friction; the first iteration of each increment ends the previous
+/// increment there (finish_increment: the slip history). Without friction ExactContact solves them,
+/// exactly as before. Friction needs this method to solve the rows itself: with exact gaps the
+/// NodePairMethod's frictionless ExactContact would, so that combination is refused.
+///
 /// Composition with gap elements (model.gaps and model.contact together): MortarMethod wraps the
 /// gap elements' method. The exact gap mode's NodePairMethod is built with these rows appended to its
 /// node pairs, so one ExactContact solves both (one active set, one factorization); with the classic
@@ -30,6 +38,7 @@
 #include "contact_pairs.hpp"
 #include "contact_surface.hpp"
 #include "exact_contact.hpp"
+#include "frictional_contact.hpp"
 #include "mortar_coupling.hpp"
 
 namespace saasgaps {
@@ -51,12 +60,14 @@ SurfaceContact surface_contact(const Model& model);
 Cliques contact_couplings(const SurfaceContact& surfaces, const DofMap& dofs);
 
 /// Per pair of model.contact, its rows' current gap (length), pressure (>= 0, force per unit area of
-/// side A) and state, at side A's nodes in chain order. `pairs` holds the rows at `offset` (the
+/// side A) and state, at side A's nodes in chain order; with `friction` (the rows' FrictionState, or
+/// null) also the shear, stick / slip and accumulated slip. `pairs` holds the rows at `offset` (the
 /// node pairs of exact gaps come first); forces and active set from `contact` (open and zero before
 /// the first solve).
 std::vector<ContactPairResult> contact_pair_results(const Model& model, const SurfaceContact& surfaces,
                                                     std::size_t offset, const ContactState& contact,
-                                                    std::span<const double> displacement);
+                                                    std::span<const double> displacement,
+                                                    const FrictionState* friction = nullptr);
 
 class MortarMethod final : public ContactMethod {
  public:
@@ -83,8 +94,13 @@ class MortarMethod final : public ContactMethod {
   const Model& model_;
   const SurfaceContact& surfaces_;
   std::unique_ptr<ContactMethod> gaps_;
-  std::optional<ExactContact> exact_;  // when the gaps' method does not solve the rows
+  /// The rows' contact forces and active set of `state` as ExactContact's (friction: from its state).
+  [[nodiscard]] ContactState rows_state(const RestartState& state) const;
+
+  std::optional<ExactContact> exact_;  // when the gaps' method does not solve the rows, and no friction
   ContactReport report_;               // of the last solve of exact_
+  std::optional<FrictionalContact> friction_;  // when some pair has friction > 0
+  FrictionReport friction_report_;             // of the last solve of friction_
 };
 
 }  // namespace saasgaps

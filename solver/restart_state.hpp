@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "exact_contact.hpp"
+#include "frictional_contact.hpp"
 #include "gap_closure.hpp"
 #include "iteration_record.hpp"
 #include "load_schedule.hpp"
@@ -31,6 +32,9 @@ struct RestartState {
   GapHistory gaps;                 ///< gap moduli and strains of iterations K and K-1
   std::vector<double> displacement;  ///< (u_r, u_z) per node of iteration K, prescribed ones included
   ContactState contact;            ///< exact mode: pair forces and active set of iteration K (empty in classic)
+  /// Contact surfaces with friction > 0 (empty otherwise): every mortar point's friction state of
+  /// iteration K, with the slip history of the finished increments (they replace `contact` then).
+  FrictionState friction;
   std::vector<IterationRecord> history;  ///< rows 1..K
   /// Stepped models only (version 2): the increment of iteration K (K counts over the whole run).
   std::optional<StepPosition> position;
