@@ -1,5 +1,7 @@
 #include "io/contact_check.hpp"
 
+#include <sstream>
+
 #include "contact_pairs.hpp"
 #include "contact_surface.hpp"
 #include "io/json_pointer.hpp"
@@ -28,6 +30,18 @@ std::vector<InputIssue> contact_surface_input_issues(const Model& model) {
       for (const SurfaceEdgeIssue& issue : e.issues()) {
         issues.push_back({pointer_append(edges, issue.edge), "surface \"" + model.contact->surfaces[i].name + "\": " + issue.detail});
       }
+    }
+  }
+  // Friction needs the surfaces' own solver: exact gaps solve the rows with their frictionless node
+  // pairs (solver/mortar_method.hpp).
+  if (model.gaps && model.gaps->method == GapMethod::exact) {
+    for (std::size_t k = 0; k < model.contact->pairs.size(); ++k) {
+      const double mu = model.contact->pairs[k].friction;
+      if (mu <= 0.0) continue;
+      std::ostringstream text;
+      text << "friction " << mu << " on a contact pair needs gaps.method \"classic\" (or no gap elements): with "
+           << "\"exact\" gaps the surfaces are solved frictionless together with the gaps' node pairs";
+      issues.push_back({pointer_append(pointer_append("/contact/pairs", k), "friction"), text.str()});
     }
   }
   return issues;

@@ -15,7 +15,8 @@ namespace saasgaps::io {
 std::vector<InputIssue> contact_pairing_input_issues(const Model& model);
 
 /// The contact surfaces' chain rule (solver/contact_surface.hpp): one issue per refused edge, at
-/// /contact/surfaces/<i>/edges/<k>, saying why (not a side of exactly one solid element, not a chain).
+/// /contact/surfaces/<i>/edges/<k>, saying why (not a side of exactly one solid element, not a chain);
+/// and one at /contact/pairs/<k>/friction per pair with friction > 0 when gaps.method is "exact".
 std::vector<InputIssue> contact_surface_input_issues(const Model& model);
 
 }  // namespace saasgaps::io

@@ -9,8 +9,7 @@ namespace saasgaps::io {
 
 /// Optional: {surfaces: [{name, edges: [[a, b], ...]}], pairs: [{surfaces: [A, B], friction?,
 /// conductance?}]}; names unique and non-empty, each edge two distinct node ids that resolve; a pair
-/// names two different known surfaces; friction >= 0 and, until Coulomb friction is solved (issue
-/// 20), 0.
+/// names two different known surfaces; friction (Coulomb mu) a number >= 0.
 void SectionReader::read_contact(const Obj& root) {
   const json* v = root.find("contact");
   if (v == nullptr) return;
@@ -127,12 +126,6 @@ std::optional<SurfacePair> SectionReader::read_surface_pair(const json& item, co
   }
   if (o.find("friction") != nullptr) {
     if (const auto mu = number_field(o, "friction", non_negative)) {
-      if (*mu > 0.0) {
-        report(o.at("friction"), "friction " + quote(*o.find("friction")) +
-                                     ": Coulomb friction on contact surfaces is not implemented yet (issue 20); "
-                                     "only frictionless contact (friction 0) is solved");
-        valid = false;
-      }
       pair.friction = *mu;
     } else {
       valid = false;

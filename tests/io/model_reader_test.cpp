@@ -1303,10 +1303,14 @@ TEST(ModelReaderRules, ContactSurfaceNamesAreUniqueAndPairsNameTwoOfThem) {
   EXPECT_TRUE(rejects(with(with_contact(), "/contact/extra", 1), "/contact/extra", {"extra"}));
 }
 
-TEST(ModelReaderRules, FrictionIsNotImplementedYetAndConductanceIsChecked) {
-  EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/friction", 0.15), "/contact/pairs/0/friction",
-                      {"0.15", "not implemented yet", "issue 20"}));
+TEST(ModelReaderRules, FrictionIsANonNegativeNumberWithoutExactGapsAndConductanceIsChecked) {
+  EXPECT_EQ(read_model(with(with_contact(), "/contact/pairs/0/friction", 0.15)).contact->pairs[0].friction, 0.15);
   EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/friction", -1), "/contact/pairs/0/friction", {"-1"}));
+  EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/friction", "0.2"), "/contact/pairs/0/friction",
+                      {"\"0.2\""}));
+  // Exact gaps solve the surfaces frictionless with their node pairs: friction is refused there.
+  json exact = with(with(with_contact(), "/gaps/method", "exact"), "/contact/pairs/1/friction", 0.3);
+  EXPECT_TRUE(rejects(exact, "/contact/pairs/1/friction", {"0.3", "\"classic\""}));
   EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/conductance/closed/1/p", 0),
                       "/contact/pairs/0/conductance/closed/1/p", {"increasing"}));
   EXPECT_TRUE(rejects(with(with_contact(), "/contact/pairs/0/conductance/closed/0/h", -1),
