@@ -93,6 +93,12 @@ json history_row_json(const IterationRecord& r) {
     row["complementarity"] = r.complementarity;
     row["active_set_iterations"] = r.active_set_iterations;
   }
+  // Friction on contact surfaces: its counts and residual (rows without friction are unchanged).
+  if (r.stick_points > 0 || r.slip_points > 0 || r.friction_residual != 0.0) {
+    row["stick_points"] = r.stick_points;
+    row["slip_points"] = r.slip_points;
+    row["friction_residual"] = r.friction_residual;
+  }
   if (r.step > 0) {
     row["step"] = r.step;
     row["increment"] = r.increment;
@@ -118,6 +124,9 @@ IterationRecord history_row_from_json(const json& j) {
   r.contact_pairs = j.value("contact_pairs", 0);
   r.complementarity = j.value("complementarity", 0.0);
   r.active_set_iterations = j.value("active_set_iterations", 0);
+  r.stick_points = j.value("stick_points", 0);
+  r.slip_points = j.value("slip_points", 0);
+  r.friction_residual = j.value("friction_residual", 0.0);
   r.step = j.value("step", 0);
   r.increment = j.value("increment", 0);
   for (const json& e : j.at("watch").at("elements")) {

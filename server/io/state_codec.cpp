@@ -74,6 +74,30 @@ void read_plastic_branches(const json& j, std::size_t elements, MaterialState& m
   }
 }
 
+/// The inverse of the "friction" member of state_to_json: seven arrays of one length, states 0-2,
+/// directions -1, 0, +1.
+void read_friction(const json& j, FrictionState& f) {
+  f.state = j.at("state").get<std::vector<std::uint8_t>>();
+  f.direction = j.at("direction").get<std::vector<std::int8_t>>();
+  f.normal_force = j.at("normal_force").get<std::vector<double>>();
+  f.tangential_force = j.at("tangential_force").get<std::vector<double>>();
+  f.position = j.at("position").get<std::vector<double>>();
+  f.previous = j.at("previous").get<std::vector<double>>();
+  f.slip = j.at("slip").get<std::vector<double>>();
+  const std::size_t n = f.state.size();
+  for (const std::size_t size : {f.direction.size(), f.normal_force.size(), f.tangential_force.size(),
+                                 f.position.size(), f.previous.size(), f.slip.size()}) {
+    if (size != n) throw SolverError("malformed restart state: the friction arrays differ in length");
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (f.state[i] > static_cast<std::uint8_t>(SlipState::slip) || f.direction[i] < -1 || f.direction[i] > 1) {
+      throw SolverError("malformed restart state: friction point " + std::to_string(i) + " has state " +
+                        std::to_string(f.state[i]) + " and direction " + std::to_string(f.direction[i]) +
+                        " (states 0-2, directions -1, 0, 1)");
+    }
+  }
+}
+
 }  // namespace
 
 void Fingerprint::add(std::string_view text) {
@@ -133,6 +157,18 @@ json state_to_json(const RestartState& s, const std::string& digest) {
   if (!s.contact.empty()) {
     document["contact"] = {{"force", s.contact.force}, {"active", s.contact.active}};
   }
+  // Contact surfaces with friction only: every point's friction state and slip history. Other
+  // states are written exactly as before, and states without it still read (no version change).
+  if (!s.friction.empty()) {
+    const FrictionState& f = s.friction;
+    document["friction"] = {{"state", f.state},
+                            {"direction", f.direction},
+                            {"normal_force", f.normal_force},
+                            {"tangential_force", f.tangential_force},
+                            {"position", f.position},
+                            {"previous", f.previous},
+                            {"slip", f.slip}};
+  }
   // Version 3 (stepped plastic models) only: the peaks and unloading branches.
   if (s.version == RestartState::plastic_steps_version) document["plastic"] = plastic_branches(s.materials);
   // Versions 2 and 3 (stepped models) only: the increment of iteration K.
@@ -189,6 +225,7 @@ RestartState state_from_json(const json& j, const std::string& expected_digest) 
         throw SolverError("malformed restart state: contact force and active set differ in length");
       }
     }
+    if (const auto friction = j.find("friction"); friction != j.end()) read_friction(*friction, s.friction);
     if (s.version == RestartState::plastic_steps_version) {
       read_plastic_branches(j.at("plastic"), s.element_count, s.materials);
     } else if (j.contains("plastic")) {
