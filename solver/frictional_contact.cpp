@@ -157,8 +157,16 @@ FrictionReport FrictionalContact::solve(SparseCholesky& cholesky, std::span<cons
       std::int8_t to_direction = direction[i];
       if (points[i] == open) {
         violation = -g[i];  // penetration
-        to = mu_[i] > 0.0 ? stick : slip;
-        to_direction = to == slip ? 1 : 0;
+        // Coulomb's law on the trial forces k_n (-g) and -k_t v of the penetration and the slip it
+        // made while open: slip along v where those lie beyond the cone (a point that would pull
+        // when sticking and penetrate when open, the end of a surface sliding on, settles there).
+        if (mu_[i] > 0.0 && k_t * std::abs(v[i]) > mu_[i] * k_n * -g[i]) {
+          to = slip;
+          to_direction = v[i] > 0.0 ? 1 : -1;
+        } else {
+          to = mu_[i] > 0.0 ? stick : slip;
+          to_direction = to == slip ? 1 : 0;
+        }
       } else if (-lambda_n / k_n > tolerance) {
         violation = -lambda_n / k_n;  // pulling
         to = open;

@@ -1,0 +1,364 @@
+// Coulomb friction on contact surfaces (contact.pairs[].friction) through the full solve(): the
+// mortar rows with their tangential rows solved by FrictionalContact (solver/mortar_method.hpp,
+// docs/contact.md section 9), increment by increment through load steps.
+//
+// - A block pressed onto a base by N, then pushed sideways by a prescribed displacement in 20
+//   increments: the tangential reaction rises, then holds at mu N within 0.5 % with every point
+//   slipping; pushed back, it sticks first and then slips back to mu N the other way (hysteresis).
+// - mu -> 0 gives the frictionless answer to 1e-10; a huge mu gives the two bodies tied (one merged
+//   mesh) to 1e-9.
+// - The push-out of a plane interference fit: the force at which the upper block slides is mu times
+//   the resultant normal contact force at that moment, within 0.5 %.
+// - A tangential force beyond mu N on a block held only by friction stops the run with a message
+//   naming the step and the increment.
+// - Runs stopped after every iteration resume to the last digit (the slip history in the state).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis.hpp"
+#include "element_kernel.hpp"
+#include "errors.hpp"
+#include "io/state_codec.hpp"
+#include "io/stored_state.hpp"
+#include "support/identical_solutions.hpp"
+#include "support/mesh_builder.hpp"
+#include "support/stacked_blocks.hpp"
+#include "support/state_recorder.hpp"
+
+namespace saasgaps {
+namespace {
+
+constexpr double width = 2.0, height = 1.0;
+constexpr int layers = 2;
+constexpr double pressure = 100.0;  // on the upper block's top
+constexpr double mu = 0.3;
+
+Vec2 position(const Model& m, int node) {
+  return {m.nodes[static_cast<std::size_t>(node)].r, m.nodes[static_cast<std::size_t>(node)].z};
+}
+
+/// The consistent nodal loads of a uniform traction on the given edges.
+std::vector<NodalForce> traction_loads(const Model& m, const std::vector<std::array<int, 2>>& edges,
+                                       const Vec2& traction) {
+  std::vector<NodalForce> forces;
+  for (const auto& e : edges) {
+    const auto loads = edge_traction_loads(position(m, e[0]), position(m, e[1]), traction, m.analysis, m.thickness);
+    for (std::size_t k = 0; k < 2; ++k) forces.push_back({e[k], loads[k].x(), loads[k].y()});
+  }
+  return forces;
+}
+
+Step step(std::string name, int increments) {
+  Step s;
+  s.name = std::move(name);
+  s.increments = increments;
+  return s;
+}
+
+/// Two blocks of one material in plane strain (normal and tangential responses uncouple) on
+/// faces of 4 segments below and `upper_segments` above (non-matching unless 4), the base's bottom fixed, pressed by `pressure`
+/// on the upper block's top; pair upper bottom (A) on lower top (B) with friction `friction`.
+struct Blocks {
+  testing::StackedBlocks b;
+  std::vector<int> top;  // the upper block's top nodes
+  [[nodiscard]] double normal_force() const { return pressure * width * b.model.thickness; }
+};
+
+Blocks blocks(double friction, double gap = 0.0, int upper_segments = 5) {
+  Blocks k{testing::stacked_blocks(AnalysisType::plane_strain, 0.0, width, height, gap, testing::BlockFace{4, 1.0},
+                                   testing::BlockFace{upper_segments, 1.0}, layers),
+           {}};
+  Model& m = k.b.model;
+  m.materials[1] = testing::isotropic_material(2, 1.0e6, 0.3);
+  for (int i = 0; i <= k.b.lower.ni; ++i) testing::constrain(m, k.b.lower.at(i, 0), 0.0, 0.0);
+  for (int i = 0; i <= k.b.upper.ni; ++i) k.top.push_back(k.b.upper.at(i, layers));
+  ContactSettings& contact = m.contact.emplace();
+  contact.surfaces = {{"upper bottom", k.b.upper_bottom}, {"lower top", k.b.lower_top}};
+  SurfacePair pair;
+  pair.surfaces = {0, 1};
+  pair.friction = friction;
+  contact.pairs = {pair};
+  return k;
+}
+
+/// Step "press": the top held at u_r = 0 and pressed by N; step "push": the top moved to u_r = d in
+/// `increments`; then, when `back`, step "back": returned to u_r = 0 in as many.
+void press_and_push(Blocks& k, double d, int increments, bool back) {
+  Model& m = k.b.model;
+  m.loads.nodal_forces = traction_loads(m, testing::row_edges(k.b.upper, layers), Vec2(0.0, -pressure));
+  Step press = step("press", 1), push = step("push", increments), home = step("back", increments);
+  for (int node : k.top) {
+    press.constraints.push_back({node, 0.0, std::nullopt});
+    push.constraints.push_back({node, d, std::nullopt});
+    home.constraints.push_back({node, 0.0, std::nullopt});
+  }
+  m.steps = {press, push};
+  if (back) m.steps.push_back(home);
+}
+
+/// Sum of f_r over the given nodes' reactions.
+double reaction_r(const Solution& s, const Model& m, const std::vector<int>& nodes) {
+  double sum = 0.0;
+  for (int node : nodes) {
+    const int id = m.nodes[static_cast<std::size_t>(node)].id;
+    for (const NodeReaction& r : s.reactions) {
+      if (r.id == id) sum += r.f_r;
+    }
+  }
+  return sum;
+}
+
+/// The tangential force side A (the upper block) puts on side B through its points (sum of lambda_t
+/// along t = +r: the upper block's bottom runs left to right with its material on the left) in a
+/// recorded state: by the upper block's equilibrium, the top's tangential reaction.
+double transferred(const RestartState& s) {
+  double sum = 0.0;
+  for (double f : s.friction.tangential_force) sum += f;
+  return sum;
+}
+
+/// The recorded states at the end of each increment of step `step` (1-based).
+std::vector<const RestartState*> increment_ends(const testing::StateRecorder& r, int step) {
+  std::vector<const RestartState*> ends;
+  for (std::size_t k = 0; k < r.rows.size(); ++k) {
+    if (r.rows[k].step != step) continue;
+    const bool last = k + 1 == r.rows.size() || r.rows[k + 1].increment != r.rows[k].increment ||
+                      r.rows[k + 1].step != r.rows[k].step;
+    if (last) ends.push_back(&r.states[k]);
+  }
+  return ends;
+}
+
+TEST(FrictionSurfaces, PushedBlockRisesToMuNThenSlipsAndShowsHysteresisOnTheWayBack) {
+  Blocks k = blocks(mu);
+  // Full slip needs the shear traction mu p over the interface: a tangential displacement of about
+  // mu p h / G per block, G = E / 2.6. Push to eight times that, so that the way back reverses it.
+  const double d = 8.0 * 2.0 * mu * pressure * height * 2.6 / 1.0e6;
+  press_and_push(k, d, 20, true);  // non-matching faces: 4 on 5
+  testing::StateRecorder recorder;
+  const Solution s = solve(k.b.model, &recorder);
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  const double N = k.normal_force();
+
+  // Step 2: the transferred force rises monotonically, then holds at mu N with every point slipping.
+  const auto push = increment_ends(recorder, 2);
+  ASSERT_EQ(push.size(), 20u);
+  double last = 0.0;
+  int holding = 0;
+  for (std::size_t i = 0; i < push.size(); ++i) {
+    const double q = transferred(*push[i]);
+    EXPECT_GE(q, last - 1e-9 * N) << "increment " << i + 1;
+    last = q;
+    EXPECT_LE(q, mu * N * (1.0 + 1e-9)) << "increment " << i + 1;
+    if (std::abs(q - mu * N) < 0.005 * mu * N) ++holding;
+  }
+  EXPECT_GT(transferred(*push.front()), 0.0);
+  EXPECT_LT(transferred(*push.front()), 0.5 * mu * N);  // it rises: the first increment sticks mostly
+  EXPECT_GE(holding, 5);                                  // and then holds
+  for (const std::uint8_t state : push.back()->friction.state) EXPECT_EQ(state, static_cast<std::uint8_t>(SlipState::slip));
+
+  // Step 3 (back): it sticks first (the force falls through zero), then slips back to mu N the other
+  // way. Hysteresis: at the same push the two forces differ by more than mu N.
+  const auto back = increment_ends(recorder, 3);
+  ASSERT_EQ(back.size(), 20u);
+  EXPECT_NEAR(transferred(*back.back()), -mu * N, 0.005 * mu * N);
+  for (std::size_t i = 0; i + 1 < back.size(); ++i) {
+    // back[i] is at push (19 - i) / 20 d, like push[18 - i].
+    const double difference = transferred(*push[18 - i]) - transferred(*back[i]);
+    if (i >= 10) EXPECT_GT(difference, mu * N) << "back increment " << i + 1;
+  }
+  for (const std::uint8_t state : back.back()->friction.state) EXPECT_EQ(state, static_cast<std::uint8_t>(SlipState::slip));
+
+  // The result: the top's reaction balances the transferred force; every point slips, its shear is
+  // mu x pressure against the return (along A's chain direction t = +r: +mu p), its slip accumulated.
+  EXPECT_NEAR(reaction_r(s, k.b.model, k.top), transferred(*back.back()), 1e-9 * N);
+  ASSERT_EQ(s.contact.size(), 1u);
+  for (const ContactPointResult& p : s.contact[0].points) {
+    EXPECT_EQ(p.state, ContactPointState::slip);
+    EXPECT_NEAR(p.shear, mu * p.pressure, 1e-9 * pressure);
+    EXPECT_GT(p.slip, 0.5 * d);
+  }
+  // History columns.
+  const IterationRecord& final_row = s.history.back();
+  EXPECT_EQ(final_row.slip_points, static_cast<int>(s.contact[0].points.size()));
+  EXPECT_EQ(final_row.stick_points, 0);
+  EXPECT_LT(final_row.friction_residual, 1e-10);
+  EXPECT_NE(s.message.find("slipping"), std::string::npos) << s.message;
+}
+
+TEST(FrictionSurfaces, VanishingFrictionIsFrictionlessAndHugeFrictionIsTheMergedMesh) {
+  // mu -> 0 through FrictionalContact against mu = 0 (ExactContact): the push of the block.
+  Blocks zero = blocks(0.0), tiny = blocks(1e-14);
+  const double d = 1e-3;
+  press_and_push(zero, d, 4, false);
+  press_and_push(tiny, d, 4, false);
+  const Solution a = solve(zero.b.model), b = solve(tiny.b.model);
+  ASSERT_EQ(a.status, RunStatus::converged) << a.message;
+  ASSERT_EQ(b.status, RunStatus::converged) << b.message;
+  double largest = 0.0;
+  for (const NodeResult& n : a.nodes) largest = std::max({largest, std::abs(n.u_r), std::abs(n.u_z)});
+  for (std::size_t n = 0; n < a.nodes.size(); ++n) {
+    EXPECT_NEAR(b.nodes[n].u_r, a.nodes[n].u_r, 1e-10 * largest);
+    EXPECT_NEAR(b.nodes[n].u_z, a.nodes[n].u_z, 1e-10 * largest);
+  }
+
+  // mu = 1e6 on blocks of two materials (their Poisson expansions differ: the interface carries
+  // shear) pressed in one increment: the bodies tied, as one mesh of both materials.
+  Blocks tied = blocks(1e6, 0.0, 4);  // matching faces: the merged mesh is the same discretization
+  Model& m = tied.b.model;
+  m.materials[1] = testing::isotropic_material(2, 3.0e6, 0.2);
+  m.loads.nodal_forces = traction_loads(m, testing::row_edges(tied.b.upper, layers), Vec2(0.0, -pressure));
+  const Solution t = solve(m);
+  ASSERT_EQ(t.status, RunStatus::converged) << t.message;
+  for (const ContactPointResult& p : t.contact[0].points) EXPECT_EQ(p.state, ContactPointState::stick);
+
+  Model merged;
+  merged.analysis = AnalysisType::plane_strain;
+  merged.thickness = m.thickness;
+  merged.materials = m.materials;
+  const testing::Grid g = testing::add_grid(
+      merged, 4, 2 * layers, [](double s, double r) { return Vec2(width * s, 2.0 * height * r); }, 0);
+  for (std::size_t e = 0; e < merged.elements.size(); ++e) {
+    const Element& el = merged.elements[e];
+    double z = 0.0;
+    for (int c = 0; c < 4; ++c) z += merged.nodes[static_cast<std::size_t>(el.nodes[c])].z / 4.0;
+    if (z > height) merged.elements[e].material = 1;
+  }
+  testing::fill_temperatures(merged, 0.0);
+  for (int i = 0; i <= g.ni; ++i) testing::constrain(merged, g.at(i, 0), 0.0, 0.0);
+  merged.loads.nodal_forces = traction_loads(merged, testing::row_edges(g, 2 * layers), Vec2(0.0, -pressure));
+  const Solution one = solve(merged);
+  ASSERT_EQ(one.status, RunStatus::converged) << one.message;
+  // Every node of the contact model against the merged node at its position (both faces' nodes
+  // against the one interface node).
+  largest = 0.0;
+  for (const NodeResult& n : one.nodes) largest = std::max({largest, std::abs(n.u_r), std::abs(n.u_z)});
+  int compared = 0;
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) {
+    for (std::size_t q = 0; q < merged.nodes.size(); ++q) {
+      if (std::abs(merged.nodes[q].r - m.nodes[n].r) > 1e-12 || std::abs(merged.nodes[q].z - m.nodes[n].z) > 1e-12) continue;
+      EXPECT_NEAR(t.nodes[n].u_r, one.nodes[q].u_r, 1e-9 * largest) << "node " << m.nodes[n].id;
+      EXPECT_NEAR(t.nodes[n].u_z, one.nodes[q].u_z, 1e-9 * largest) << "node " << m.nodes[n].id;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, static_cast<int>(m.nodes.size()));
+}
+
+TEST(FrictionSurfaces, InterferenceFitPushesOutAtMuTimesTheNormalContactForce) {
+  // The upper block overlaps the base by 1e-3 (an interference), its top held in z: the fit's
+  // pressure alone presses it. Pushed sideways by its top, it slides when the transferred force
+  // reaches mu times the resultant normal contact force of that increment.
+  Blocks k = blocks(mu, -1.0e-3);
+  Model& m = k.b.model;
+  Step fit = step("fit", 1), push = step("push", 20);
+  const double d = 2.0e-3;
+  for (int node : k.top) {
+    fit.constraints.push_back({node, 0.0, 0.0});
+    push.constraints.push_back({node, d, 0.0});
+  }
+  m.steps = {fit, push};
+  testing::StateRecorder recorder;
+  const Solution s = solve(m, &recorder);
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  const auto ends = increment_ends(recorder, 2);
+  ASSERT_EQ(ends.size(), 20u);
+  // The first increment in which every point slips: the force there against mu x normal force.
+  bool slid = false;
+  for (const RestartState* e : ends) {
+    const FrictionState& f = e->friction;
+    if (!std::all_of(f.state.begin(), f.state.end(), [](std::uint8_t x) { return x == static_cast<std::uint8_t>(SlipState::slip); })) {
+      continue;
+    }
+    double normal = 0.0;
+    for (double n : f.normal_force) normal += n;
+    EXPECT_GT(normal, 0.0);
+    EXPECT_NEAR(transferred(*e), mu * normal, 0.005 * mu * normal);
+    slid = true;
+    break;
+  }
+  EXPECT_TRUE(slid);
+  // And from the result: the top's reaction at the end against mu x the integrated contact pressure
+  // (the base's bottom reactions carry the normal force).
+  double fz = 0.0;
+  for (int i = 0; i <= k.b.lower.ni; ++i) {
+    const int id = m.nodes[static_cast<std::size_t>(k.b.lower.at(i, 0))].id;
+    for (const NodeReaction& r : s.reactions) {
+      if (r.id == id) fz += r.f_z;
+    }
+  }
+  EXPECT_NEAR(reaction_r(s, m, k.top), mu * fz, 0.005 * mu * fz);
+}
+
+TEST(FrictionSurfaces, ShearBeyondMuNStopsNamingTheStepAndIncrement) {
+  // Pressed by N (its top free along r: friction alone holds it), then sheared by 1.2 mu N in 4
+  // increments: the block holds at 0.3 and 0.6 mu N, then slides away in increment 4.
+  Blocks k = blocks(mu);
+  Model& m = k.b.model;
+  const auto edges = testing::row_edges(k.b.upper, layers);
+  m.loads.nodal_forces = traction_loads(m, edges, Vec2(0.0, -pressure));
+  Step shear = step("shear", 4);
+  shear.loads = m.loads;
+  for (const NodalForce& f : traction_loads(m, edges, Vec2(1.2 * mu * pressure, 0.0))) shear.loads->nodal_forces.push_back(f);
+  m.steps = {step("press", 1), shear};
+  try {
+    const Solution s = solve(m);
+    FAIL() << "expected the slide-away error, got " << s.message;
+  } catch (const SolverError& e) {
+    const std::string text = e.what();
+    EXPECT_NE(text.find("step 2 \"shear\", increment 4 of 4"), std::string::npos) << text;
+    EXPECT_NE(text.find("slides away"), std::string::npos) << text;
+  }
+  // 0.9 mu N holds.
+  shear.loads = m.loads;
+  for (const NodalForce& f : traction_loads(m, edges, Vec2(0.9 * mu * pressure, 0.0))) shear.loads->nodal_forces.push_back(f);
+  m.steps = {step("press", 1), shear};
+  const Solution held = solve(m);
+  EXPECT_EQ(held.status, RunStatus::converged) << held.message;
+}
+
+/// expect_identical, and the contact points' every number.
+void expect_identical_contact(const Solution& a, const Solution& b) {
+  testing::expect_identical(a, b);
+  ASSERT_EQ(a.contact.size(), b.contact.size());
+  for (std::size_t k = 0; k < a.contact.size(); ++k) {
+    ASSERT_EQ(a.contact[k].points.size(), b.contact[k].points.size());
+    for (std::size_t i = 0; i < a.contact[k].points.size(); ++i) {
+      const ContactPointResult &p = a.contact[k].points[i], &q = b.contact[k].points[i];
+      EXPECT_EQ(p.gap, q.gap);
+      EXPECT_EQ(p.pressure, q.pressure);
+      EXPECT_EQ(p.shear, q.shear);
+      EXPECT_EQ(p.slip, q.slip);
+      EXPECT_EQ(p.state, q.state);
+    }
+  }
+}
+
+TEST(FrictionSurfaces, RunStoppedAfterEveryIterationResumesToTheLastDigit) {
+  Blocks k = blocks(mu);
+  const double d = 4.0 * 2.0 * mu * pressure * height * 2.6 / 1.0e6;
+  press_and_push(k, d, 5, true);
+  const Model& model = k.b.model;
+  const std::string digest = "friction-test";
+  testing::StateRecorder all;
+  const Solution uninterrupted = solve(model, &all);
+  ASSERT_EQ(uninterrupted.status, RunStatus::converged) << uninterrupted.message;
+  ASSERT_GE(uninterrupted.iterations, 11);
+  for (int stop = 1; stop < uninterrupted.iterations; ++stop) {
+    SCOPED_TRACE("stopped after iteration " + std::to_string(stop));
+    testing::StateRecorder first(stop);
+    const Solution stopped = solve(model, &first);
+    ASSERT_EQ(stopped.status, RunStatus::stopped);
+    const RestartState& saved = first.states.back();
+    ASSERT_FALSE(saved.friction.empty());
+    const RestartState from_json = io::state_from_json(io::state_to_json(saved, digest), digest);
+    expect_identical_contact(solve(model, nullptr, &from_json), uninterrupted);
+    const RestartState from_store = io::decode_stored_state(io::encode_stored_state(saved, digest), digest);
+    expect_identical_contact(solve(model, nullptr, &from_store), uninterrupted);
+  }
+}
+
+}  // namespace
+}  // namespace saasgaps
