@@ -21,7 +21,8 @@
 /// normal multipliers in each augmented-Lagrangian iteration (a fixed point that contracts while mu
 /// times the normal-tangential coupling of the interface is below 1; zero for one material on both
 /// sides). Then
-///   open  -> contact (stick; slip when mu = 0)   where g < -tol,
+///   open  -> contact (stick; slip when mu = 0, or, s = sign(v), when k_t |v| > mu k_n (-g): Coulomb
+///            on the trial forces of the penetration and the motion made while open)   where g < -tol,
 ///   contact -> open                               where lambda_n < -tol k_n,
 ///   stick -> slip, s = -sign(lambda_t)            where |lambda_t| - mu lambda_n > tol k_t,
 ///   slip  -> stick                                where s v < -tol (it moves against its slip),

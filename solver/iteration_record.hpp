@@ -42,9 +42,9 @@ struct IterationRecord {
   double complementarity = 0.0;
   int active_set_iterations = 0;
   /// Contact pairs with friction > 0 only (0 otherwise): points that stick and that slip at the
-  /// end of the iteration, and the largest residual of Coulomb's law over the touching points,
-  /// relative to mu x pressure (dimensionless, 0 when the law holds exactly; the method defines it
-  /// in docs/contact.md).
+  /// end of the iteration, and the largest residual of Coulomb's law over the touching points, over
+  /// the model's length scale (dimensionless, 0 when the law holds exactly; FrictionReport and
+  /// docs/contact.md section 9 define it).
   int stick_points = 0;
   int slip_points = 0;
   double friction_residual = 0.0;

@@ -75,8 +75,8 @@ struct StepResult {
   StepStatus status = StepStatus::not_converged;
 };
 
-/// A point of a contact surface pair: open, or touching (stick: frictionless contact that touches;
-/// slip needs friction, not solved yet).
+/// A point of a contact surface pair: open, or touching (stick: also every touching point of a
+/// frictionless pair; slip: friction > 0 and slipping).
 enum class ContactPointState { open, stick, slip };
 
 const char* to_string(ContactPointState state);
@@ -86,8 +86,8 @@ struct ContactPointResult {
   double r = 0.0, z = 0.0;  ///< the node's reference coordinates
   double gap = 0.0;         ///< current gap along the node's normal (length; < 0 never once solved)
   double pressure = 0.0;    ///< >= 0, force per unit area of side A's face
-  double shear = 0.0;       ///< tangential traction (0: frictionless)
-  double slip = 0.0;        ///< accumulated tangential slip (0: frictionless)
+  double shear = 0.0;       ///< tangential traction of side B on side A along A's chain direction (0: frictionless)
+  double slip = 0.0;        ///< accumulated tangential slip, length (0: frictionless)
   ContactPointState state = ContactPointState::open;
 };
 
