@@ -22,6 +22,7 @@
 #include "errors.hpp"
 #include "io/state_codec.hpp"
 #include "io/stored_state.hpp"
+#include "support/examples.hpp"
 #include "support/identical_solutions.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/stacked_blocks.hpp"
@@ -358,6 +359,19 @@ TEST(FrictionSurfaces, RunStoppedAfterEveryIterationResumesToTheLastDigit) {
     const RestartState from_store = io::decode_stored_state(io::encode_stored_state(saved, digest), digest);
     expect_identical_contact(solve(model, nullptr, &from_store), uninterrupted);
   }
+}
+
+TEST(FrictionSurfaces, ExampleBlockPushEndsSlippingAtMuNTheOtherWay) {
+  // schemas/examples/friction-block-push.json, as its description says: N = 100 x 2 x 0.4 = 80, mu N = 24.
+  const Model m = testing::example_model("friction-block-push.json");
+  const Solution s = solve(m);
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  double top = 0.0;
+  for (const NodeReaction& r : s.reactions) {
+    if (r.id > 100) top += r.f_r;  // the block's top nodes (ids from 101); the base's are 1-15
+  }
+  EXPECT_NEAR(top, -24.0, 0.005 * 24.0);
+  for (const ContactPointResult& p : s.contact.at(0).points) EXPECT_EQ(p.state, ContactPointState::slip);
 }
 
 }  // namespace
