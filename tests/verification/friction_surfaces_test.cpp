@@ -365,6 +365,34 @@ TEST(FrictionSurfaces, RunStoppedAfterEveryIterationResumesToTheLastDigit) {
   }
 }
 
+TEST(FrictionSurfaces, RestartStateWithMalformedFrictionArraysIsRefused) {
+  Blocks k = blocks(mu);
+  press_and_push(k, 1e-4, 2, false);
+  testing::StateRecorder recorder(1);
+  ASSERT_EQ(solve(k.b.model, &recorder).status, RunStatus::stopped);
+  const nlohmann::json saved = io::state_to_json(recorder.states.back(), "d");
+  ASSERT_TRUE(saved.contains("friction"));
+  nlohmann::json shorter = saved;
+  shorter["friction"]["slip"].erase(0);
+  EXPECT_THROW(
+      {
+        try {
+          (void)io::state_from_json(shorter, "d");
+        } catch (const SolverError& e) {
+          EXPECT_NE(std::string(e.what()).find("friction arrays differ in length"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      SolverError);
+  nlohmann::json bad_state = saved;
+  bad_state["friction"]["state"][0] = 7;
+  EXPECT_THROW((void)io::state_from_json(bad_state, "d"), SolverError);
+  // A state without the member (every state before friction) reads with an empty friction state.
+  nlohmann::json without = saved;
+  without.erase("friction");
+  EXPECT_TRUE(io::state_from_json(without, "d").friction.empty());
+}
+
 /// Cattaneo-Mindlin in plane strain (Johnson, Contact Mechanics, 7.1): the Hertz line contact of
 /// support/hertz_line_contact.hpp, whole (a block, and a body whose bottom is the cylinder's parabola,
 /// meshed on their own: spacing h and 0.72 h near the contact), pressed by a rigid platen (the body's
