@@ -172,10 +172,12 @@ TEST_F(DashboardRuns, ARunningJobShowsPlaceholdersThenItsConvergenceLive) {
 
   Browser browser(dir / "chromium-profile");
   open_job(browser, server, job);
-  // Queued: every figure says what it waits for; no image, broken or not, is shown.
+  // Queued: every figure says what it waits for; no image, broken or not, is shown. The friction
+  // figure is for results with friction only: hidden here.
   ASSERT_EQ(get_json(client, path)["state"], "queued");
+  EXPECT_FALSE(browser.run("return document.querySelector('#friction-plot').parentElement.checkVisibility();").get<bool>());
   const json queued = browser.run(
-      "return [...document.querySelectorAll('.plots figure')].map(f => [!f.checkVisibility(),"
+      "return [...document.querySelectorAll('.plots figure:not(:has(#friction-plot))')].map(f => [!f.checkVisibility(),"
       " !f.querySelector('.placeholder').checkVisibility(), f.querySelector('.placeholder').textContent,"
       " !f.querySelector('img').checkVisibility()]);");
   ASSERT_EQ(queued.size(), 4U);
