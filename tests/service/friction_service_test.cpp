@@ -2,7 +2,8 @@
 // replaced, in the stopped server's database, by hand-made ones of a run with friction (until the
 // solver fills them, no model gives them). The restarted server answers them as stored: the rows
 // with their friction keys (GET iterations and the event stream), the contact pairs with mu, and the
-// friction plot (CSV and PNG); a frictionless result's friction plot is a 409 naming why.
+// friction plot (CSV and PNG), `saasgaps watch` (the table's friction columns) and `saasgaps fetch
+// --plot friction`; a frictionless result's friction plot is a 409 naming why.
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
@@ -109,6 +110,20 @@ TEST_F(FrictionService, StoredFrictionRowsAndResultAreServedWithTheFrictionPlot)
   ASSERT_EQ(png->status, 200) << png->body;
   EXPECT_EQ(png->get_header_value("Content-Type"), "image/png");
   EXPECT_EQ(png->body.substr(1, 3), "PNG");
+
+  // `saasgaps watch` (not a terminal: the progress table) shows the friction columns of the rows.
+  const std::string url = "http://127.0.0.1:" + std::to_string(server.port());
+  const CommandResult watch =
+      run_command({"/bin/sh", "-c", "SAASGAPS_SERVER=" + url + " " + SAASGAPS_BINARY + " watch " + job});
+  EXPECT_EQ(watch.exit_code, 0) << watch.output;
+  EXPECT_NE(watch.output.find(" sets stick slip friction  seconds\n"), std::string::npos) << watch.output;
+  EXPECT_NE(watch.output.find("     3    2  2.5e-14    0.010\n"), std::string::npos) << watch.output;
+  // `saasgaps fetch --plot friction` draws it from the stored result.
+  const CommandResult fetch = run_command({"/bin/sh", "-c", "SAASGAPS_SERVER=" + url + " " + SAASGAPS_BINARY +
+                                                                " fetch " + job + " --plot friction -o " +
+                                                                (dir_ / "friction.svg").string()});
+  EXPECT_EQ(fetch.exit_code, 0) << fetch.output;
+  EXPECT_TRUE(std::filesystem::file_size(dir_ / "friction.svg") > 1000U);
 }
 
 }  // namespace
