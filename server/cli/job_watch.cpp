@@ -25,23 +25,10 @@ struct JobView {
   std::optional<IterationRecord> row;
 };
 
-/// The live line: "job 3  running  iteration 7  E tension 20  closed 92  non-conv 3  max clos 486.5 %".
+/// The live line: "job 3  running  iteration 7" and the row's key columns (live_summary).
 std::string live_line(std::int64_t job, const JobView& view) {
   std::string line = "job " + std::to_string(job) + "  " + view.state + "  iteration " + std::to_string(view.iteration);
-  if (view.row) {
-    const IterationRecord& r = *view.row;
-    if (r.step > 0) line += "  step " + std::to_string(r.step) + " increment " + std::to_string(r.increment);
-    char text[200];
-    if (r.active_set_iterations > 0) {
-      std::snprintf(text, sizeof text, "  closed %d  pairs %d  complement. %.1e  max clos %.1f %%  %.2f s", r.closed_gaps,
-                    r.contact_pairs, r.complementarity, r.max_closure, r.seconds);
-    } else {
-      std::snprintf(text, sizeof text, "  E tension %.5g  closed %d  non-conv %s  max clos %.1f %%  %.2f s",
-                    r.tensile_modulus, r.closed_gaps, r.iteration == 1 ? "-" : std::to_string(r.nonconverged_gaps).c_str(),
-                    r.max_closure, r.seconds);
-    }
-    line += text;
-  }
+  if (view.row) line += live_summary(*view.row);
   return line;
 }
 

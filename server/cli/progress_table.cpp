@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <string>
 
+#include "io/history_json.hpp"
+
 namespace saasgaps::cli {
 
 namespace {
@@ -22,7 +24,9 @@ std::string number(const char* format, double value) {
 
 // Column widths. The compact line is at most 5+9+11+8+9+12+12+8+13+7+12+5+9 = 120 characters with
 // every column a run can show (exact mode drops the tensile modulus and non-converged gaps; only
-// stepped models show step/increment), which leaves room for numbers wider than their header.
+// stepped models show step/increment), which leaves room for numbers wider than their header. The
+// friction columns (6+5+9) come only with exact rows (friction is solved by the contact surfaces'
+// active sets), in the 11+9 the classic columns leave.
 constexpr int iteration_width = 5;
 constexpr int step_width = 9;
 constexpr int modulus_width = 11;
@@ -35,6 +39,9 @@ constexpr int residual_width = 12;
 constexpr int sets_width = 5;
 constexpr int seconds_width = 9;
 constexpr int watched_width = 14;
+constexpr int stick_width = 6;
+constexpr int slip_width = 5;
+constexpr int friction_width = 9;
 
 /// A closure in percent: one decimal, fewer digits when huge (a body that flew off) so the column holds.
 std::string closure(double percent) { return number(std::fabs(percent) < 1e7 ? "%.1f" : "%.3g", percent); }
@@ -54,6 +61,8 @@ bool ProgressTable::exact_row(const IterationRecord& row) const {
 }
 
 bool ProgressTable::classic_columns(const IterationRecord& row) const { return wide_ || !exact_row(row); }
+
+bool ProgressTable::friction_row(const IterationRecord& row) const { return friction_ || io::has_friction_columns(row); }
 
 std::string ProgressTable::header_text(const IterationRecord& row) const {
   std::string line = column("iter", iteration_width);
@@ -75,6 +84,7 @@ std::string ProgressTable::header_text(const IterationRecord& row) const {
     }
   }
   if (exact_row(row)) line += column("pairs", pairs_width) + column("complement.", residual_width) + column("sets", sets_width);
+  if (friction_row(row)) line += column("stick", stick_width) + column("slip", slip_width) + column("friction", friction_width);
   return line + column("seconds", seconds_width);
 }
 
@@ -104,14 +114,44 @@ std::string ProgressTable::row_text(const IterationRecord& row) const {
             column(number("%.1e", row.complementarity), residual_width) +
             column(std::to_string(row.active_set_iterations), sets_width);
   }
+  if (friction_row(row)) {
+    line += column(std::to_string(row.stick_points), stick_width) + column(std::to_string(row.slip_points), slip_width) +
+            column(number("%.1e", row.friction_residual), friction_width);
+  }
   return line + column(number("%.3f", row.seconds), seconds_width);
 }
 
+std::string live_summary(const IterationRecord& r) {
+  std::string line;
+  if (r.step > 0) line += "  step " + std::to_string(r.step) + " increment " + std::to_string(r.increment);
+  char text[200];
+  if (r.active_set_iterations > 0) {
+    std::snprintf(text, sizeof text, "  closed %d  pairs %d  complement. %.1e  max clos %.1f %%  %.2f s", r.closed_gaps,
+                  r.contact_pairs, r.complementarity, r.max_closure, r.seconds);
+  } else {
+    std::snprintf(text, sizeof text, "  E tension %.5g  closed %d  non-conv %s  max clos %.1f %%  %.2f s",
+                  r.tensile_modulus, r.closed_gaps, r.iteration == 1 ? "-" : std::to_string(r.nonconverged_gaps).c_str(),
+                  r.max_closure, r.seconds);
+  }
+  line += text;
+  // Runs with friction only: the points that stick and slip, and the residual of Coulomb's law.
+  if (io::has_friction_columns(r)) {
+    std::snprintf(text, sizeof text, "  stick %d  slip %d  friction %.1e", r.stick_points, r.slip_points,
+                  r.friction_residual);
+    line += text;
+  }
+  return line;
+}
+
 void ProgressTable::print(const IterationRecord& row) {
-  if (!exact_) {
+  // A row that first shows friction (a watched job: the model is not known) brings the friction
+  // columns, under a header of its own.
+  const bool friction_appears = !friction_ && io::has_friction_columns(row);
+  if (!exact_ || friction_appears) {
+    if (friction_appears) friction_ = true;
     out_ << header_text(row) << '\n';
     // Exact-mode rows carry their active sets; the header fixes the columns for every later row.
-    exact_ = row.active_set_iterations > 0;
+    if (!exact_) exact_ = row.active_set_iterations > 0;
   }
   out_ << row_text(row) << '\n';
   out_.flush();

@@ -5,8 +5,10 @@
 /// non-converged gaps, average and maximum closure, yielded and non-converged plastic elements,
 /// wall time; in exact contact mode the tensile modulus and non-converged gaps (classic-mode
 /// notions) give way to the pairs in contact, the complementarity residual and the active sets
-/// tried. Wide adds the watched elements and gaps of the model's `output` (three columns each), and
-/// keeps the classic columns in exact mode.
+/// tried. A run with friction (contact pairs with friction > 0) adds the points that stick and that
+/// slip and the residual of Coulomb's law; a frictionless run's table is unchanged. Wide adds the
+/// watched elements and gaps of the model's `output` (three columns each), and keeps the classic
+/// columns in exact mode.
 
 #include <optional>
 #include <ostream>
@@ -21,7 +23,11 @@ inline constexpr int compact_table_width = 120;
 
 class ProgressTable {
  public:
-  explicit ProgressTable(std::ostream& out, bool wide = false) : out_(out), wide_(wide) {}
+  /// friction: the model has friction, so the friction columns show from the first row on (its
+  /// points may all be open). Without it they appear with the first row that carries them
+  /// (io::has_friction_columns), under a header printed again.
+  explicit ProgressTable(std::ostream& out, bool wide = false, bool friction = false)
+      : out_(out), wide_(wide), friction_(friction) {}
   void print(const IterationRecord& row);
 
   /// The header line and a row without a line end (the live one-line display of `saasgaps watch`).
@@ -31,9 +37,17 @@ class ProgressTable {
  private:
   [[nodiscard]] bool exact_row(const IterationRecord& row) const;
   [[nodiscard]] bool classic_columns(const IterationRecord& row) const;
+  [[nodiscard]] bool friction_row(const IterationRecord& row) const;
   std::ostream& out_;
   bool wide_;
+  bool friction_;  // friction columns: set by the model, or by the first row that has them
   std::optional<bool> exact_;  // set when the header is printed: exact-contact columns or not
 };
+
+/// The key columns of a row on one line, for the live display of `saasgaps watch` (after "job 3
+/// running  iteration 7"): "  E tension 20  closed 92  non-conv 3  max clos 486.5 %  0.12 s"; exact
+/// rows "  closed 4  pairs 17  complement. 2.5e-15  max clos 100.0 %  0.12 s"; stepped rows begin
+/// with "  step 2 increment 3"; rows with friction end with "  stick 11  slip 6  friction 3.0e-13".
+std::string live_summary(const IterationRecord& row);
 
 }  // namespace saasgaps::cli

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <iostream>
 
 #include "analysis.hpp"
@@ -24,8 +25,9 @@ namespace {
 /// Prints each iteration, saves its restart state, and stops after --stop-after iterations.
 class CommandLineObserver final : public IterationObserver {
  public:
-  CommandLineObserver(const SolveOptions& options, std::string digest)
-      : options_(options), digest_(std::move(digest)), table_(std::cerr, options.wide) {}
+  /// friction: the model has a contact pair with friction > 0 (the table's friction columns).
+  CommandLineObserver(const SolveOptions& options, std::string digest, bool friction)
+      : options_(options), digest_(std::move(digest)), table_(std::cerr, options.wide, friction) {}
 
   void on_iteration(const IterationRecord& row, const RestartState& state) override {
     if (!options_.quiet) table_.print(row);
@@ -108,7 +110,9 @@ int run_solve(const SolveOptions& options) {
     }
     resume = io::state_from_json(saved, digest);
   }
-  CommandLineObserver observer(options, digest);
+  const bool friction = model.contact && std::any_of(model.contact->pairs.begin(), model.contact->pairs.end(),
+                                                     [](const SurfacePair& pair) { return pair.friction > 0.0; });
+  CommandLineObserver observer(options, digest, friction);
   std::optional<OrderingCache> cache;
   if (!options.cache_dir.empty()) cache.emplace(options.cache_dir);
   std::optional<Solution> solution;

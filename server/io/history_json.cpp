@@ -4,12 +4,19 @@ namespace saasgaps::io {
 
 using nlohmann::json;
 
+bool has_friction_columns(const IterationRecord& row) {
+  // A frictionless run leaves all three at 0; any touching point of a run with friction sticks or
+  // slips, and a residual alone (nothing touching yet) is still worth showing.
+  return row.stick_points + row.slip_points > 0 || row.friction_residual != 0.0;
+}
+
 void write_history_row(JsonWriter& out, const IterationRecord& r) {
   // Exact contact mode only (classic rows have no pairs): active sets, complementarity, pairs in
   // contact, each in its alphabetical place like every member.
   const bool exact = r.active_set_iterations > 0;
   // Stepped models only (a model without steps writes its rows exactly as before).
   const bool stepped = r.step > 0;
+  const bool friction = has_friction_columns(r);
   out.begin_object();
   if (exact) out.field("active_set_iterations", r.active_set_iterations);
   out.field("attempt", r.attempt)
@@ -17,14 +24,18 @@ void write_history_row(JsonWriter& out, const IterationRecord& r) {
       .field("bimodulus_changes", r.bimodulus_changes)
       .field("closed_gaps", r.closed_gaps);
   if (exact) out.field("complementarity", r.complementarity).field("contact_pairs", r.contact_pairs);
-  out.field("extrapolated", r.extrapolated).field("gap_closures", r.gap_closures);
+  out.field("extrapolated", r.extrapolated);
+  if (friction) out.field("friction_residual", r.friction_residual);
+  out.field("gap_closures", r.gap_closures);
   if (stepped) out.field("increment", r.increment);
   out.field("iteration", r.iteration)
       .field("max_closure", r.max_closure)
       .field("nonconverged_gaps", r.nonconverged_gaps)
       .field("nonconverged_plastic", r.nonconverged_plastic)
       .field("seconds", r.seconds);
+  if (friction) out.field("slip_points", r.slip_points);
   if (stepped) out.field("step", r.step);
+  if (friction) out.field("stick_points", r.stick_points);
   out.field("tensile_modulus", r.tensile_modulus);
   out.key("watch").begin_object().key("elements").begin_array();
   for (const WatchedElement& e : r.watch_elements) {
@@ -93,8 +104,7 @@ json history_row_json(const IterationRecord& r) {
     row["complementarity"] = r.complementarity;
     row["active_set_iterations"] = r.active_set_iterations;
   }
-  // Friction on contact surfaces: its counts and residual (rows without friction are unchanged).
-  if (r.stick_points > 0 || r.slip_points > 0 || r.friction_residual != 0.0) {
+  if (has_friction_columns(r)) {
     row["stick_points"] = r.stick_points;
     row["slip_points"] = r.slip_points;
     row["friction_residual"] = r.friction_residual;

@@ -14,8 +14,15 @@ namespace saasgaps::io {
 /// The row, members in alphabetical order: attempt, average_closure, bimodulus_changes,
 /// closed_gaps, extrapolated, gap_closures, iteration, max_closure, nonconverged_gaps,
 /// nonconverged_plastic, seconds, tensile_modulus, watch {elements, gaps}, yielded_elements; in
-/// exact contact mode also active_set_iterations, complementarity and contact_pairs.
+/// exact contact mode also active_set_iterations, complementarity and contact_pairs; in a stepped
+/// model step and increment; with friction (has_friction_columns) friction_residual, slip_points
+/// and stick_points.
 void write_history_row(JsonWriter& out, const IterationRecord& row);
+
+/// Whether the row carries the friction columns stick_points, slip_points and friction_residual: a
+/// run with friction > 0 on a contact pair (stick + slip > 0 or a residual != 0). Frictionless rows
+/// are written exactly as before friction existed; a reader takes absent columns as 0.
+bool has_friction_columns(const IterationRecord& row);
 
 /// The row as compact text (what the service stores).
 std::string history_row_text(const IterationRecord& row);

@@ -79,9 +79,13 @@ void write_gap(JsonWriter& out, const Model& model, const GapElement& gap, const
   out.field("sigma_m", g.sigma_m).field("state", to_string(g.state)).end_object();
 }
 
-/// A contact pair: its surfaces [A, B] and its points along A (keys in alphabetical order).
-void write_contact_pair(JsonWriter& out, const ContactPairResult& pair) {
-  out.begin_object().key("points").begin_array();
+/// A contact pair: its Coulomb coefficient (pairs with friction > 0 only: frictionless results are
+/// written as before friction existed), its surfaces [A, B] and its points along A (keys in
+/// alphabetical order). The plots draw mu x pressure from the friction written here.
+void write_contact_pair(JsonWriter& out, const ContactPairResult& pair, double friction) {
+  out.begin_object();
+  if (friction > 0.0) out.field("friction", friction);
+  out.key("points").begin_array();
   for (const ContactPointResult& p : pair.points) {
     out.begin_object()
         .field("gap", p.gap)
@@ -103,7 +107,10 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s) {
   out.begin_object().field("analysis", analysis_name(model.analysis));
   if (model.contact) {  // models with contact surfaces only: other results stay as they were
     out.key("contact").begin_array();
-    for (const ContactPairResult& pair : s.contact) write_contact_pair(out, pair);
+    for (std::size_t k = 0; k < s.contact.size(); ++k) {
+      // s.contact has one entry per model pair, in order (solution.hpp).
+      write_contact_pair(out, s.contact[k], k < model.contact->pairs.size() ? model.contact->pairs[k].friction : 0.0);
+    }
     out.end_array();
   }
   // Coordinates, connectivity and temperatures ride along so that a result can be plotted or

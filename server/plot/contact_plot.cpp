@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "plot/chart.hpp"
+#include "plot/contact_points.hpp"
 #include "plot/field.hpp"
 #include "plot/figure.hpp"
 #include "plot/result_mesh.hpp"
@@ -16,62 +17,8 @@ using nlohmann::json;
 
 namespace {
 
-/// "# ticks <panel>: value@px value@px ..": where each y tick sits on the image.
-std::string tick_note(const char* panel, const Chart& chart) {
-  std::string note = std::string("ticks ") + panel + ":";
-  for (const double t : chart.y_axis().ticks) {
-    note += " " + DataTable::number(t) + "@" + DataTable::number(chart.to_device(chart.x_axis().min, t).y);
-  }
-  return note;
-}
-
-constexpr Rgb part_colors[] = {{0.75, 0.10, 0.10}, {0.10, 0.30, 0.75}, {0.10, 0.55, 0.20},
-                               {0.85, 0.45, 0.00}, {0.50, 0.20, 0.65}, {0.35, 0.35, 0.35}};
-
-/// A number member of a contact point (0 when absent or not a number: the plot shows what is there).
-double member(const json& point, const char* key) {
-  const auto it = point.find(key);
-  return it != point.end() && it->is_number() ? it->get<double>() : 0.0;
-}
-
-/// One contact pair's points, as plotted.
-struct PairCurve {
-  std::string name;  ///< "A / B"
-  std::vector<double> x, r, z, pressure, gap;
-  std::vector<std::string> state;
-};
-
-std::vector<PairCurve> pair_curves(const json& result, RowAxis along) {
-  std::vector<PairCurve> curves;
-  for (const json& pair : array_member(result, "contact")) {
-    PairCurve c;
-    if (const auto s = pair.find("surfaces"); s != pair.end() && s->is_array() && s->size() == 2 &&
-                                              (*s)[0].is_string() && (*s)[1].is_string()) {
-      c.name = (*s)[0].get<std::string>() + " / " + (*s)[1].get<std::string>();
-    } else {
-      c.name = "pair " + std::to_string(curves.size() + 1);
-    }
-    double arc = 0.0;
-    for (const json& point : array_member(pair, "points")) {
-      const double r = member(point, "r"), z = member(point, "z");
-      if (!c.r.empty()) arc += std::hypot(r - c.r.back(), z - c.z.back());
-      c.r.push_back(r);
-      c.z.push_back(z);
-      c.pressure.push_back(member(point, "pressure"));
-      c.gap.push_back(member(point, "gap"));
-      const auto state = point.find("state");
-      c.state.push_back(state != point.end() && state->is_string() ? state->get<std::string>() : "");
-      switch (along) {
-        case RowAxis::index: c.x.push_back(static_cast<double>(c.r.size())); break;
-        case RowAxis::position: c.x.push_back(arc); break;
-        case RowAxis::r: c.x.push_back(r); break;
-        case RowAxis::z: c.x.push_back(z); break;
-      }
-    }
-    curves.push_back(std::move(c));
-  }
-  return curves;
-}
+/// The gap row's colours: a single part's panels, or one per part (the contact pairs' colours).
+Rgb part_color(int k) { return pair_color(static_cast<std::size_t>(k)); }
 
 }  // namespace
 
@@ -84,23 +31,14 @@ DataTable draw_surface_contact_plot(const Canvas& canvas, const json& result, Ro
   if (!has_contact_points(result)) {
     throw std::invalid_argument("the result has no contact surface points: there is no contact pressure to plot");
   }
-  const std::vector<PairCurve> curves = pair_curves(result, along);
-  UnitNames units;
-  if (const auto u = result.find("units"); u != result.end() && u->is_object()) {
-    units = {u->value("length", ""), u->value("force", ""), u->value("stress", ""), u->value("temperature", "")};
-  }
-  const auto text = [&](const char* key) {
-    const auto it = result.find(key);
-    return it != result.end() && it->is_string() ? it->get<std::string>() : std::string();
-  };
-  const std::string title = text("title"), status = text("status");
-  const auto count = result.find("iterations");
-  const int iterations = count != result.end() && count->is_number_integer() ? count->get<int>() : 0;
+  const std::vector<ContactPairCurve> curves = contact_pair_curves(result, along);
+  const UnitNames units = result_units(result);
+  const auto [title, status, iterations] = run_facts(result);
 
   // Always show 0 in both panels (and a gap panel of some height when every gap is 0).
   double low_x = INFINITY, high_x = -INFINITY, high_pressure = 0.0, low_gap = 0.0, high_gap = 0.0;
   std::size_t points = 0;
-  for (const PairCurve& c : curves) {
+  for (const ContactPairCurve& c : curves) {
     points += c.x.size();
     for (std::size_t i = 0; i < c.x.size(); ++i) {
       low_x = std::min(low_x, c.x[i]);
@@ -117,7 +55,7 @@ DataTable draw_surface_contact_plot(const Canvas& canvas, const json& result, Ro
   // Touching points' gaps are round-off (1e-17 on a part of size 1): they belong on the 0 line, not
   // spread over an axis of their own. Gaps below 1e-9 of the parts' size do not widen the axis.
   double extent = 0.0;
-  for (const PairCurve& c : curves) {
+  for (const ContactPairCurve& c : curves) {
     for (std::size_t i = 0; i < c.r.size(); ++i) extent = std::max({extent, std::abs(c.r[i]), std::abs(c.z[i])});
   }
   const double negligible = 1e-9 * (extent > 0.0 ? extent : 1.0);
@@ -127,11 +65,11 @@ DataTable draw_surface_contact_plot(const Canvas& canvas, const json& result, Ro
   const bool markers = points <= 200;
   std::vector<Series> pressure_parts, gap_parts;
   for (std::size_t k = 0; k < curves.size(); ++k) {
-    const PairCurve& c = curves[k];
+    const ContactPairCurve& c = curves[k];
     if (c.x.empty()) continue;
     Series pressure, gap;
     pressure.name = gap.name = c.name;
-    pressure.color = gap.color = part_colors[k % std::size(part_colors)];
+    pressure.color = gap.color = pair_color(k);
     pressure.x = gap.x = c.x;
     pressure.y = c.pressure;
     gap.y = c.gap;
@@ -143,11 +81,7 @@ DataTable draw_surface_contact_plot(const Canvas& canvas, const json& result, Ro
     gap_parts.push_back(std::move(gap));
   }
 
-  static constexpr const char* axis_names[] = {"point along side A", "arc length along side A", "r", "z"};
-  const std::string x_name = axis_names[static_cast<int>(along)];
-  const Axis x_axis = along == RowAxis::index
-                         ? integer_axis(static_cast<int>(low_x), static_cast<int>(high_x), x_name, 10, 0.5)
-                         : numeric_axis(low_x, high_x, with_unit(x_name, Quantity::length, units));
+  const Axis x_axis = contact_x_axis(low_x, high_x, along, units);
   const std::string subtitle = "Contact pressure " + unit_phrase(Quantity::stress, units) + " and gap along side A of " +
                                std::to_string(pressure_parts.size()) + " contact pair" +
                                (pressure_parts.size() == 1 ? "" : "s") + " (" + std::to_string(points) +
@@ -185,10 +119,10 @@ DataTable draw_surface_contact_plot(const Canvas& canvas, const json& result, Ro
   table.note(names);
   table.note("image " + std::to_string(canvas.width()) + "x" + std::to_string(canvas.height()) +
              " px; px, py_*: where each marker is drawn");
-  table.note(tick_note("pressure", top));
-  table.note(tick_note("gap", bottom));
+  table.note(y_tick_note("pressure", top));
+  table.note(y_tick_note("gap", bottom));
   for (std::size_t k = 0; k < curves.size(); ++k) {
-    const PairCurve& c = curves[k];
+    const ContactPairCurve& c = curves[k];
     for (std::size_t i = 0; i < c.x.size(); ++i) {
       const Point p = top.to_device(c.x[i], c.pressure[i]);
       const Point g = bottom.to_device(c.x[i], c.gap[i]);
@@ -228,12 +162,12 @@ DataTable draw_contact_plot(const Canvas& canvas, const PlotResult& result, cons
     if (row.parts() == 1) {
       pressure.name = "contact pressure";
       closure.name = "closure (final)";
-      pressure.color = part_colors[0];
-      closure.color = part_colors[1];
+      pressure.color = part_color(0);
+      closure.color = part_color(1);
     } else {
       pressure.name = closure.name = "gaps " + std::to_string(mesh.gaps[row.gaps[begin]].id) + "\u2013" +
                                      std::to_string(mesh.gaps[row.gaps[end - 1]].id);
-      pressure.color = closure.color = part_colors[k % std::size(part_colors)];
+      pressure.color = closure.color = part_color(k);
     }
     row.set_points(pressure, pressures, begin, end);
     row.set_points(closure, closures, begin, end);
@@ -286,8 +220,8 @@ DataTable draw_contact_plot(const Canvas& canvas, const PlotResult& result, cons
              "contact_pressure = max(0, -sigma_m) " + unit_phrase(Quantity::stress, mesh.units) + "; closure in %");
   table.note("image " + std::to_string(canvas.width()) + "x" + std::to_string(canvas.height()) +
              " px; px, py_*: where each marker is drawn");
-  table.note(tick_note("pressure", top));
-  table.note(tick_note("closure", bottom));
+  table.note(y_tick_note("pressure", top));
+  table.note(y_tick_note("closure", bottom));
   for (std::size_t i = 0; i < row.gaps.size(); ++i) {
     const GapElement& g = mesh.gaps[row.gaps[i]];
     const Point p = top.to_device(row.x[i], g.contact_pressure);

@@ -14,6 +14,8 @@
 ///   contact_pressure             contact pressure and closure along the gap row, or pressure and gap
 ///                                along each contact pair (contact_plot.hpp)
 ///   convergence                  the iteration's convergence
+///   friction                     shear and +-mu x pressure along each contact pair with friction,
+///                                stick and slip zones shaded (friction_plot.hpp)
 
 #include <optional>
 #include <string>
@@ -33,7 +35,7 @@
 namespace saasgaps::plot {
 
 struct PlotRequest {
-  /// A field of fields() or "convergence".
+  /// A field of fields(), "convergence" or "friction".
   std::string name = "effective";
   ImageFormat format = ImageFormat::png;
   int width = 1200;  ///< px
@@ -59,7 +61,8 @@ void set_centre(const std::string& text, PlanePoint& centre);
 /// axis as row_axis names it. Bad text: std::invalid_argument.
 void set_gap_row(const std::string& ids, const std::string& along, GapRowOptions& row);
 
-/// Every plot name: the fields (closure and contact_pressure among them) and "convergence".
+/// Every plot name: the fields (closure and contact_pressure among them), "convergence" and
+/// "friction".
 std::vector<std::string> plot_names();
 
 /// Throws std::invalid_argument "unknown field 'x'; fields: sigma_r, ..., closure, convergence"
@@ -80,7 +83,7 @@ io::ResultSelection result_selection_for(const PlotRequest& request);
 std::string render_plot(const PlotResult& result, const PlotRequest& request);
 
 /// The numbers the plot draws, as CSV (data_table.hpp), laid out for the request's image size: for
-/// closure, contact_pressure and a field along a path. Other plots: std::invalid_argument.
+/// closure, contact_pressure, friction and a field along a path. Other plots: std::invalid_argument.
 std::string render_table(const PlotResult& result, const PlotRequest& request);
 
 }  // namespace saasgaps::plot

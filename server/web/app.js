@@ -100,6 +100,11 @@ function unitOf(units, kind) {
   return units && units[kind] ? ` [${units[kind]}]` : "";
 }
 
+// A contact pair with Coulomb friction (the result's pair carries its mu only when it is > 0).
+function pairHasFriction(pair) {
+  return typeof pair.friction === "number" && pair.friction > 0;
+}
+
 // A contact pair of the result (its points along side A) as a table: its points, those in
 // contact, the peak pressure and the largest gap, with where they are.
 function contactPairTable(pair, index, units) {
@@ -118,6 +123,17 @@ function contactPairTable(pair, index, units) {
     ["peak pressure" + unitOf(units, "stress"), peak ? peak.pressure.toPrecision(5) + at(peak) : "", "peak-pressure"],
     ["largest gap" + unitOf(units, "length"), widest ? widest.gap.toPrecision(4) + at(widest) : "", "largest-gap"],
   ];
+  // A pair with friction: its mu, the points that stick and slip (state), and the largest shear
+  // and accumulated slip in magnitude (signed, with where they are).
+  if (pairHasFriction(pair)) {
+    const largest = key => points.reduce((best, p) => (best === null || Math.abs(p[key] || 0) > Math.abs(best[key] || 0) ? p : best), null);
+    const shear = largest("shear"), slip = largest("slip");
+    rows.push(["friction \u03bc", String(pair.friction), "friction"],
+              ["points sticking", String(points.filter(p => p.state === "stick").length), "sticking"],
+              ["points slipping", String(points.filter(p => p.state === "slip").length), "slipping"],
+              ["peak shear" + unitOf(units, "stress"), shear ? (shear.shear || 0).toPrecision(5) + at(shear) : "", "peak-shear"],
+              ["largest slip" + unitOf(units, "length"), slip ? (slip.slip || 0).toPrecision(4) + at(slip) : "", "largest-slip"]);
+  }
   const body = table.createTBody();
   for (const [label, value, key] of rows) {
     const tr = body.insertRow();
@@ -219,7 +235,13 @@ async function showList() {
 // The iteration table's columns, chosen by a row as the CLI chooses them: exact contact rows (they
 // carry active_set_iterations) show the node pairs in contact, the complementarity residual and the
 // active sets tried instead of the classic E tension and non-converged count (which mean nothing
-// there); rows of a stepped load show their step and increment. [heading, field, text of a row]
+// there); rows of a stepped load show their step and increment, rows of a run with friction the
+// points that stick and slip and the friction residual. [heading, field, text of a row]
+// A row of a run with friction carries stick_points, slip_points and friction_residual together.
+function hasFrictionColumns(row) {
+  return typeof row.stick_points === "number";
+}
+
 function columnsFor(row) {
   const exact = typeof row.active_set_iterations === "number";
   const count = key => r => (typeof r[key] === "number" ? String(r[key]) : "");
@@ -244,6 +266,12 @@ function columnsFor(row) {
   columns.push(["yielded", "yielded_elements", count("yielded_elements")],
                ["N-L non-conv", "nonconverged_plastic", count("nonconverged_plastic")]);
   if (!exact) columns.push(["extrap.", "extrapolated", r => (r.extrapolated ? "yes" : "")]);
+  // Runs with friction: the points that stick and slip and the residual of Coulomb's law.
+  if (hasFrictionColumns(row)) {
+    columns.push(["stick", "stick_points", count("stick_points")], ["slip", "slip_points", count("slip_points")],
+                 ["friction residual", "friction_residual",
+                  r => (typeof r.friction_residual === "number" ? r.friction_residual.toExponential(2) : "")]);
+  }
   columns.push(["attempt", "attempt", count("attempt")], ["s", "seconds", fixed("seconds", 3)]);
   return columns;
 }
@@ -348,8 +376,23 @@ async function showJob(id) {
     $("#no-iterations").hidden = true;
   }
 
+  // The first row with friction columns after rows without (nothing touched yet): the table is
+  // drawn again with the friction columns, the earlier rows blank in them.
+  function addFrictionColumns(row) {
+    if (!columns || !hasFrictionColumns(row) || columns.some(([, field]) => field === "stick_points")) return;
+    const earlier = historyRows();
+    columns = null;
+    rows.clear();
+    rowData.clear();
+    $("#iterations thead tr").replaceChildren();
+    $("#iterations tbody").replaceChildren();
+    addHeader(row);
+    for (const r of earlier) addRow(r);
+  }
+
   function addRow(row) {
     if (rows.has(row.iteration)) return;
+    addFrictionColumns(row);
     addHeader(row);
     const tr = document.createElement("tr");
     tr.dataset.iteration = row.iteration;
@@ -400,6 +443,7 @@ async function showJob(id) {
     $("#links").replaceChildren(...[["model", base + "/model"], ["iterations", base + "/iterations"]]
       .concat(hasResult ? [["result (JSON)", base + "/result"], ["result (VTU for ParaView)", base + "/result.vtu"]] : [])
       .concat(hasResult && (hasGaps || hasContact()) ? [["contact pressure (CSV)", base + "/plots/contact_pressure.csv"]] : [])
+      .concat(hasResult && hasFriction() ? [["friction (CSV)", base + "/plots/friction.csv"]] : [])
       .map(([label, href]) => Object.assign(document.createElement("a"), { href: withToken(href), textContent: label })));
   }
 
@@ -407,6 +451,7 @@ async function showJob(id) {
   // table each, and the contact-pressure plot, which then draws them.
   let contact = [], contactAsked = false;
   const hasContact = () => contact.length > 0;
+  const hasFriction = () => contact.some(pairHasFriction);
   function loadContact(hasResult) {
     contactAsked = true;
     api(base + "/contact").then(answer => {
@@ -421,6 +466,12 @@ async function showJob(id) {
         $("#contact-plot").parentElement.hidden = false;
         if ($("#contact-plot").hidden) placeholder("#contact-plot", "drawing ...");
         loadPlot("#contact-plot", "contact_pressure", rowOptions());
+        // Pairs with friction: shear and mu x pressure along each, stick and slip zones.
+        if (hasFriction()) {
+          $("#friction-plot").parentElement.hidden = false;
+          if ($("#friction-plot").hidden) placeholder("#friction-plot", "drawing ...");
+          loadPlot("#friction-plot", "friction", {});
+        }
       }
     }).catch(() => { contactAsked = false; });
   }
@@ -429,6 +480,7 @@ async function showJob(id) {
   // and no larger than the screen needs (a 10^5-element SVG is tens of MB; its PNG is not).
   // [image, plot name, the options it takes]
   const plots = [["#contour-plot", () => $("#plot-field").value, contourOptions], ["#contact-plot", () => "contact_pressure", rowOptions],
+                 ["#friction-plot", () => "friction", () => ({})],
                  ["#closure-plot", () => "closure", rowOptions], ["#convergence-plot", () => "convergence", () => ({})]];
   let plotsShown = false;
 
@@ -457,7 +509,9 @@ async function showJob(id) {
   let hasGaps = true;
   const gapPlot = selector => selector === "#contact-plot" || selector === "#closure-plot";
   // A model without gaps has no gap plots; with contact surfaces, the contact plot draws those.
-  const noPlot = selector => gapPlot(selector) && !hasGaps && !(selector === "#contact-plot" && hasContact());
+  // The friction plot only for a result with a contact pair with friction.
+  const noPlot = selector => (gapPlot(selector) && !hasGaps && !(selector === "#contact-plot" && hasContact())) ||
+                             (selector === "#friction-plot" && !hasFriction());
 
   // A figure's placeholder says what the figure waits for (or why it cannot be drawn); it shows
   // whenever its picture does not.

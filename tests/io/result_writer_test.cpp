@@ -136,6 +136,11 @@ IterationRecord random_row(std::mt19937_64& rng, int iteration, std::size_t gaps
     r.contact_pairs = static_cast<int>(rng() % 100);
     r.complementarity = random_value(rng);
   }
+  if (iteration % 3 == 0) {  // a row of a run with friction: three more members
+    r.stick_points = static_cast<int>(rng() % 40);
+    r.slip_points = 1 + static_cast<int>(rng() % 40);
+    r.friction_residual = random_value(rng);
+  }
   return r;
 }
 
@@ -217,6 +222,13 @@ TEST(ResultWriter, ContactPairsAreWrittenForModelsWithContactOnly) {
   EXPECT_LT(text.find("\"gap\""), text.find("\"pressure\""));
   EXPECT_LT(text.find("\"analysis\""), text.find("\"contact\""));
   EXPECT_LT(text.find("\"contact\""), text.find("\"elements\""));
+  // A frictionless pair has no friction member (the document is as before friction existed) ...
+  EXPECT_FALSE(written["contact"][0].contains("friction"));
+  // ... a pair with friction gives its mu (the friction plot draws mu x pressure), first in the pair.
+  model.contact->pairs.push_back({{0, 1}, 0.3, std::nullopt});
+  const std::string with_friction = result_text(model, s);
+  EXPECT_EQ(nlohmann::json::parse(with_friction)["contact"][0]["friction"], 0.3);
+  EXPECT_LT(with_friction.find("\"friction\""), with_friction.find("\"points\""));
 }
 
 TEST(ResultWriter, FailedDocumentAndHistoryRowsMatchTheirTrees) {

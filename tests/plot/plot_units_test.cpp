@@ -5,6 +5,7 @@
 #include <cairo.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -222,7 +223,8 @@ TEST(RenderPlot, SmallDocumentDrawsEveryKindOfPlot) {
   }
   for (const std::string& name : plot_names()) {
     request.name = name;
-    if (name == "convergence") continue;  // two_squares has no history; see the next test
+    // two_squares has no history (see the next test) and no contact pairs (see FrictionPlot).
+    if (name == "convergence" || name == "friction") continue;
     for (const ImageFormat format : {ImageFormat::png, ImageFormat::svg}) {
       request.format = format;
       const std::string image = render_plot(document, request);
@@ -721,6 +723,142 @@ TEST(SurfaceContactPlot, ClosureAndContactPlotsOfSurfacesOnlyAreDrawnNotRefused)
   EXPECT_NE(render_table(both, request).find("pair,point,x"), std::string::npos);
 }
 
+
+/// Contact pairs with friction, hand-made: pair 1 (block / base, mu 0.25) along z = 1 from r = 0 to
+/// 4: two points stick (shear inside 0.25 p), two slip (shear on +0.25 p and on -0.25 p), the last
+/// is open; pair 2 (cap / rim) is frictionless; pair 3 (pin / hole, mu 0.5) sticks then slips.
+json friction_pairs() {
+  const auto point = [](double r, double z, double pressure, double shear, const char* state, double slip) {
+    return json{{"r", r}, {"z", z}, {"gap", 0.0}, {"pressure", pressure}, {"shear", shear}, {"state", state},
+                {"slip", slip}};
+  };
+  json block = json::array(), cap = json::array(), pin = json::array();
+  block.push_back(point(0.0, 1.0, 100.0, 10.0, "stick", 0.0));
+  block.push_back(point(1.0, 1.0, 100.0, 20.0, "stick", 0.0));
+  block.push_back(point(2.0, 1.0, 80.0, 20.0, "slip", 0.125));
+  block.push_back(point(3.0, 1.0, 50.0, -12.5, "slip", -0.25));
+  block.push_back(point(4.0, 1.0, 0.0, 0.0, "open", 0.0));
+  cap.push_back(point(5.0, 4.0, 30.0, 0.0, "stick", 0.0));
+  cap.push_back(point(6.0, 4.0, 20.0, 0.0, "stick", 0.0));
+  pin.push_back(point(6.0, 0.0, 40.0, 5.0, "stick", 0.0));
+  pin.push_back(point(6.0, 1.0, 20.0, 10.0, "slip", 0.5));
+  json document = two_contact_pairs();
+  document["title"] = "friction pairs";
+  document["contact"] = {{{"friction", 0.25}, {"surfaces", {"block", "base"}}, {"points", block}},
+                         {{"surfaces", {"cap", "rim"}}, {"points", cap}},
+                         {{"friction", 0.5}, {"surfaces", {"pin", "hole"}}, {"points", pin}}};
+  return document;
+}
+
+/// The value -> px map of a plot's y axis, from its "# ticks NAME:" note.
+double y_px(const std::string& csv, const std::string& panel, double value) {
+  const std::string key = "# ticks " + panel + ":";
+  const std::size_t at = csv.find(key);
+  EXPECT_NE(at, std::string::npos) << csv;
+  std::istringstream ticks(csv.substr(at + key.size(), csv.find('\n', at) - at - key.size()));
+  std::vector<std::pair<double, double>> marks;
+  for (std::string mark; ticks >> mark;) {
+    const std::size_t sep = mark.find('@');
+    marks.emplace_back(std::stod(mark.substr(0, sep)), std::stod(mark.substr(sep + 1)));
+  }
+  EXPECT_GE(marks.size(), 2U) << csv;
+  const auto [v0, p0] = marks.front();
+  const auto [v1, p1] = marks.back();
+  return p0 + (value - v0) * (p1 - p0) / (v1 - v0);
+}
+
+TEST(FrictionPlot, ShearAndTheCoulombBoundOfEachPairWithFriction) {
+  PlotRequest request;
+  request.name = "friction";
+  request.width = 800;
+  request.height = 600;
+  const std::string csv = render_table(friction_pairs(), request);
+  EXPECT_NE(csv.find("pair,point,x,r,z,pressure,shear,mu,mu_pressure,slip,state,px,py_shear,py_bound"), std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find("pairs (surfaces A / B, mu): 1 = block / base, mu 0.25; 2 = cap / rim, mu 0; 3 = pin / hole, mu 0.5;"),
+            std::string::npos) << csv;
+  EXPECT_NE(csv.find("x: arc length along side A [mm]"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("shear, mu_pressure = mu x pressure in MPa"), std::string::npos) << csv;
+  // The zones reach halfway to the neighbouring points; the open point has none.
+  EXPECT_NE(csv.find("# zones pair 1: stick 0..1.5 slip 1.5..3.5\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("# zones pair 3: stick 0..0.5 slip 0.5..1\n"), std::string::npos) << csv;
+  EXPECT_EQ(csv.find("zones pair 2"), std::string::npos) << csv;
+
+  // The frictionless pair is not drawn: 5 + 2 points.
+  const auto rows = csv_rows(csv);
+  ASSERT_EQ(rows.size(), 7U) << csv;
+  const auto first = [&rows](std::size_t row) {
+    std::string text;
+    for (std::size_t c = 0; c < 11; ++c) text += (c ? "," : "") + rows[row][c];
+    return text;
+  };
+  EXPECT_EQ(first(0), "1,1,0,0,1,100,10,0.25,25,0,stick");
+  EXPECT_EQ(first(2), "1,3,2,2,1,80,20,0.25,20,0.125,slip");
+  EXPECT_EQ(first(3), "1,4,3,3,1,50,-12.5,0.25,12.5,-0.25,slip");
+  EXPECT_EQ(first(4), "1,5,4,4,1,0,0,0.25,0,0,open");
+  EXPECT_EQ(first(6), "3,2,1,6,1,20,10,0.5,10,0.5,slip");
+  // A point slipping in the positive sense lies on the bound: its marker is where the bound's is.
+  EXPECT_EQ(rows[2][12], rows[2][13]);
+  EXPECT_NE(rows[0][12], rows[0][13]);  // a sticking point lies inside
+  // The y axis maps the shear: py_shear is the tick line's px for the shear's value.
+  EXPECT_NEAR(std::stod(rows[0][12]), y_px(csv, "shear", 10.0), 1e-6);
+
+  for (const ImageFormat format : {ImageFormat::png, ImageFormat::svg}) {
+    request.format = format;
+    EXPECT_GT(render_plot(friction_pairs(), request).size(), 1000U);
+  }
+}
+
+TEST(FrictionPlot, StickAndSlipZonesAreShadedAndPointsMarkedByState) {
+  // Pair 1 alone, so that no other pair's zones overlap it.
+  json document = friction_pairs();
+  document["contact"] = json::array({document["contact"][0]});
+  PlotRequest request;
+  request.name = "friction";
+  request.width = 800;
+  request.height = 600;
+  const std::string csv = render_table(document, request);
+  const std::string png = render_plot(document, request);
+  const auto rows = csv_rows(csv);
+  ASSERT_EQ(rows.size(), 5U) << csv;
+  const auto px = [&rows](std::size_t row) { return std::stod(rows[row][11]); };
+  // At shear -8 no curve passes over x = 0.5, 1.75 or 3.75 (the bounds are further out, the
+  // shear positive or near 0 there).
+  const double y = y_px(csv, "shear", -8.0);
+  const std::array<int, 3> stick = pixel(png, 0.5 * (px(0) + px(1)), y);
+  EXPECT_GT(stick[2], stick[0] + 20) << "stick zone, tinted blue: " << stick[0] << "," << stick[1] << "," << stick[2];
+  const std::array<int, 3> slip = pixel(png, px(1) + 0.75 * (px(2) - px(1)), y);
+  EXPECT_GT(slip[0], slip[2] + 40) << "slip zone, tinted orange: " << slip[0] << "," << slip[1] << "," << slip[2];
+  const std::array<int, 3> open = pixel(png, px(3) + 0.75 * (px(4) - px(3)), y);
+  EXPECT_GT(std::min({open[0], open[1], open[2]}), 245) << "open: no zone " << open[0] << "," << open[1] << "," << open[2];
+  // A sticking point is a filled dot in the pair's colour (red); a slipping one an open ring.
+  const std::array<int, 3> dot = pixel(png, px(0), std::stod(rows[0][12]));
+  EXPECT_GT(dot[0], dot[2] + 80) << dot[0] << "," << dot[1] << "," << dot[2];
+  const std::array<int, 3> ring = pixel(png, px(3), std::stod(rows[3][12]));
+  EXPECT_GT(std::min({ring[0], ring[1], ring[2]}), 200) << ring[0] << "," << ring[1] << "," << ring[2];
+}
+
+TEST(FrictionPlot, FrictionlessResultsAreRefusedClearly) {
+  PlotRequest request;
+  request.name = "friction";
+  request.width = 400;
+  request.height = 300;
+  // Contact pairs without friction (or friction 0), and no contact at all.
+  json frictionless = two_contact_pairs();
+  frictionless["contact"][0]["friction"] = 0.0;
+  for (const json& document : {frictionless, two_squares()}) {
+    try {
+      render_plot(document, request);
+      FAIL() << "no exception";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("no contact pair with friction > 0"), std::string::npos) << e.what();
+    }
+  }
+  // A friction plot does not run along a path; its result selection reads no mesh.
+  EXPECT_FALSE(result_selection_for(request).mesh);
+  request.path = PathOptions{};
+  EXPECT_THROW(render_plot(friction_pairs(), request), std::invalid_argument);
+}
 
 // ------------------------------------------------------------------------------ raster band fill
 /// The pixels of an ARGB32 surface, row by row.

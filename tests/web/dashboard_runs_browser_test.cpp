@@ -1,7 +1,8 @@
 // How the dashboard shows runs that are not the plain classic case, in headless Chromium against a
 // real `saasgaps serve`: a convergence that carries a warning, an exact-mode run, a job followed live
 // (placeholders, then its convergence drawn and redrawn while it runs), an assembly upload and a run
-// with contact surfaces (a table per pair and the contact-pressure plot).
+// with contact surfaces (a table per pair and the contact-pressure plot; with friction, its rows and
+// columns on hand-made data).
 // Screenshots land in build/tests/artifacts/.
 #include <gtest/gtest.h>
 
@@ -172,10 +173,12 @@ TEST_F(DashboardRuns, ARunningJobShowsPlaceholdersThenItsConvergenceLive) {
 
   Browser browser(dir / "chromium-profile");
   open_job(browser, server, job);
-  // Queued: every figure says what it waits for; no image, broken or not, is shown.
+  // Queued: every figure says what it waits for; no image, broken or not, is shown. The friction
+  // figure is for results with friction only: hidden here.
   ASSERT_EQ(get_json(client, path)["state"], "queued");
+  EXPECT_FALSE(browser.run("return document.querySelector('#friction-plot').parentElement.checkVisibility();").get<bool>());
   const json queued = browser.run(
-      "return [...document.querySelectorAll('.plots figure')].map(f => [!f.checkVisibility(),"
+      "return [...document.querySelectorAll('.plots figure:not(:has(#friction-plot))')].map(f => [!f.checkVisibility(),"
       " !f.querySelector('.placeholder').checkVisibility(), f.querySelector('.placeholder').textContent,"
       " !f.querySelector('img').checkVisibility()]);");
   ASSERT_EQ(queued.size(), 4U);
@@ -338,6 +341,41 @@ TEST_F(DashboardRuns, AContactRunShowsATablePerPairAndTheContactPressurePlot) {
   ASSERT_EQ(csv->status, 200) << csv->body;
   EXPECT_NE(csv->body.find("pair,point,x,r,z,pressure,gap,state"), std::string::npos) << csv->body;
   save_artifact("dashboard-contact-job.png", browser.screenshot());
+
+  // Frictionless: no friction rows in the pair's table, no friction figure, no friction columns.
+  EXPECT_EQ(table[0][4].dump().find("points slipping"), std::string::npos) << table[0][4];
+  EXPECT_FALSE(browser.run("return document.querySelector('#friction-plot').parentElement.checkVisibility();").get<bool>());
+  EXPECT_EQ(browser.run("return [...document.querySelectorAll('#iterations thead th')].some(h => h.textContent === 'stick');"),
+            false);
+  // A pair with friction (hand-made: no model gives one until the solver fills friction) gains mu,
+  // the points that stick and slip, the peak shear and the largest slip; a row with friction
+  // gains the stick, slip and residual columns.
+  const json friction = browser.run(
+      "const p = (r, pressure, shear, state, slip) => ({r, z: 1, gap: 0, pressure, shear, state, slip});"
+      "const pair = {friction: 0.25, surfaces: ['block', 'base'], points: [p(0, 100, 10, 'stick', 0),"
+      " p(1, 100, 20, 'stick', 0), p(2, 80, 20, 'slip', 0.125), p(3, 50, -22.5, 'slip', -0.25), p(4, 0, 0, 'open', 0)]};"
+      "const t = contactPairTable(pair, 0, {stress: 'MPa', length: 'mm'});"
+      "const value = key => t.querySelector(`tr[data-key=\"${key}\"] td`).textContent;"
+      "const row = {iteration: 3, active_set_iterations: 2, contact_pairs: 4, complementarity: 0, closed_gaps: 0,"
+      " stick_points: 2, slip_points: 2, friction_residual: 2.5e-14, attempt: 1, seconds: 0.1};"
+      "const columns = columnsFor(row);"
+      "return [value('friction'), value('sticking'), value('slipping'), value('peak-shear'), value('largest-slip'),"
+      " [...t.querySelectorAll('th')].map(h => h.textContent), columns.map(c => c[0]), columns.map(c => c[2](row))];");
+  EXPECT_EQ(friction[0], "0.25");
+  EXPECT_EQ(friction[1], "2");
+  EXPECT_EQ(friction[2], "2");
+  EXPECT_EQ(friction[3], "-22.500 at (3.0000, 1.0000)");
+  EXPECT_EQ(friction[4], "-0.2500 at (3.0000, 1.0000)");
+  EXPECT_NE(friction[5].dump().find("peak shear [MPa]"), std::string::npos) << friction[5];
+  EXPECT_NE(friction[5].dump().find("largest slip [mm]"), std::string::npos) << friction[5];
+  const json headings = friction[6], cells = friction[7];
+  const auto at = [&headings](const char* name) {
+    return static_cast<std::size_t>(std::find(headings.begin(), headings.end(), json(name)) - headings.begin());
+  };
+  ASSERT_LT(at("friction residual"), headings.size()) << headings;
+  EXPECT_EQ(cells[at("stick")], "2");
+  EXPECT_EQ(cells[at("slip")], "2");
+  EXPECT_EQ(cells[at("friction residual")], "2.50e-14");
 }
 
 }  // namespace
