@@ -187,42 +187,62 @@ class MasterSegments {
   }
 
   /// Calls found(near, reach, final) with the master segments near `box` inflated by `reach`, the
-  /// reach doubling each time, until found returns true or `near` holds every segment (final).
-  /// Without bins: once, with every segment.
+  /// reach doubling each time, until found returns true; after max_doublings, or once the box would
+  /// cover every segment, a last call (final) with every segment that may come within `line_reach`
+  /// of one of `lines` (SegmentBins::query), the only ones the caller can find: so a piece facing
+  /// nothing costs the bins its lines cross, not the whole side. Without bins: once, with every
+  /// segment (final).
   template <class F>
-  void search(const Box& box, double reach, F&& found) const {
+  void search(const Box& box, double reach, const SweptLines& lines, double line_reach, F&& found) const {
     if (!bins_) {
+      candidates_ += all_.size();
       found(std::span<const std::size_t>(all_), reach, true);
       return;
     }
-    for (;; reach *= 2.0) {
+    for (int doubling = 0; doubling < max_doublings; ++doubling, reach *= 2.0) {
       const Box query = box.inflated(reach);
+      if (query.contains(bins_->bounds())) break;
       bins_->query(query, near_);
-      const bool final = query.contains(bins_->bounds());
-      if (found(std::span<const std::size_t>(near_), reach, final) || final) return;
+      candidates_ += near_.size();
+      if (found(std::span<const std::size_t>(near_), reach, false)) return;
     }
+    bins_->query(lines, line_reach, near_);
+    candidates_ += near_.size();
+    found(std::span<const std::size_t>(near_), reach, true);
   }
   [[nodiscard]] const Box& box(std::size_t m) const { return boxes_[m]; }
   [[nodiscard]] bool searching() const { return bins_.has_value(); }
+  /// Master segments handed to the callers so far (each query's, summed).
+  [[nodiscard]] std::size_t candidates() const { return candidates_; }
 
  private:
+  /// Pieces facing B near them settle within a reach of one or two segment lengths; past this many
+  /// doublings the lines' own bins are cheaper than a box of 2^max_doublings segment lengths.
+  static constexpr int max_doublings = 4;
+
   std::vector<std::size_t> all_;
   std::vector<Box> boxes_;
   std::optional<SegmentBins> bins_;
   mutable std::vector<std::size_t> near_;
+  mutable std::size_t candidates_ = 0;
 };
 
 /// overlaps() against the whole master side, found by a search: a query box round the slave segment,
 /// inflated until every piece of [0, 1] is settled. A piece is settled when its master segment lies
 /// inside the query box: another segment nearer along n(xi) would cross the line from x(xi) to that
 /// hit, which lies in the box (convex), so its bounding box overlaps the query's and it was a
-/// candidate. Pieces facing nothing are settled only by a query over the whole master side.
+/// candidate. Pieces facing nothing are settled by the final query, of every segment that meets one of
+/// the slave segment's normal lines (only those can face it: overlaps() projects along them).
 std::vector<Overlap> facing_pieces(const std::vector<Node>& nodes, const Vec2& x1, const Vec2& x2, const Vec2& n1,
                                    const Vec2& n2, const Vec2& ns, const MasterSegments& master_segments,
                                    const ContactSurface& master) {
   std::vector<Overlap> pieces;
   const Box box = box_of(x1, x2);
-  master_segments.search(box, (x2 - x1).norm(), [&](std::span<const std::size_t> near, double reach, bool final) {
+  const double length = (x2 - x1).norm();
+  // A master end exactly on a line is found with a margin of round-off's order.
+  const double margin = 1e3 * parameter_round_off * length;
+  master_segments.search(box, length, SweptLines{x1, x2, n1, n2}, margin,
+                         [&](std::span<const std::size_t> near, double reach, bool final) {
     pieces = overlaps(nodes, x1, x2, n1, n2, ns, master, near);
     if (final) return true;
     const Box query = box.inflated(reach);
@@ -313,10 +333,12 @@ class SmoothCurve {
     // A curve segment lies within its chord's box inflated by max |w| <= bend_; one meeting the line
     // nearer than the best hit so far comes within |t| of x. So a hit with |t| <= reach settles it.
     std::optional<double> best;
-    segments.search(box_of(x, x), 2.0 * bend_ + length_, [&](std::span<const std::size_t> near, double reach, bool) {
-      best = nearest(x, n, near);
-      return best && std::abs(*best) + bend_ <= reach;
-    });
+    // The final query: chords within bend_ (their curves' largest offset) of the line.
+    segments.search(box_of(x, x), 2.0 * bend_ + length_, SweptLines{x, x, n, n}, bend_ + length_ * 1e-9,
+                    [&](std::span<const std::size_t> near, double reach, bool) {
+                      best = nearest(x, n, near);
+                      return best && std::abs(*best) + bend_ <= reach;
+                    });
     return best;
   }
 
@@ -420,7 +442,7 @@ double MortarRows::gap(std::size_t row, std::span<const double> displacement) co
 }
 
 MortarRows mortar_rows(const std::vector<Node>& nodes, const SurfaceMeasure& measure, const ContactSurface& slave,
-                       const ContactSurface& master, Pairing pairing) {
+                       const ContactSurface& master, Pairing pairing, std::size_t* candidate_checks) {
   const MasterSegments master_segments(nodes, master, pairing);
   // Normals: the nodal (averaged) normals of A, interpolated along each segment. Segment normals would
   // jump at A's nodes: near a convex node of a curved A the two segments' normals fan apart and leave
@@ -521,6 +543,7 @@ MortarRows mortar_rows(const std::vector<Node>& nodes, const SurfaceMeasure& mea
     rows.weight.push_back(D[j]);
     rows.start.push_back(rows.node.size());
   }
+  if (candidate_checks != nullptr) *candidate_checks += master_segments.candidates();
   return rows;
 }
 

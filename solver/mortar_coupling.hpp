@@ -100,11 +100,15 @@ inline constexpr double min_covered_fraction = 1.0e-3;
 /// initial gap is large just never becomes active. Nodes of A that face nothing give no row.
 ///
 /// Pairing: master segments are found by a search over bins (segment_bins.hpp), O(1) per slave
-/// segment and node where the sides face each other; all_against_all tries every master segment
-/// (the reference the search is tested against: both give the same rows).
+/// segment and node where the sides face each other, and the bins its normal lines cross where a
+/// piece faces nothing; all_against_all tries every master segment (the reference the search is
+/// tested against: both give the same rows).
 enum class Pairing { search, all_against_all };
 
+/// candidate_checks (optional): add the number of master segments the pairing examined (a segment
+/// examined for several slave segments or nodes counts each time).
 MortarRows mortar_rows(const std::vector<Node>& nodes, const SurfaceMeasure& measure, const ContactSurface& slave,
-                       const ContactSurface& master, Pairing pairing = Pairing::search);
+                       const ContactSurface& master, Pairing pairing = Pairing::search,
+                       std::size_t* candidate_checks = nullptr);
 
 }  // namespace saasgaps

@@ -72,8 +72,19 @@ std::vector<ContactPairResult> contact_pair_results(const Model& model, const Su
       result.surfaces[static_cast<std::size_t>(side)] =
           model.contact->surfaces[static_cast<std::size_t>(pair.surfaces[static_cast<std::size_t>(side)])].name;
     }
+    // Side A's nodes: the resultant sums what the rows put on them (ContactPairResult::force).
+    const ContactSurface& side_a = surfaces.surfaces[static_cast<std::size_t>(pair.surfaces[0])];
+    std::vector<int> on_a(side_a.nodes.begin(), side_a.nodes.end());
+    std::sort(on_a.begin(), on_a.end());
     for (std::size_t i = surfaces.first[k]; i < surfaces.first[k + 1]; ++i) {
       const ContactPair& row = surfaces.pairs.pairs[i];
+      if (solved) {
+        for (std::size_t e = 0; e < row.node.size(); ++e) {
+          if (std::binary_search(on_a.begin(), on_a.end(), row.node[e])) {
+            result.force += contact.force[offset + i] * row.coefficient(e);
+          }
+        }
+      }
       const Node& node = model.nodes[static_cast<std::size_t>(row.node[0])];
       ContactPointResult point;
       point.r = node.r;

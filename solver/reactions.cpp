@@ -59,4 +59,10 @@ std::vector<NodeReaction> support_reactions(const Model& model, const DofMap& do
   return reactions;
 }
 
+Vec2 reaction_sum(std::span<const NodeReaction> reactions) {
+  Vec2 sum = Vec2::Zero();
+  for (const NodeReaction& r : reactions) sum += Vec2(r.f_r, r.f_z);
+  return sum;
+}
+
 }  // namespace saasgaps

@@ -29,4 +29,9 @@ std::vector<NodeReaction> support_reactions(const Model& model, const DofMap& do
                                             std::span<const double> displacement,
                                             std::span<const double> contact_forces);
 
+/// The reactions summed per direction, (sum f_r, sum f_z) in force units, in node order (so the same
+/// bits wherever it is summed). In equilibrium it balances the applied loads: in plane analyses both
+/// components, in axisymmetric ones f_z (docs/results.md).
+Vec2 reaction_sum(std::span<const NodeReaction> reactions);
+
 }  // namespace saasgaps

@@ -95,6 +95,13 @@ struct ContactPointResult {
 struct ContactPairResult {
   std::array<std::string, 2> surfaces;  ///< names of sides A and B
   std::vector<ContactPointResult> points;
+  /// The resultant force (f_r, f_z) that side B exerts on side A, in force units (plane analyses on
+  /// the whole thickness, axisymmetric ones on the full ring, like nodal forces):
+  ///   force = sum over the pair's rows j, and their entries k on a node of A, of lambda_j c_jk / D_j,
+  /// the forces the rows put on A's nodes (lambda_j the multiplier, a force: mortar_method.hpp). A
+  /// rigid translation leaves every gap unchanged, so each row's coefficients sum to zero and B feels
+  /// -force. Zero before the first solve and for a pair that never touches.
+  Vec2 force = Vec2::Zero();
 };
 
 /// The heat conduction of a thermal run (thermal_analysis.hpp).

@@ -4,6 +4,7 @@
 #include "io/history_json.hpp"
 #include "load_schedule.hpp"
 #include "io/result_annotations.hpp"
+#include "reactions.hpp"
 
 namespace saasgaps::io {
 
@@ -79,11 +80,16 @@ void write_gap(JsonWriter& out, const Model& model, const GapElement& gap, const
   out.field("sigma_m", g.sigma_m).field("state", to_string(g.state)).end_object();
 }
 
-/// A contact pair: its Coulomb coefficient (pairs with friction > 0 only: frictionless results are
-/// written as before friction existed), its surfaces [A, B] and its points along A (keys in
-/// alphabetical order). The plots draw mu x pressure from the friction written here.
+/// {"fr": f.x(), "fz": f.y()}: a force in the (r, z) plane.
+void write_force(JsonWriter& out, const Vec2& f) { out.begin_object().field("fr", f.x()).field("fz", f.y()).end_object(); }
+
+/// A contact pair: the force B exerts on A, its Coulomb coefficient (pairs with friction > 0 only:
+/// frictionless results are written as before friction existed), its surfaces [A, B] and its
+/// points along A (keys in alphabetical order). The plots draw mu x pressure from the friction
+/// written here.
 void write_contact_pair(JsonWriter& out, const ContactPairResult& pair, double friction) {
-  out.begin_object();
+  out.begin_object().key("force");
+  write_force(out, pair.force);
   if (friction > 0.0) out.field("friction", friction);
   out.key("points").begin_array();
   for (const ContactPointResult& p : pair.points) {
@@ -138,6 +144,8 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s) {
   const std::vector<double>& T = s.thermal ? s.thermal->T : final_loads(model).node_temperature;
   for (std::size_t n = 0; n < s.nodes.size(); ++n) write_node(out, model, s.nodes[n], n, T[n]);
   out.end_array();
+  out.key("reaction_sum");
+  write_force(out, reaction_sum(s.reactions));
   out.key("reactions").begin_array();
   for (const NodeReaction& r : s.reactions) {
     out.begin_object().field("fr", r.f_r).field("fz", r.f_z).field("node", r.id).end_object();

@@ -1,16 +1,18 @@
 #pragma once
 /// The result document of model-format.md, written as a stream (io/json_writer.hpp): status,
-/// history, node displacements, element stresses and strains, gap states, support reactions
-/// ({fr, fz, node} per constrained node; empty when nothing was solved). Additions to the
+/// history, node displacements, element stresses and strains, gap states, contact pairs, support
+/// reactions ({fr, fz, node} per constrained node; empty when nothing was solved). Additions to the
 /// contract, so that a result stands on its own for plotting and export: node coordinates r, z and
 /// temperature T; element corner node ids, material id and temperature; gap corner node ids and
 /// angle (M axis); title, analysis, reference_temperature; units (the model's unit names, when it
 /// gives any) and each gap's contact_pressure (io/result_annotations.hpp); in each history row,
-/// gap_closures (every gap's closure, model order).
+/// gap_closures (every gap's closure, model order); reaction_sum ({fr, fz}: the reactions summed per
+/// direction); each contact pair's force ({fr, fz}: what side B exerts on side A).
 ///
 /// Every object's members are in alphabetical order (byte order: "T" before "id"), as the tree
 /// writer this replaces printed them, so the text is the same: analysis, elements, gaps, history,
-/// iterations, message, nodes, reactions, reference_temperature, status, title, units. Nothing but the writer's
+/// iterations, message, nodes, reaction_sum, reactions, reference_temperature, status, title, units
+/// ("_" sorts before "s"). Nothing but the writer's
 /// 64 KiB buffer is held: the document never exists as a tree.
 
 #include <string>

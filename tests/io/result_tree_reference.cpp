@@ -82,7 +82,12 @@ json result_document(const Model& model, const Solution& s) {
   json gaps = json::array();
   for (std::size_t g = 0; g < s.gaps.size(); ++g) gaps.push_back(gap_json(model, model.gaps->elements[g], s.gaps[g]));
   json reactions = json::array();
-  for (const NodeReaction& r : s.reactions) reactions.push_back({{"node", r.id}, {"fr", r.f_r}, {"fz", r.f_z}});
+  double sum_r = 0.0, sum_z = 0.0;  // in node order, as the writer sums them
+  for (const NodeReaction& r : s.reactions) {
+    reactions.push_back({{"node", r.id}, {"fr", r.f_r}, {"fz", r.f_z}});
+    sum_r += r.f_r;
+    sum_z += r.f_z;
+  }
   json document = {{"status", s.status == RunStatus::converged ? "converged" : "not_converged"},
           {"iterations", s.iterations},
           {"message", s.message},
@@ -92,6 +97,7 @@ json result_document(const Model& model, const Solution& s) {
           {"history", history},
           {"nodes", nodes},
           {"reactions", reactions},
+          {"reaction_sum", {{"fr", sum_r}, {"fz", sum_z}}},
           {"elements", elements},
           {"gaps", gaps}};
   // The model's unit names, only those given; no member when it gives none.

@@ -209,11 +209,15 @@ TEST(ResultWriter, ContactPairsAreWrittenForModelsWithContactOnly) {
   pair.surfaces = {"shaft", "hub"};
   pair.points.push_back({1.5, 0.25, 0.0, 1234.5, 0.0, 0.0, ContactPointState::stick});
   pair.points.push_back({1.5, 0.5, 0.002, 0.0, 0.0, 0.0, ContactPointState::open});
+  pair.force = Vec2(-0.25, 4321.5);
   s.contact = {pair};
+  s.reactions = {{7, 1.5, -2.0}, {9, 0.25, 8.0}};
   const std::string text = result_text(model, s);
   const nlohmann::json written = nlohmann::json::parse(text);
   ASSERT_EQ(written["contact"].size(), 1u);
   EXPECT_EQ(written["contact"][0]["surfaces"], (nlohmann::json{"shaft", "hub"}));
+  EXPECT_EQ(written["contact"][0]["force"], (nlohmann::json{{"fr", -0.25}, {"fz", 4321.5}}));
+  EXPECT_EQ(written["reaction_sum"], (nlohmann::json{{"fr", 1.75}, {"fz", 6.0}}));
   EXPECT_EQ(written["contact"][0]["points"][0],
             (nlohmann::json{{"r", 1.5}, {"z", 0.25}, {"gap", 0.0}, {"pressure", 1234.5}, {"shear", 0.0},
                             {"slip", 0.0}, {"state", "stick"}}));
@@ -222,6 +226,8 @@ TEST(ResultWriter, ContactPairsAreWrittenForModelsWithContactOnly) {
   EXPECT_LT(text.find("\"gap\""), text.find("\"pressure\""));
   EXPECT_LT(text.find("\"analysis\""), text.find("\"contact\""));
   EXPECT_LT(text.find("\"contact\""), text.find("\"elements\""));
+  EXPECT_LT(text.find("\"force\""), text.find("\"points\""));
+  EXPECT_LT(text.find("\"reaction_sum\""), text.find("\"reactions\""));
   // A frictionless pair has no friction member (the document is as before friction existed) ...
   EXPECT_FALSE(written["contact"][0].contains("friction"));
   // ... a pair with friction gives its mu (the friction plot draws mu x pressure), first in the pair.

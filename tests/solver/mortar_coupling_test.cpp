@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 
@@ -524,6 +525,37 @@ TEST(MortarRows, TheSearchFindsWhatAllAgainstAllFindsOnRandomChains) {
     }
   }
   EXPECT_GT(rows, 1000U);  // the trials pair something
+}
+
+/// Master segments examined by the pairing of two long chains that never face each other: two
+/// blocks `segments` long stacked 1 apart, A the upper block's top (facing +z, away from B), B the
+/// lower block's top. Every normal line of A crosses B, but B faces the same way.
+std::size_t candidate_checks_facing_away(int segments, Pairing pairing) {
+  const testing::StackedBlocks b = testing::stacked_blocks(AnalysisType::plane_strain, 0.0, static_cast<double>(segments),
+                                                           1.0, 1.0, BlockFace{segments, 1.0}, BlockFace{segments, 1.0}, 1);
+  const ContactSurface a = contact_surface(b.model, testing::row_edges(b.upper, 1));
+  const ContactSurface master = contact_surface(b.model, b.lower_top);
+  std::size_t checks = 0;
+  const MortarRows rows = mortar_rows(b.model.nodes, measure_of(b.model), a, master, pairing, &checks);
+  EXPECT_EQ(rows.size(), 0U);
+  return checks;
+}
+
+TEST(MortarRows, ASegmentFacingNothingExaminesOnlyTheBinsItsNormalLinesCross) {
+  // All against all examines every segment of B for every segment of A: n^2. A search that widened
+  // its box until it covered B did the same for a segment facing nothing. The search examines a
+  // bounded number per segment of A (its box doubled a few times, then the bins its normal lines
+  // cross), the same at 100 and at 800 segments.
+  const std::size_t all = candidate_checks_facing_away(100, Pairing::all_against_all);
+  EXPECT_EQ(all, 100U * 100U);
+  const std::size_t small = candidate_checks_facing_away(100, Pairing::search);
+  const std::size_t large = candidate_checks_facing_away(800, Pairing::search);
+  std::printf("segments facing nothing: %.1f and %.1f master segments examined per slave segment (100, 800)\n",
+              static_cast<double>(small) / 100.0, static_cast<double>(large) / 800.0);
+  // About 40 per segment at both sizes (the box's four doublings reach B at a distance of 2
+  // lengths; then the 3 or 4 bins its lines cross): 1/20 of all against all at 800.
+  EXPECT_LE(static_cast<double>(large) / 800.0, 1.05 * static_cast<double>(small) / 100.0);
+  EXPECT_LT(large, 50U * 800U);
 }
 
 }  // namespace

@@ -25,6 +25,13 @@ double plane_strain_interference_pressure(const RingPair& k, double interference
   return interference / (inner + outer);
 }
 
+double plane_stress_interference_pressure(const RingPair& k, double interference) {
+  const double b2 = k.b * k.b;
+  const double inner = k.b * ((1.0 - k.nu_in) * b2 + (1.0 + k.nu_in) * k.a * k.a) / (k.E_in * (b2 - k.a * k.a));
+  const double outer = k.b * ((1.0 - k.nu_out) * b2 + (1.0 + k.nu_out) * k.c * k.c) / (k.E_out * (k.c * k.c - b2));
+  return interference / (inner + outer);
+}
+
 void expect_contact(const Model& m, const Solution& s, double tolerance) {
   ASSERT_EQ(s.status, RunStatus::converged) << s.message;
   const double closure_tolerance = m.gaps->closure_tolerance;

@@ -38,4 +38,16 @@ struct RingPair {
 };
 double plane_strain_interference_pressure(const RingPair& rings, double interference);
 
+/// The same fit in plane stress (thin rings, sigma_z = 0). Lame's stresses are those of plane strain,
+/// sigma_r = A - B / r^2, sigma_theta = A + B / r^2 (equilibrium and compatibility alone fix them);
+/// only the strain law changes, eps_theta = (sigma_theta - nu sigma_r) / E, so
+///   u = r eps_theta = r / E [(1 - nu) A + (1 + nu) B / r^2].
+/// Inner ring under external pressure p: A = -p b^2 / (b^2 - a^2), B = A a^2, so u_in(b) = -p C_in;
+/// outer ring under internal pressure p: A = p b^2 / (c^2 - b^2), B = A c^2, so u_out(b) = p C_out:
+///   C_in  = b [(1 - nu_in)  b^2 + (1 + nu_in)  a^2] / (E_in  (b^2 - a^2)),
+///   C_out = b [(1 - nu_out) b^2 + (1 + nu_out) c^2] / (E_out (c^2 - b^2)),
+/// and again p = interference / (C_in + C_out). (Plane strain is this with E -> E / (1 - nu^2),
+/// nu -> nu / (1 - nu): C_in then becomes the plane-strain form above.)
+double plane_stress_interference_pressure(const RingPair& rings, double interference);
+
 }  // namespace saasgaps::testing::lame_rings

@@ -7,13 +7,10 @@
 namespace saasgaps::testing::shrink_fit_rings {
 
 double lame_interference_pressure(AnalysisType type) {
-  // Plane strain and the axisymmetric slice held in z share lame_rings' closed form.
-  if (type != AnalysisType::plane_stress) {
-    return lame_rings::plane_strain_interference_pressure({a1, b, b2, E1, nu1, E2, nu2}, delta);
-  }
-  const double Ci = b * ((1 - nu1) * b * b + (1 + nu1) * a1 * a1) / (E1 * (b * b - a1 * a1));
-  const double Co = b * ((1 - nu2) * b * b + (1 + nu2) * b2 * b2) / (E2 * (b2 * b2 - b * b));
-  return delta / (Ci + Co);
+  // Plane strain and the axisymmetric slice held in z share lame_rings' plane-strain closed form.
+  const lame_rings::RingPair rings{a1, b, b2, E1, nu1, E2, nu2};
+  return type == AnalysisType::plane_stress ? lame_rings::plane_stress_interference_pressure(rings, delta)
+                                            : lame_rings::plane_strain_interference_pressure(rings, delta);
 }
 
 Model shrink_fit(AnalysisType type, int radial, std::array<int, 2> around) {

@@ -29,7 +29,8 @@ namespace saasgaps::testing::shrink_fit_rings {
 constexpr double a1 = 1.0, b = 1.5, b2 = 2.2, delta = 1.5e-4;
 constexpr double E1 = 30.0e6, nu1 = 0.3, E2 = 10.0e6, nu2 = 0.33;
 
-/// Lame's interface pressure p = delta / (C_i + C_o) (plane strain also for the axisymmetric slice).
+/// Lame's interface pressure p = delta / (C_i + C_o) (lame_rings.hpp; plane strain also for the
+/// axisymmetric slice).
 double lame_interference_pressure(AnalysisType type);
 
 /// The shrink fit, the two rings meshed on their own (`radial` elements through each, `around` the

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "element_kernel.hpp"
+
 namespace saasgaps::testing {
 
 std::vector<std::array<int, 2>> row_edges(const Grid& grid, int j) {
@@ -14,6 +16,17 @@ std::vector<std::array<int, 2>> column_edges(const Grid& grid, int i) {
   std::vector<std::array<int, 2>> edges;
   for (int j = 0; j < grid.nj; ++j) edges.push_back({grid.at(i, j), grid.at(i, j + 1)});
   return edges;
+}
+
+void add_traction(Model& model, const std::vector<std::array<int, 2>>& edges, const Vec2& traction) {
+  const auto position = [&model](int node) {
+    const Node& n = model.nodes[static_cast<std::size_t>(node)];
+    return Vec2(n.r, n.z);
+  };
+  for (const auto& e : edges) {
+    const auto loads = edge_traction_loads(position(e[0]), position(e[1]), traction, model.analysis, model.thickness);
+    for (std::size_t k = 0; k < 2; ++k) model.loads.nodal_forces.push_back({e[k], loads[k].x(), loads[k].y()});
+  }
 }
 
 StackedBlocks stacked_blocks(AnalysisType analysis, double r0, double width, double height, double gap,
