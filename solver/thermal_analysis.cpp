@@ -7,6 +7,7 @@
 #include "contact_conductance.hpp"
 #include "sparse_cholesky.hpp"
 #include "thermal_system.hpp"
+#include "transient_coupling.hpp"
 
 namespace saasgaps {
 
@@ -134,10 +135,14 @@ ThermalResult solve_steady_conduction(const Model& model, std::span<const double
   throw SolverError(text.str());
 }
 
-ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance) {
+ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance,
+                                         std::span<const double> contact_conductance, const OutputTimeHook& at_output) {
   const Thermal& thermal = *model.thermal;
   ConductionSolver solver(model);
   const ThermalSystem& system = solver.system();
+  InterfaceConductances H{{gap_conductance.begin(), gap_conductance.end()},
+                          {contact_conductance.begin(), contact_conductance.end()}};
+  if (H.pairs.empty()) H.pairs = system.contact().conductances({});
   std::vector<double> T(model.nodes.size(), thermal.initial_temperature);
   ThermalResult result;
   // Times count whole steps from the last output time (no drift from summing dt), so every full
@@ -145,18 +150,23 @@ ThermalResult solve_transient_conduction(const Model& model, std::span<const dou
   const double step = thermal.time_step;
   const double sliver = 1.0e-9 * step;
   double t = 0.0;
-  for (const double output : thermal.output_times) {
+  for (std::size_t k = 0; k < thermal.output_times.size(); ++k) {
+    const double output = thermal.output_times[k];
     const double start = t;
     for (long taken = 1; output - t > sliver; ++taken) {
       const double remaining = output - t;
       const double dt = std::abs(remaining - step) <= sliver ? step : std::min(step, remaining);
-      T = solver.solve(system.conductivities(T), 1.0 / dt, T, gap_conductance, {});
+      T = solver.solve(system.conductivities(T), 1.0 / dt, T, H.gaps, H.pairs);
       t = remaining - dt <= sliver ? output : start + static_cast<double>(taken) * step;
       ++result.time_steps;
     }
     t = output;
     result.times.push_back(output);
     result.history.push_back(T);
+    if (!at_output) continue;
+    std::optional<InterfaceConductances> next = at_output(k, T);
+    if (!next) break;
+    H = std::move(*next);
   }
   result.factorizations = solver.factorizations();
   result.flux = system.fluxes(system.conductivities(T), T);
@@ -194,10 +204,7 @@ Solution solve_with_heat(const Model& model, IterationObserver* observer, const 
   std::vector<double> H = gap_conductances(model, {});
   const ContactConductance pairs(model);
   if (model.thermal->type == ThermalType::transient) {
-    if (!H.empty() || pairs.row_count() > 0) {
-      throw SolverError("conduction across gap elements and contact pairs is solved for steady runs only; a "
-                        "transient run with a conductance is not supported yet");
-    }
+    if (!H.empty() || pairs.row_count() > 0) return solve_coupled_transient(model, observer, resume, options, cache, contact);
     ThermalResult heat = solve_transient_conduction(model);
     Solution s = solve(with_temperature_steps(model, heat), observer, resume, options, cache, contact);
     s.thermal = std::move(heat);

@@ -282,18 +282,6 @@ void SectionReader::read_thermal(const Obj& root) {
     if (!model_.steps.empty()) {
       report("/steps", "a transient thermal run makes its load steps itself, one per output time; remove steps");
     }
-    if (model_.gaps && model_.gaps->conductance) {
-      report("/gaps/conductance", "conduction across gap elements is solved in steady thermal runs only (not yet in "
-                                  "transient ones); remove it or make the run steady");
-    }
-    if (model_.contact) {
-      for (std::size_t i = 0; i < model_.contact->pairs.size(); ++i) {
-        if (!model_.contact->pairs[i].conductance) continue;
-        report("/contact/pairs/" + std::to_string(i) + "/conductance",
-               "conduction across contact pairs is solved in steady thermal runs only (not yet in transient "
-               "ones); remove it or make the run steady");
-      }
-    }
   }
   if (type) check_thermal_materials(thermal);
   model_.thermal = std::move(thermal);
