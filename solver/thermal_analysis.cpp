@@ -44,9 +44,11 @@ class ConductionSolver {
   [[nodiscard]] const ThermalSystem& system() const { return system_; }
   [[nodiscard]] int factorizations() const { return factorizations_; }
 
+  /// current: where radiating edges are linearized (ThermalSystem::assemble).
   std::vector<double> solve(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
-                            std::span<const double> gap_conductance, std::span<const double> contact_conductance) {
-    system_.assemble(k, inverse_dt, previous, gap_conductance, contact_conductance, values_, rhs_);
+                            std::span<const double> gap_conductance, std::span<const double> contact_conductance,
+                            std::span<const double> current) {
+    system_.assemble(k, inverse_dt, previous, gap_conductance, contact_conductance, current, values_, rhs_);
     if (values_ != factored_) {
       try {
         cholesky_.factorize(values_);
@@ -114,11 +116,13 @@ ThermalResult solve_steady_conduction(const Model& model, std::span<const double
   ThermalResult result;
   double change = 0.0;
   for (int pass = 1; pass <= max_conduction_iterations; ++pass) {
-    std::vector<double> next = solver.solve(k, 0.0, {}, gap_conductance, contact_conductance);
+    std::vector<double> next = solver.solve(k, 0.0, {}, gap_conductance, contact_conductance, T);
     change = largest_change(next, T);
     T = std::move(next);
     std::vector<Conductivity> k_next = system.conductivities(T);
-    const bool settled = same_conductivities(k_next, k) || change <= steady_tolerance * (1.0 + largest_magnitude(T));
+    // Radiation is linearized at T: only a change below the tolerance ends its iteration.
+    const bool settled = (same_conductivities(k_next, k) && !system.radiates()) ||
+                         change <= steady_tolerance * (1.0 + largest_magnitude(T));
     if (settled) {
       result.iterations = pass;
       result.factorizations = solver.factorizations();
@@ -130,7 +134,7 @@ ThermalResult solve_steady_conduction(const Model& model, std::span<const double
   }
   std::ostringstream text;
   text << "the steady conduction did not converge in " << max_conduction_iterations
-       << " passes of the k(T) iteration: the last changed a node temperature by " << change
+       << " passes of the k(T) and radiation iteration: the last changed a node temperature by " << change
        << " (a conductivity that varies too steeply with T)";
   throw SolverError(text.str());
 }
@@ -156,7 +160,20 @@ ThermalResult solve_transient_conduction(const Model& model, std::span<const dou
     for (long taken = 1; output - t > sliver; ++taken) {
       const double remaining = output - t;
       const double dt = std::abs(remaining - step) <= sliver ? step : std::min(step, remaining);
-      T = solver.solve(system.conductivities(T), 1.0 / dt, T, H.gaps, H.pairs);
+      // Radiating edges: Newton on the step's nonlinear system from the previous temperatures.
+      std::vector<double> guess = T;
+      for (int pass = 1;; ++pass) {
+        std::vector<double> next = solver.solve(system.conductivities(T), 1.0 / dt, T, H.gaps, H.pairs, guess);
+        const double change = largest_change(next, guess);
+        guess = std::move(next);
+        if (!system.radiates() || change <= steady_tolerance * (1.0 + largest_magnitude(guess))) break;
+        if (pass == max_conduction_iterations) {
+          throw SolverError("the radiation did not converge in a time step ending at t = " + std::to_string(t + dt) +
+                            ": the last of " + std::to_string(pass) + " Newton passes changed a node temperature by " +
+                            std::to_string(change));
+        }
+      }
+      T = std::move(guess);
       t = remaining - dt <= sliver ? output : start + static_cast<double>(taken) * step;
       ++result.time_steps;
     }

@@ -1421,6 +1421,33 @@ TEST(ModelReaderRules, ThermalBoundaryEntriesAreWellFormed) {
   EXPECT_TRUE(rejects(with(with_thermal(), "/thermal/sources/0/material", 7), "/thermal/sources/0/material", {"7"}));
 }
 
+TEST(ModelReaderRules, RadiationNeedsEmissivityAmbientAndTheStefanBoltzmannConstant) {
+  const json radiating = with(with_thermal(), "/thermal/boundary/1",
+                              json::parse(R"({"edges": [[3, 2]], "emissivity": 0.8, "ambient": 300,
+                                              "stefan_boltzmann": 5.670374e-8})"));
+  const Model read = read_model(radiating);
+  const ThermalBoundary& b = read.thermal->boundary[1];
+  EXPECT_EQ(b.kind, ThermalBoundary::Kind::radiation);
+  EXPECT_DOUBLE_EQ(b.value, 0.8 * 5.670374e-8);
+  EXPECT_EQ(b.ambient, 300.0);
+  EXPECT_TRUE(rejects(without(radiating, "/thermal/boundary/1/stefan_boltzmann"), "/thermal/boundary/1",
+                      {"stefan_boltzmann", "5.670374e-8"}));
+  EXPECT_TRUE(rejects(without(radiating, "/thermal/boundary/1/ambient"), "/thermal/boundary/1", {"ambient", "T^4"}));
+  EXPECT_TRUE(rejects(with(radiating, "/thermal/boundary/1/emissivity", 1.5), "/thermal/boundary/1/emissivity",
+                      {"1.5"}));
+  EXPECT_TRUE(rejects(with(radiating, "/thermal/boundary/1/ambient", -10), "/thermal/boundary/1/ambient", {"-10"}));
+  EXPECT_TRUE(rejects(with(radiating, "/thermal/boundary/1/stefan_boltzmann", 0), "/thermal/boundary/1/stefan_boltzmann",
+                      {"0"}));
+  EXPECT_TRUE(rejects(with(with_thermal(), "/thermal/boundary/2/stefan_boltzmann", 1e-8),
+                      "/thermal/boundary/2/stefan_boltzmann", {"radiation"}));
+  EXPECT_TRUE(rejects(with(radiating, "/thermal/boundary/1/film", 2), "/thermal/boundary/1", {"exactly one"}));
+  // Radiation holds the level of a steady run as a film does.
+  json only_radiation = radiating;  // the radiation and a flux left
+  only_radiation["thermal"]["boundary"].erase(0);
+  ASSERT_EQ(only_radiation["thermal"]["boundary"].size(), 2u);
+  EXPECT_NO_THROW((void)read_model(only_radiation));
+}
+
 TEST(ModelReaderRules, ContactConductanceIsReadInTransientRunsToo) {
   json m = transient(with_thermal());
   m["contact"] = json::parse(R"({

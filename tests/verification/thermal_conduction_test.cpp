@@ -472,3 +472,73 @@ TEST(ThermalGaps, TemperaturesAndContactAreIteratedTogetherToAFixedPoint) {
 
 }  // namespace
 }  // namespace saasgaps
+
+namespace saasgaps {
+namespace {
+
+// Radiation. A plane slab 0 < x < L held at T0 on x = 0 and radiating to an ambient Ta on x = L
+// (other edges insulated; temperatures absolute): the steady T is linear, and the heat conducted
+// through the slab leaves by radiation, k (T0 - T_L) / L = e sigma (T_L^4 - Ta^4), a quartic in T_L
+// with one root between Ta and T0 (the left side falls, the right side rises), found by bisection.
+struct RadiatingSlab {
+  double L = 0.5, k = 20.0, T0 = 1200.0, Ta = 300.0, e = 0.8, sigma = 5.670374e-8;
+  [[nodiscard]] double surface() const {
+    double lo = Ta, hi = T0;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      const double excess = k * (T0 - mid) / L - e * sigma * (mid * mid * mid * mid - Ta * Ta * Ta * Ta);
+      (excess > 0.0 ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  }
+};
+
+Model radiating_slab(const RadiatingSlab& s, testing::Grid& g) {
+  Model m;
+  m.analysis = AnalysisType::plane_stress;
+  m.materials = {conductor(s.k, 2.0, 3.0)};
+  g = testing::add_grid(m, 6, 2, [&s](double x, double y) { return Vec2(s.L * x, 0.1 * y); }, 0);
+  m.thermal.emplace();
+  m.thermal->boundary.push_back({ThermalBoundary::Kind::temperature, side(m, g, false, 0), s.T0, 0.0});
+  m.thermal->boundary.push_back({ThermalBoundary::Kind::radiation, side(m, g, false, g.ni), s.e * s.sigma, s.Ta});
+  return m;
+}
+
+TEST(ThermalRadiation, SlabRadiatingToAnAmbientHasTheSurfaceTemperatureOfItsQuartic) {
+  const RadiatingSlab s;
+  testing::Grid g;
+  const Model m = radiating_slab(s, g);
+  const ThermalResult r = solve_steady_conduction(m);
+  const double TL = s.surface();
+  // The radiation is a sizeable share of the problem: T_L well away from both ends.
+  ASSERT_GT(TL - s.Ta, 0.2 * (s.T0 - s.Ta));
+  ASSERT_LT(TL - s.Ta, 0.8 * (s.T0 - s.Ta));
+  for (const Node& n : m.nodes) {
+    EXPECT_NEAR(r.T[static_cast<std::size_t>(n.id - 1)], s.T0 + (TL - s.T0) * n.r / s.L, 1e-8 * s.T0) << "x = " << n.r;
+  }
+  EXPECT_GT(r.iterations, 2);  // Newton's passes, each refactorized
+  EXPECT_LT(r.iterations, 12);
+}
+
+TEST(ThermalRadiation, TransientSlabRadiatingSettlesOnTheSteadySurfaceTemperature) {
+  const RadiatingSlab s;
+  testing::Grid g;
+  Model m = radiating_slab(s, g);
+  m.materials[0].stores_heat = true;
+  m.thermal->type = ThermalType::transient;
+  m.thermal->initial_temperature = s.T0;
+  m.thermal->time_step = 0.002;  // alpha = 20 / 6: L^2 / alpha = 0.075
+  m.thermal->end_time = 1.5;
+  m.thermal->output_times = {0.01, 1.5};
+  const ThermalResult r = solve_transient_conduction(m);
+  const double TL = s.surface();
+  // Cooling starts at the radiating face.
+  EXPECT_LT(r.history[0][static_cast<std::size_t>(g.at(g.ni, 0))], s.T0 - 10.0);
+  EXPECT_NEAR(r.history[0][static_cast<std::size_t>(g.at(0, 0))], s.T0, 1e-9 * s.T0);
+  for (const Node& n : m.nodes) {
+    EXPECT_NEAR(r.T[static_cast<std::size_t>(n.id - 1)], s.T0 + (TL - s.T0) * n.r / s.L, 1e-4 * s.T0) << "x = " << n.r;
+  }
+}
+
+}  // namespace
+}  // namespace saasgaps
