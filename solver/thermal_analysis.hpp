@@ -9,6 +9,8 @@
 /// did not change (a constant k: one solve) or when the largest change of a node temperature is at
 /// most steady_tolerance x (1 + max |T|); after max_conduction_iterations passes without either it
 /// throws SolverError with the last change.
+/// Radiating edges (thermal_system.hpp) join the same iteration, linearized at the current
+/// temperatures; only the change test ends it then. A transient step with radiation iterates the same way.
 ///
 /// Transient. Backward Euler, (C / dt + K) T_n+1 = C / dt T_n + f, from initial_temperature
 /// (prescribed nodes jump to their values at t > 0). Conductivity and capacity are taken at T_n. A

@@ -476,6 +476,49 @@ TEST(ThermalGaps, TemperaturesAndContactAreIteratedTogetherToAFixedPoint) {
 namespace saasgaps {
 namespace {
 
+// The same cylinders in a transient run: the gaps conduct through the gas until the first output
+// time's stress step closes them; by t = 32 the run sits on the steady coupled solution within 0.5 %.
+TEST(ThermalGaps, TransientRunWithGapConductanceApproachesTheSteadyCoupledSolution) {
+  TwoCylinders t;
+  t.Ta = 400.0;
+  t.Tc = 0.0;
+  testing::Grid inner, outer;
+  Model m = two_cylinders(t, 4, inner, outer);
+  for (Material& mat : m.materials) mat.table[0].alpha1 = mat.table[0].alpha2 = mat.table[0].alpha3 = 1.0e-4;
+  m.gaps->initial_modulus = 100.0;
+  m.gaps->tensile_schedule = {20.0, 5.0, 1.0};
+  m.gaps->conductance = InterfaceConductance{{{0.0, 1.0}, {2000.0, 8.0}}, 0.001};
+  m.solver.max_iterations = 60;
+  testing::fill_temperatures(m, 0.0);
+  for (std::size_t k = 0; k < m.nodes.size(); ++k) {
+    if (m.nodes[k].z == 0.0) testing::constrain(m, static_cast<int>(k), std::nullopt, 0.0);
+  }
+  const Solution steady = solve_with_heat(m);
+  ASSERT_EQ(steady.status, RunStatus::converged) << steady.message;
+  for (Material& mat : m.materials) {
+    mat.table[0].c = 1.0;
+    mat.density = 1.0;
+    mat.stores_heat = true;
+  }
+  m.thermal->type = ThermalType::transient;
+  m.thermal->initial_temperature = 0.0;
+  m.thermal->time_step = 0.25;
+  m.thermal->end_time = 32.0;
+  m.thermal->output_times = {0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0};
+  const Solution s = solve_with_heat(m);
+  ASSERT_TRUE(s.thermal.has_value());
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  EXPECT_EQ(s.thermal->history.size(), 7u);
+  EXPECT_LE(s.thermal->factorizations, 7);
+  for (const GapResult& g : s.gaps) EXPECT_TRUE(g.state == GapState::closed || g.state == GapState::overclosed);
+  // The first interval ran with the gas's conductance, the last with touching faces.
+  const auto jump = [&](const std::vector<double>& T) { return T[inner.at(4, 0)] - T[outer.at(0, 0)]; };
+  EXPECT_GT(jump(s.thermal->history.front()), 1.5 * jump(s.thermal->history.back()));
+  for (std::size_t k = 0; k < m.nodes.size(); ++k) {
+    EXPECT_NEAR(s.thermal->T[k], steady.thermal->T[k], 0.005 * (t.Ta - t.Tc)) << "node " << m.nodes[k].id;
+  }
+}
+
 // Radiation. A plane slab 0 < x < L held at T0 on x = 0 and radiating to an ambient Ta on x = L
 // (other edges insulated; temperatures absolute): the steady T is linear, and the heat conducted
 // through the slab leaves by radiation, k (T0 - T_L) / L = e sigma (T_L^4 - Ta^4), a quartic in T_L
