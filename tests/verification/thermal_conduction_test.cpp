@@ -23,6 +23,7 @@
 
 #include "conduction_kernel.hpp"
 #include "support/mesh_builder.hpp"
+#include "support/settling_transient.hpp"
 #include "thermal_analysis.hpp"
 
 namespace saasgaps {
@@ -437,16 +438,8 @@ TEST(ThermalTransient, EachOutputTimeIsALoadStepOfTheStressAnalysis) {
 namespace saasgaps {
 namespace {
 
-// Coupled: the inner cylinder, held hot at r = a, grows across the gap (open at first, conducting
-// through the gas only) into the outer one, held cold at r = c. The passes must end with the gaps
-// touching and the temperatures those of a conduction solve with the conductances of the final
-// contact state (the fixed point the stopping rule claims).
-TEST(ThermalGaps, TemperaturesAndContactAreIteratedTogetherToAFixedPoint) {
-  TwoCylinders t;
-  t.Ta = 400.0;
-  t.Tc = 0.0;
-  testing::Grid inner, outer;
-  const int n = 8;
+/// The cylinders with thermal expansion and gaps that close (classic method), held at u_z = 0 on z = 0.
+Model expanding_cylinders(const TwoCylinders& t, int n, testing::Grid& inner, testing::Grid& outer) {
   Model m = two_cylinders(t, n, inner, outer);
   for (Material& mat : m.materials) mat.table[0].alpha1 = mat.table[0].alpha2 = mat.table[0].alpha3 = 1.0e-4;
   m.gaps->initial_modulus = 100.0;
@@ -457,6 +450,20 @@ TEST(ThermalGaps, TemperaturesAndContactAreIteratedTogetherToAFixedPoint) {
   for (std::size_t k = 0; k < m.nodes.size(); ++k) {
     if (m.nodes[k].z == 0.0) testing::constrain(m, static_cast<int>(k), std::nullopt, 0.0);
   }
+  return m;
+}
+
+// Coupled: the inner cylinder, held hot at r = a, grows across the gap (open at first, conducting
+// through the gas only) into the outer one, held cold at r = c. The passes must end with the gaps
+// touching and the temperatures those of a conduction solve with the conductances of the final
+// contact state (the fixed point the stopping rule claims).
+TEST(ThermalGaps, TemperaturesAndContactAreIteratedTogetherToAFixedPoint) {
+  TwoCylinders t;
+  t.Ta = 400.0;
+  t.Tc = 0.0;
+  testing::Grid inner, outer;
+  const int n = 8;
+  Model m = expanding_cylinders(t, n, inner, outer);
   const Solution s = solve_with_heat(m);
   ASSERT_TRUE(s.thermal.has_value());
   EXPECT_EQ(s.status, RunStatus::converged);
@@ -483,31 +490,9 @@ TEST(ThermalGaps, TransientRunWithGapConductanceApproachesTheSteadyCoupledSoluti
   t.Ta = 400.0;
   t.Tc = 0.0;
   testing::Grid inner, outer;
-  Model m = two_cylinders(t, 4, inner, outer);
-  for (Material& mat : m.materials) mat.table[0].alpha1 = mat.table[0].alpha2 = mat.table[0].alpha3 = 1.0e-4;
-  m.gaps->initial_modulus = 100.0;
-  m.gaps->tensile_schedule = {20.0, 5.0, 1.0};
-  m.gaps->conductance = InterfaceConductance{{{0.0, 1.0}, {2000.0, 8.0}}, 0.001};
-  m.solver.max_iterations = 60;
-  testing::fill_temperatures(m, 0.0);
-  for (std::size_t k = 0; k < m.nodes.size(); ++k) {
-    if (m.nodes[k].z == 0.0) testing::constrain(m, static_cast<int>(k), std::nullopt, 0.0);
-  }
-  const Solution steady = solve_with_heat(m);
-  ASSERT_EQ(steady.status, RunStatus::converged) << steady.message;
-  for (Material& mat : m.materials) {
-    mat.table[0].c = 1.0;
-    mat.density = 1.0;
-    mat.stores_heat = true;
-  }
-  m.thermal->type = ThermalType::transient;
-  m.thermal->initial_temperature = 0.0;
-  m.thermal->time_step = 0.25;
-  m.thermal->end_time = 32.0;
-  m.thermal->output_times = {0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0};
-  const Solution s = solve_with_heat(m);
-  ASSERT_TRUE(s.thermal.has_value());
-  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  Model m = expanding_cylinders(t, 4, inner, outer);
+  const auto [steady, s] = testing::steady_then_settling_transient(m);
+  ASSERT_TRUE(s.thermal.has_value() && steady.thermal.has_value());
   EXPECT_EQ(s.thermal->history.size(), 7u);
   EXPECT_LE(s.thermal->factorizations, 7);
   for (const GapResult& g : s.gaps) EXPECT_TRUE(g.state == GapState::closed || g.state == GapState::overclosed);

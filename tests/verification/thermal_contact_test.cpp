@@ -19,6 +19,7 @@
 
 #include "contact_conductance.hpp"
 #include "support/mesh_builder.hpp"
+#include "support/settling_transient.hpp"
 #include "support/stacked_blocks.hpp"
 #include "thermal_analysis.hpp"
 
@@ -329,21 +330,8 @@ TEST(ThermalContact, TransientRunWithContactConductanceApproachesTheSteadyCouple
   const Ring1D ring = heated_ring();
   CylinderModel c = expanding_rings(ring, 4);
   Model& m = c.model;
-  const Solution steady = solve_with_heat(m);
-  ASSERT_EQ(steady.status, RunStatus::converged) << steady.message;
-  for (Material& mat : m.materials) {
-    mat.table[0].c = 1.0;
-    mat.density = 1.0;
-    mat.stores_heat = true;
-  }
-  m.thermal->type = ThermalType::transient;
-  m.thermal->initial_temperature = 0.0;
-  m.thermal->time_step = 0.25;
-  m.thermal->end_time = 32.0;
-  m.thermal->output_times = {0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0};
-  const Solution s = solve_with_heat(m);
-  ASSERT_TRUE(s.thermal.has_value());
-  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  const auto [steady, s] = testing::steady_then_settling_transient(m);
+  ASSERT_TRUE(s.thermal.has_value() && steady.thermal.has_value());
   ASSERT_EQ(s.steps.size(), 7u);
   EXPECT_EQ(s.thermal->time_steps, 128);
   EXPECT_LE(s.thermal->factorizations, 7);
