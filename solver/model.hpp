@@ -193,14 +193,15 @@ struct ThermalEdge {
   int node_b = 0;
 };
 
-/// One entry of thermal.boundary: a prescribed temperature, a flux into the body (power / area), or
-/// a convection film whose outward flux is film (T - ambient).
+/// One entry of thermal.boundary: a prescribed temperature, a flux into the body (power / area), a
+/// convection film whose outward flux is film (T - ambient), or radiation to an ambient whose
+/// outward flux is emissivity sigma (T^4 - ambient^4) (temperatures absolute).
 struct ThermalBoundary {
-  enum class Kind { temperature, flux, film };
+  enum class Kind { temperature, flux, film, radiation };
   Kind kind = Kind::temperature;
   std::vector<ThermalEdge> edges;
-  double value = 0.0;    ///< the temperature, the flux or the film coefficient
-  double ambient = 0.0;  ///< film only
+  double value = 0.0;    ///< the temperature, the flux, the film coefficient, or emissivity x sigma
+  double ambient = 0.0;  ///< film and radiation only
 };
 
 /// Heat generated per unit volume in every element of a material.

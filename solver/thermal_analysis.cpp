@@ -7,6 +7,7 @@
 #include "contact_conductance.hpp"
 #include "sparse_cholesky.hpp"
 #include "thermal_system.hpp"
+#include "transient_coupling.hpp"
 
 namespace saasgaps {
 
@@ -43,9 +44,11 @@ class ConductionSolver {
   [[nodiscard]] const ThermalSystem& system() const { return system_; }
   [[nodiscard]] int factorizations() const { return factorizations_; }
 
+  /// current: where radiating edges are linearized (ThermalSystem::assemble).
   std::vector<double> solve(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
-                            std::span<const double> gap_conductance, std::span<const double> contact_conductance) {
-    system_.assemble(k, inverse_dt, previous, gap_conductance, contact_conductance, values_, rhs_);
+                            std::span<const double> gap_conductance, std::span<const double> contact_conductance,
+                            std::span<const double> current) {
+    system_.assemble(k, inverse_dt, previous, gap_conductance, contact_conductance, current, values_, rhs_);
     if (values_ != factored_) {
       try {
         cholesky_.factorize(values_);
@@ -113,11 +116,13 @@ ThermalResult solve_steady_conduction(const Model& model, std::span<const double
   ThermalResult result;
   double change = 0.0;
   for (int pass = 1; pass <= max_conduction_iterations; ++pass) {
-    std::vector<double> next = solver.solve(k, 0.0, {}, gap_conductance, contact_conductance);
+    std::vector<double> next = solver.solve(k, 0.0, {}, gap_conductance, contact_conductance, T);
     change = largest_change(next, T);
     T = std::move(next);
     std::vector<Conductivity> k_next = system.conductivities(T);
-    const bool settled = same_conductivities(k_next, k) || change <= steady_tolerance * (1.0 + largest_magnitude(T));
+    // Radiation is linearized at T: only a change below the tolerance ends its iteration.
+    const bool settled = (same_conductivities(k_next, k) && !system.radiates()) ||
+                         change <= steady_tolerance * (1.0 + largest_magnitude(T));
     if (settled) {
       result.iterations = pass;
       result.factorizations = solver.factorizations();
@@ -129,15 +134,19 @@ ThermalResult solve_steady_conduction(const Model& model, std::span<const double
   }
   std::ostringstream text;
   text << "the steady conduction did not converge in " << max_conduction_iterations
-       << " passes of the k(T) iteration: the last changed a node temperature by " << change
+       << " passes of the k(T) and radiation iteration: the last changed a node temperature by " << change
        << " (a conductivity that varies too steeply with T)";
   throw SolverError(text.str());
 }
 
-ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance) {
+ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance,
+                                         std::span<const double> contact_conductance, const OutputTimeHook& at_output) {
   const Thermal& thermal = *model.thermal;
   ConductionSolver solver(model);
   const ThermalSystem& system = solver.system();
+  InterfaceConductances H{{gap_conductance.begin(), gap_conductance.end()},
+                          {contact_conductance.begin(), contact_conductance.end()}};
+  if (H.pairs.empty()) H.pairs = system.contact().conductances({});
   std::vector<double> T(model.nodes.size(), thermal.initial_temperature);
   ThermalResult result;
   // Times count whole steps from the last output time (no drift from summing dt), so every full
@@ -145,18 +154,36 @@ ThermalResult solve_transient_conduction(const Model& model, std::span<const dou
   const double step = thermal.time_step;
   const double sliver = 1.0e-9 * step;
   double t = 0.0;
-  for (const double output : thermal.output_times) {
+  for (std::size_t k = 0; k < thermal.output_times.size(); ++k) {
+    const double output = thermal.output_times[k];
     const double start = t;
     for (long taken = 1; output - t > sliver; ++taken) {
       const double remaining = output - t;
       const double dt = std::abs(remaining - step) <= sliver ? step : std::min(step, remaining);
-      T = solver.solve(system.conductivities(T), 1.0 / dt, T, gap_conductance, {});
+      // Radiating edges: Newton on the step's nonlinear system from the previous temperatures.
+      std::vector<double> guess = T;
+      for (int pass = 1;; ++pass) {
+        std::vector<double> next = solver.solve(system.conductivities(T), 1.0 / dt, T, H.gaps, H.pairs, guess);
+        const double change = largest_change(next, guess);
+        guess = std::move(next);
+        if (!system.radiates() || change <= steady_tolerance * (1.0 + largest_magnitude(guess))) break;
+        if (pass == max_conduction_iterations) {
+          throw SolverError("the radiation did not converge in a time step ending at t = " + std::to_string(t + dt) +
+                            ": the last of " + std::to_string(pass) + " Newton passes changed a node temperature by " +
+                            std::to_string(change));
+        }
+      }
+      T = std::move(guess);
       t = remaining - dt <= sliver ? output : start + static_cast<double>(taken) * step;
       ++result.time_steps;
     }
     t = output;
     result.times.push_back(output);
     result.history.push_back(T);
+    if (!at_output) continue;
+    std::optional<InterfaceConductances> next = at_output(k, T);
+    if (!next) break;
+    H = std::move(*next);
   }
   result.factorizations = solver.factorizations();
   result.flux = system.fluxes(system.conductivities(T), T);
@@ -194,10 +221,7 @@ Solution solve_with_heat(const Model& model, IterationObserver* observer, const 
   std::vector<double> H = gap_conductances(model, {});
   const ContactConductance pairs(model);
   if (model.thermal->type == ThermalType::transient) {
-    if (!H.empty() || pairs.row_count() > 0) {
-      throw SolverError("conduction across gap elements and contact pairs is solved for steady runs only; a "
-                        "transient run with a conductance is not supported yet");
-    }
+    if (!H.empty() || pairs.row_count() > 0) return solve_coupled_transient(model, observer, resume, options, cache, contact);
     ThermalResult heat = solve_transient_conduction(model);
     Solution s = solve(with_temperature_steps(model, heat), observer, resume, options, cache, contact);
     s.thermal = std::move(heat);

@@ -9,6 +9,8 @@
 /// did not change (a constant k: one solve) or when the largest change of a node temperature is at
 /// most steady_tolerance x (1 + max |T|); after max_conduction_iterations passes without either it
 /// throws SolverError with the last change.
+/// Radiating edges (thermal_system.hpp) join the same iteration, linearized at the current
+/// temperatures; only the change test ends it then. A transient step with radiation iterates the same way.
 ///
 /// Transient. Backward Euler, (C / dt + K) T_n+1 = C / dt T_n + f, from initial_temperature
 /// (prescribed nodes jump to their values at t > 0). Conductivity and capacity are taken at T_n. A
@@ -29,7 +31,12 @@
 /// Contact pairs with a `conductance` conduct the same way through their mortar rows
 /// (contact_conductance.hpp), H per point of side A from its gap and pressure, and join the same
 /// passes: a point's touching or not counts as a state like a gap's.
+///
+/// Transient runs with conducting gaps or pairs couple to the stress analysis at each output time,
+/// the contact state of the last stress solve holding until the next (transient_coupling.hpp).
 
+#include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -55,8 +62,26 @@ std::vector<double> gap_conductances(const Model& model, std::span<const GapResu
 ThermalResult solve_steady_conduction(const Model& model, std::span<const double> gap_conductance = {},
                                       std::span<const double> contact_conductance = {});
 
-/// The transient temperatures at each output time.
-ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance = {});
+/// Conductances across the interfaces: H per gap element (gap_conductances) and per row of the
+/// conducting contact pairs (ContactConductance::conductances).
+struct InterfaceConductances {
+  std::vector<double> gaps;
+  std::vector<double> pairs;
+};
+
+/// Called at output time k (index into thermal.output_times) with its node temperatures: the
+/// conductances of the time steps after it, or nullopt to end the run there.
+using OutputTimeHook =
+    std::function<std::optional<InterfaceConductances>(std::size_t k, std::span<const double> T)>;
+
+/// The transient temperatures at each output time. gap_conductance, contact_conductance: as for
+/// solve_steady_conduction (empty contact_conductance: every point at its initial gap), the
+/// conductances of the steps up to the first output time; at_output (optional) replaces them after
+/// each output time (a change refactorizes, an unchanged matrix reuses its factorization). A run
+/// that at_output ends has the output times up to that one only.
+ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance = {},
+                                         std::span<const double> contact_conductance = {},
+                                         const OutputTimeHook& at_output = {});
 
 /// The model with node temperatures T as its loads, in `loads` and in every step's loads.
 Model with_temperatures(const Model& model, const std::vector<double>& T);

@@ -74,6 +74,7 @@ ThermalSystem::ThermalSystem(const Model& model)
   edges_.resize(model.elements.size());
   for (const ThermalBoundary& b : model.thermal->boundary) {
     if (b.kind == ThermalBoundary::Kind::temperature) continue;
+    radiates_ = radiates_ || b.kind == ThermalBoundary::Kind::radiation;
     for (const ThermalEdge& e : b.edges) {
       const Element& el = model.elements[static_cast<std::size_t>(e.element)];
       edges_[static_cast<std::size_t>(e.element)].push_back(
@@ -110,7 +111,7 @@ std::vector<Conductivity> ThermalSystem::conductivities(std::span<const double> 
 
 void ThermalSystem::assemble(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
                              std::span<const double> gap_conductance, std::span<const double> contact_conductance,
-                             std::span<double> values, std::span<double> rhs) const {
+                             std::span<const double> current, std::span<double> values, std::span<double> rhs) const {
   std::fill(values.begin(), values.end(), 0.0);
   std::fill(rhs.begin(), rhs.end(), 0.0);
   const SystemSink sink{values, rhs};
@@ -135,7 +136,20 @@ void ThermalSystem::assemble(std::span<const Conductivity> k, double inverse_dt,
         block.f[edge.b] += edge.value * w[1];
         continue;
       }
-      const EdgeBlock film = film_block(xa, xb, model_.analysis, model_.thickness, edge.value, edge.ambient);
+      double h = edge.value;
+      double ambient = edge.ambient;
+      if (edge.kind == ThermalBoundary::Kind::radiation) {
+        const double T0 = 0.5 * (current[static_cast<std::size_t>(el.nodes[edge.a])] +
+                                 current[static_cast<std::size_t>(el.nodes[edge.b])]);
+        const double Ta = edge.ambient;
+        if (T0 > 0.0) {
+          h = 4.0 * edge.value * T0 * T0 * T0;
+          ambient = T0 - (T0 * T0 * T0 * T0 - Ta * Ta * Ta * Ta) / (4.0 * T0 * T0 * T0);
+        } else {
+          h = edge.value * (T0 * T0 + Ta * Ta) * (T0 + Ta);
+        }
+      }
+      const EdgeBlock film = film_block(xa, xb, model_.analysis, model_.thickness, h, ambient);
       const std::array<int, 2> at{edge.a, edge.b};
       for (int i = 0; i < 2; ++i) {
         block.f[at[i]] += film.f[i];

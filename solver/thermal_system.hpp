@@ -34,6 +34,8 @@ class ThermalSystem {
   [[nodiscard]] const CscPattern& pattern() const { return assembler_.pattern(); }
   [[nodiscard]] bool gaps_conduct() const { return gaps_conduct_; }
   [[nodiscard]] const ContactConductance& contact() const { return contact_; }
+  /// Whether some edge radiates: the system is then nonlinear in T (assemble's `current`).
+  [[nodiscard]] bool radiates() const { return radiates_; }
 
   /// Each solid element's conductivity (k1, k2) at the mean of its nodes' temperatures T (one per node).
   [[nodiscard]] std::vector<Conductivity> conductivities(std::span<const double> T) const;
@@ -42,10 +44,16 @@ class ThermalSystem {
   /// rhs (dofs().size()), both zeroed here. k: conductivities(); inverse_dt: 1 / dt (0 for a steady
   /// solve), with previous the node temperatures of the step before (the capacity density c is
   /// taken at their element means); gap_conductance: H per gap element (gaps_conduct() only, else
-  /// empty); contact_conductance: H per row of contact().
+  /// empty); contact_conductance: H per row of contact(); current: the node temperatures at which
+  /// radiating edges are linearized (read only when radiates()).
+  ///
+  /// Radiation, q_out = es (T^4 - Ta^4) with es = emissivity sigma, is a film on the edge linearized
+  /// at the edge's mean current temperature T0 (Newton): q_out ~ es (T0^4 - Ta^4) + 4 es T0^3 (T - T0),
+  /// a film h = 4 es T0^3 with ambient T0 - (T0^4 - Ta^4) / (4 T0^3). At T0 <= 0 (a start at zero
+  /// absolute) the secant film es (T0^2 + Ta^2)(T0 + Ta) with ambient Ta instead.
   void assemble(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
                 std::span<const double> gap_conductance, std::span<const double> contact_conductance,
-                std::span<double> values, std::span<double> rhs) const;
+                std::span<const double> current, std::span<double> values, std::span<double> rhs) const;
 
   /// Node temperatures from the free unknowns x (prescribed nodes take their values).
   [[nodiscard]] std::vector<double> node_temperatures(std::span<const double> x) const;
@@ -61,6 +69,7 @@ class ThermalSystem {
   const Model& model_;
   DofMap dofs_;
   bool gaps_conduct_ = false;
+  bool radiates_ = false;
   ContactConductance contact_;  // before assembler_: its rows are cliques of the pattern
   Assembler assembler_;
   std::vector<double> source_;          // per solid element: power density of its material

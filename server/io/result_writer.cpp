@@ -1,6 +1,5 @@
 #include "io/result_writer.hpp"
 
-#include "element_data.hpp"
 #include "io/history_json.hpp"
 #include "load_schedule.hpp"
 #include "io/result_annotations.hpp"
@@ -121,16 +120,14 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s) {
   }
   // Coordinates, connectivity and temperatures ride along so that a result can be plotted or
   // exported on its own.
+  // A stepped run ends in its last step's loads: nodes and elements both show those temperatures.
+  const std::vector<double>& T = s.thermal ? s.thermal->T : final_loads(model).node_temperature;
   out.key("elements").begin_array();
   for (std::size_t e = 0; e < s.elements.size(); ++e) {
     const Element& el = model.elements[e];
-    if (s.thermal) {
-      double mean = 0.0;  // of the computed temperatures, as element_temperature does for given ones
-      for (int a = 0; a < el.node_count; ++a) mean += s.thermal->T[static_cast<std::size_t>(el.nodes[a])];
-      write_element(out, model, el, s.elements[e], mean / el.node_count, &s.thermal->flux[e]);
-    } else {
-      write_element(out, model, el, s.elements[e], element_temperature(model, el.nodes, el.node_count), nullptr);
-    }
+    double mean = 0.0;  // of the node temperatures, as element_temperature does for the model's loads
+    for (int a = 0; a < el.node_count; ++a) mean += T[static_cast<std::size_t>(el.nodes[a])];
+    write_element(out, model, el, s.elements[e], mean / el.node_count, s.thermal ? &s.thermal->flux[e] : nullptr);
   }
   out.end_array();
   out.key("gaps").begin_array();
@@ -141,7 +138,6 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s) {
   out.end_array();
   out.field("iterations", s.iterations).field("message", s.message);
   out.key("nodes").begin_array();
-  const std::vector<double>& T = s.thermal ? s.thermal->T : final_loads(model).node_temperature;
   for (std::size_t n = 0; n < s.nodes.size(); ++n) write_node(out, model, s.nodes[n], n, T[n]);
   out.end_array();
   out.key("reaction_sum");

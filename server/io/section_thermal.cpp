@@ -10,7 +10,10 @@ namespace saasgaps::io {
 
 namespace {
 
-constexpr std::array<std::string_view, 3> boundary_kinds{"temperature", "flux", "film"};
+/// The key that names each ThermalBoundary::Kind, in its order.
+constexpr std::array<std::string_view, 4> boundary_kinds{"temperature", "flux", "film", "emissivity"};
+
+constexpr Range emissivity_range{Bound{0.0, true}, Bound{1.0, true}, "an emissivity is a fraction of a black body's"};
 
 std::string material_name(const Material& m) { return "material " + std::to_string(m.id); }
 
@@ -95,10 +98,13 @@ std::optional<ThermalEdge> SectionReader::read_thermal_edge(const json& ids, con
   return ThermalEdge{found->second.front(), nodes[0], nodes[1]};
 }
 
-/// {edges: [[a, b], ...], and exactly one of temperature, flux, or film with ambient}.
+/// {edges: [[a, b], ...], and exactly one of temperature, flux, film with ambient, or emissivity with
+/// ambient and stefan_boltzmann (radiation; value = emissivity x stefan_boltzmann)}.
 std::optional<ThermalBoundary> SectionReader::read_thermal_boundary(const json& item, const std::string& pointer,
                                                                     const EdgeOwners& owners) {
-  if (!object(item, pointer, {"edges"}, {"temperature", "flux", "film", "ambient"})) return std::nullopt;
+  if (!object(item, pointer, {"edges"}, {"temperature", "flux", "film", "ambient", "emissivity", "stefan_boltzmann"})) {
+    return std::nullopt;
+  }
   const Obj o{&item, pointer};
   ThermalBoundary b;
   bool valid = true;
@@ -107,26 +113,47 @@ std::optional<ThermalBoundary> SectionReader::read_thermal_boundary(const json& 
     if (o.find(boundary_kinds[k]) == nullptr) continue;
     ++kinds;
     b.kind = static_cast<ThermalBoundary::Kind>(k);
-    const Range& range = b.kind == ThermalBoundary::Kind::film ? non_negative : any_number;
+    const Range& range = b.kind == ThermalBoundary::Kind::film        ? non_negative
+                         : b.kind == ThermalBoundary::Kind::radiation ? emissivity_range
+                                                                      : any_number;
     const auto value = number_field(o, boundary_kinds[k], range);
     valid = valid && value.has_value();
     b.value = value.value_or(0.0);
   }
   if (kinds != 1) {
-    report(pointer, "a thermal boundary entry gives exactly one of temperature, flux, or film (with ambient); this one "
-                    "gives " + std::to_string(kinds));
+    report(pointer, "a thermal boundary entry gives exactly one of temperature, flux, film (with ambient), or "
+                    "emissivity (with ambient and stefan_boltzmann); this one gives " + std::to_string(kinds));
     valid = false;
   }
-  if (kinds == 1 && b.kind == ThermalBoundary::Kind::film) {
+  const bool radiates = kinds == 1 && b.kind == ThermalBoundary::Kind::radiation;
+  if (kinds == 1 && (b.kind == ThermalBoundary::Kind::film || radiates)) {
     if (o.find("ambient") == nullptr) {
-      report(pointer, "a film needs the ambient temperature: the flux out is film (T - ambient)");
+      report(pointer, radiates ? "radiation needs the ambient temperature: the flux out is emissivity "
+                                 "stefan_boltzmann (T^4 - ambient^4)"
+                               : "a film needs the ambient temperature: the flux out is film (T - ambient)");
       valid = false;
     }
-    const auto ambient = number_field(o, "ambient");
+    // Radiation's temperatures are absolute (T^4): a negative ambient is a temperature on another scale.
+    const auto ambient = number_field(o, "ambient", radiates ? non_negative : any_number);
     valid = valid && (ambient.has_value() || o.find("ambient") == nullptr);
     b.ambient = ambient.value_or(0.0);
   } else if (o.find("ambient") != nullptr) {
-    report(o.at("ambient"), "ambient belongs to a film (flux out = film (T - ambient)); this entry has no film");
+    report(o.at("ambient"), "ambient belongs to a film or radiation; this entry has neither");
+    valid = false;
+  }
+  if (radiates) {
+    if (o.find("stefan_boltzmann") == nullptr) {
+      report(pointer, "radiation needs stefan_boltzmann, the Stefan-Boltzmann constant in the model's units (5.670374e-8 "
+                      "W/(m^2 K^4) in SI, temperatures in kelvin): the flux out is emissivity stefan_boltzmann (T^4 - "
+                      "ambient^4)");
+      valid = false;
+    }
+    const auto sigma = number_field(o, "stefan_boltzmann", positive);
+    valid = valid && (sigma.has_value() || o.find("stefan_boltzmann") == nullptr);
+    b.value *= sigma.value_or(0.0);
+  } else if (o.find("stefan_boltzmann") != nullptr) {
+    report(o.at("stefan_boltzmann"), "stefan_boltzmann belongs to radiation (an entry with emissivity); this entry "
+                                     "does not radiate");
     valid = false;
   }
   if (const json* edges = array_field(o, "edges", 1)) {
@@ -281,18 +308,6 @@ void SectionReader::read_thermal(const Obj& root) {
     read_output_times(o, thermal);
     if (!model_.steps.empty()) {
       report("/steps", "a transient thermal run makes its load steps itself, one per output time; remove steps");
-    }
-    if (model_.gaps && model_.gaps->conductance) {
-      report("/gaps/conductance", "conduction across gap elements is solved in steady thermal runs only (not yet in "
-                                  "transient ones); remove it or make the run steady");
-    }
-    if (model_.contact) {
-      for (std::size_t i = 0; i < model_.contact->pairs.size(); ++i) {
-        if (!model_.contact->pairs[i].conductance) continue;
-        report("/contact/pairs/" + std::to_string(i) + "/conductance",
-               "conduction across contact pairs is solved in steady thermal runs only (not yet in transient "
-               "ones); remove it or make the run steady");
-      }
     }
   }
   if (type) check_thermal_materials(thermal);

@@ -1425,17 +1425,45 @@ TEST(ModelReaderRules, ThermalBoundaryEntriesAreWellFormed) {
   EXPECT_TRUE(rejects(with(with_thermal(), "/thermal/sources/0/material", 7), "/thermal/sources/0/material", {"7"}));
 }
 
-TEST(ModelReaderRules, ContactConductanceIsSolvedInSteadyRunsOnly) {
+TEST(ModelReaderRules, RadiationNeedsEmissivityAmbientAndTheStefanBoltzmannConstant) {
+  const json radiating = with(with_thermal(), "/thermal/boundary/1",
+                              json::parse(R"({"edges": [[3, 2]], "emissivity": 0.8, "ambient": 300,
+                                              "stefan_boltzmann": 5.670374e-8})"));
+  const Model read = read_model(radiating);
+  const ThermalBoundary& b = read.thermal->boundary[1];
+  EXPECT_EQ(b.kind, ThermalBoundary::Kind::radiation);
+  EXPECT_DOUBLE_EQ(b.value, 0.8 * 5.670374e-8);
+  EXPECT_EQ(b.ambient, 300.0);
+  EXPECT_TRUE(rejects(without(radiating, "/thermal/boundary/1/stefan_boltzmann"), "/thermal/boundary/1",
+                      {"stefan_boltzmann", "5.670374e-8"}));
+  EXPECT_TRUE(rejects(without(radiating, "/thermal/boundary/1/ambient"), "/thermal/boundary/1", {"ambient", "T^4"}));
+  EXPECT_TRUE(rejects(with(radiating, "/thermal/boundary/1/emissivity", 1.5), "/thermal/boundary/1/emissivity",
+                      {"1.5"}));
+  EXPECT_TRUE(rejects(with(radiating, "/thermal/boundary/1/ambient", -10), "/thermal/boundary/1/ambient", {"-10"}));
+  EXPECT_TRUE(rejects(with(radiating, "/thermal/boundary/1/stefan_boltzmann", 0), "/thermal/boundary/1/stefan_boltzmann",
+                      {"0"}));
+  EXPECT_TRUE(rejects(with(with_thermal(), "/thermal/boundary/2/stefan_boltzmann", 1e-8),
+                      "/thermal/boundary/2/stefan_boltzmann", {"radiation"}));
+  EXPECT_TRUE(rejects(with(radiating, "/thermal/boundary/1/film", 2), "/thermal/boundary/1", {"exactly one"}));
+  // Radiation holds the level of a steady run as a film does.
+  json only_radiation = radiating;  // the radiation and a flux left
+  only_radiation["thermal"]["boundary"].erase(0);
+  ASSERT_EQ(only_radiation["thermal"]["boundary"].size(), 2u);
+  EXPECT_NO_THROW((void)read_model(only_radiation));
+}
+
+TEST(ModelReaderRules, ContactConductanceIsReadInTransientRunsToo) {
   json m = transient(with_thermal());
   m["contact"] = json::parse(R"({
     "surfaces": [{"name": "left", "edges": [[1, 2]]}, {"name": "right", "edges": [[3, 2]]}],
     "pairs": [{"surfaces": ["left", "right"], "conductance": {"closed": 2}},
               {"surfaces": ["right", "left"], "conductance": {"closed": 5, "gas_conductivity": 1e-4}}]
   })");
-  EXPECT_TRUE(rejects(m, "/contact/pairs/0/conductance", {"steady thermal runs only"}));
-  EXPECT_TRUE(rejects(m, "/contact/pairs/1/conductance", {"steady thermal runs only"}));
-  for (json& pair : m["contact"]["pairs"]) pair.erase("conductance");
-  EXPECT_NO_THROW((void)read_model(m));
+  const Model read = read_model(m);
+  ASSERT_TRUE(read.contact.has_value());
+  ASSERT_TRUE(read.contact->pairs[1].conductance.has_value());
+  EXPECT_EQ(read.contact->pairs[1].conductance->gas_conductivity, 1e-4);
+  EXPECT_EQ(read.thermal->type, ThermalType::transient);
 }
 
 TEST(ModelReaderRules, GapConductanceIsANumberOrATableOverPressure) {
@@ -1453,8 +1481,17 @@ TEST(ModelReaderRules, GapConductanceIsANumberOrATableOverPressure) {
   for (std::size_t i = 0; i < thermal["materials"].size(); ++i) {
     for (json& row : thermal["materials"][i]["table"]) row[thermal["materials"][i]["elastic"] == "isotropic" ? "k" : "k1"] = 1.0;
   }
-  EXPECT_TRUE(rejects(transient(with(thermal, "/thermal", json{{"type", "steady"}})), "/gaps/conductance",
-                      {"steady thermal runs only"}));
+  // Transient runs conduct across the gaps too (solver/transient_coupling.hpp).
+  for (json& material : thermal["materials"]) {
+    material["density"] = 0.1;
+    for (json& row : material["table"]) {
+      row["c"] = 0.2;
+      if (material["elastic"] != "isotropic") row["k2"] = row["k3"] = 1.0;
+    }
+  }
+  const Model transient_run = read_model(transient(with(thermal, "/thermal", json{{"type", "steady"}})));
+  ASSERT_TRUE(transient_run.gaps->conductance.has_value());
+  EXPECT_EQ(transient_run.thermal->type, ThermalType::transient);
 }
 
 }  // namespace

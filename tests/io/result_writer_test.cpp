@@ -237,6 +237,35 @@ TEST(ResultWriter, ContactPairsAreWrittenForModelsWithContactOnly) {
   EXPECT_LT(with_friction.find("\"friction\""), with_friction.find("\"points\""));
 }
 
+/// A stepped model's result is the state at the end of its last step: the nodes' T and the
+/// elements' temperature (the mean of their nodes') both come from the last step's loads, not the
+/// top-level loads the first step starts from.
+TEST(ResultWriter, SteppedModelWritesTheLastStepsTemperaturesForNodesAndElements) {
+  Model model = testing::example_model("report-problem3-case1.json");
+  Loads hot = model.loads;
+  for (std::size_t n = 0; n < hot.node_temperature.size(); ++n) hot.node_temperature[n] = 400.0 + static_cast<double>(n);
+  model.steps.push_back({"cold", 1, std::nullopt, {}});
+  model.steps.push_back({"hot", 1, hot, {}});
+  Solution s;
+  s.status = RunStatus::converged;
+  for (const Node& n : model.nodes) s.nodes.push_back({n.id, 0.0, 0.0});
+  for (const Element& e : model.elements) {
+    ElementResult r;
+    r.id = e.id;
+    s.elements.push_back(r);
+  }
+  const nlohmann::json written = nlohmann::json::parse(result_text(model, s));
+  for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+    EXPECT_EQ(written["nodes"][n]["T"].get<double>(), hot.node_temperature[n]) << "node " << model.nodes[n].id;
+  }
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const Element& el = model.elements[e];
+    double mean = 0.0;
+    for (int a = 0; a < el.node_count; ++a) mean += hot.node_temperature[static_cast<std::size_t>(el.nodes[a])];
+    EXPECT_DOUBLE_EQ(written["elements"][e]["temperature"].get<double>(), mean / el.node_count) << "element " << el.id;
+  }
+}
+
 TEST(ResultWriter, FailedDocumentAndHistoryRowsMatchTheirTrees) {
   std::string text;
   JsonWriter out(string_sink(text));

@@ -198,6 +198,10 @@ def schema_expressible_cases(base):
         ("film without ambient",
          edits(m, ("/thermal", {"type": "steady", "boundary": [{"edges": [[1, 2]], "film": 1.0}]})),
          "/thermal/boundary/0"),
+        ("radiation without stefan_boltzmann",
+         edits(m, ("/thermal", {"type": "steady",
+                                "boundary": [{"edges": [[1, 2]], "emissivity": 0.5, "ambient": 300.0}]})),
+         "/thermal/boundary/0"),
     ]
     return [(name, json.dumps(doc, indent=1), pointer) for name, doc, pointer in cases]
 
@@ -240,6 +244,11 @@ def semantic_cases(base):
          edits(m, ("/materials/0/table/0/k", 1.0), ("/thermal", {"type": "steady", "boundary": [{"edges": [[1, 2]], "temperature": 100.0}]})), "/loads/temperatures"),
         ("thermal material without k", edits(m, ("/loads/temperatures", None), ("/thermal", {"type": "steady", "boundary": [{"edges": [[1, 2]], "temperature": 100.0}]})),
          "/materials/0/table"),
+        ("radiation to a negative ambient",
+         edits(m, ("/loads/temperatures", None), ("/materials/0/table/0/k", 1.0),
+               ("/thermal", {"type": "steady", "boundary": [{"edges": [[1, 2]], "emissivity": 0.5, "ambient": -3.0,
+                                                            "stefan_boltzmann": 1.0e-8}]})),
+         "/thermal/boundary/0/ambient"),
         ("steady thermal with nothing holding the temperature",
          edits(m, ("/loads/temperatures", None), ("/materials/0/table/0/k", 1.0),
                ("/thermal", {"type": "steady", "boundary": [{"edges": [[1, 2]], "flux": 1.0}]})),

@@ -23,6 +23,7 @@
 
 #include "conduction_kernel.hpp"
 #include "support/mesh_builder.hpp"
+#include "support/settling_transient.hpp"
 #include "thermal_analysis.hpp"
 
 namespace saasgaps {
@@ -437,16 +438,8 @@ TEST(ThermalTransient, EachOutputTimeIsALoadStepOfTheStressAnalysis) {
 namespace saasgaps {
 namespace {
 
-// Coupled: the inner cylinder, held hot at r = a, grows across the gap (open at first, conducting
-// through the gas only) into the outer one, held cold at r = c. The passes must end with the gaps
-// touching and the temperatures those of a conduction solve with the conductances of the final
-// contact state (the fixed point the stopping rule claims).
-TEST(ThermalGaps, TemperaturesAndContactAreIteratedTogetherToAFixedPoint) {
-  TwoCylinders t;
-  t.Ta = 400.0;
-  t.Tc = 0.0;
-  testing::Grid inner, outer;
-  const int n = 8;
+/// The cylinders with thermal expansion and gaps that close (classic method), held at u_z = 0 on z = 0.
+Model expanding_cylinders(const TwoCylinders& t, int n, testing::Grid& inner, testing::Grid& outer) {
   Model m = two_cylinders(t, n, inner, outer);
   for (Material& mat : m.materials) mat.table[0].alpha1 = mat.table[0].alpha2 = mat.table[0].alpha3 = 1.0e-4;
   m.gaps->initial_modulus = 100.0;
@@ -457,6 +450,20 @@ TEST(ThermalGaps, TemperaturesAndContactAreIteratedTogetherToAFixedPoint) {
   for (std::size_t k = 0; k < m.nodes.size(); ++k) {
     if (m.nodes[k].z == 0.0) testing::constrain(m, static_cast<int>(k), std::nullopt, 0.0);
   }
+  return m;
+}
+
+// Coupled: the inner cylinder, held hot at r = a, grows across the gap (open at first, conducting
+// through the gas only) into the outer one, held cold at r = c. The passes must end with the gaps
+// touching and the temperatures those of a conduction solve with the conductances of the final
+// contact state (the fixed point the stopping rule claims).
+TEST(ThermalGaps, TemperaturesAndContactAreIteratedTogetherToAFixedPoint) {
+  TwoCylinders t;
+  t.Ta = 400.0;
+  t.Tc = 0.0;
+  testing::Grid inner, outer;
+  const int n = 8;
+  Model m = expanding_cylinders(t, n, inner, outer);
   const Solution s = solve_with_heat(m);
   ASSERT_TRUE(s.thermal.has_value());
   EXPECT_EQ(s.status, RunStatus::converged);
@@ -468,6 +475,97 @@ TEST(ThermalGaps, TemperaturesAndContactAreIteratedTogetherToAFixedPoint) {
   }
   // Touching faces conduct far better than the gas did at first: the jump is a fraction of the drop.
   EXPECT_LT(s.thermal->T[inner.at(n, 0)] - s.thermal->T[outer.at(0, 0)], 0.5 * (t.Ta - t.Tc));
+}
+
+}  // namespace
+}  // namespace saasgaps
+
+namespace saasgaps {
+namespace {
+
+// The same cylinders in a transient run: the gaps conduct through the gas until the first output
+// time's stress step closes them; by t = 32 the run sits on the steady coupled solution within 0.5 %.
+TEST(ThermalGaps, TransientRunWithGapConductanceApproachesTheSteadyCoupledSolution) {
+  TwoCylinders t;
+  t.Ta = 400.0;
+  t.Tc = 0.0;
+  testing::Grid inner, outer;
+  Model m = expanding_cylinders(t, 4, inner, outer);
+  const auto [steady, s] = testing::steady_then_settling_transient(m);
+  ASSERT_TRUE(s.thermal.has_value() && steady.thermal.has_value());
+  EXPECT_EQ(s.thermal->history.size(), 7u);
+  EXPECT_LE(s.thermal->factorizations, 7);
+  for (const GapResult& g : s.gaps) EXPECT_TRUE(g.state == GapState::closed || g.state == GapState::overclosed);
+  // The first interval ran with the gas's conductance, the last with touching faces.
+  const auto jump = [&](const std::vector<double>& T) { return T[inner.at(4, 0)] - T[outer.at(0, 0)]; };
+  EXPECT_GT(jump(s.thermal->history.front()), 1.5 * jump(s.thermal->history.back()));
+  for (std::size_t k = 0; k < m.nodes.size(); ++k) {
+    EXPECT_NEAR(s.thermal->T[k], steady.thermal->T[k], 0.005 * (t.Ta - t.Tc)) << "node " << m.nodes[k].id;
+  }
+}
+
+// Radiation. A plane slab 0 < x < L held at T0 on x = 0 and radiating to an ambient Ta on x = L
+// (other edges insulated; temperatures absolute): the steady T is linear, and the heat conducted
+// through the slab leaves by radiation, k (T0 - T_L) / L = e sigma (T_L^4 - Ta^4), a quartic in T_L
+// with one root between Ta and T0 (the left side falls, the right side rises), found by bisection.
+struct RadiatingSlab {
+  double L = 0.5, k = 20.0, T0 = 1200.0, Ta = 300.0, e = 0.8, sigma = 5.670374e-8;
+  [[nodiscard]] double surface() const {
+    double lo = Ta, hi = T0;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      const double excess = k * (T0 - mid) / L - e * sigma * (mid * mid * mid * mid - Ta * Ta * Ta * Ta);
+      (excess > 0.0 ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  }
+};
+
+Model radiating_slab(const RadiatingSlab& s, testing::Grid& g) {
+  Model m;
+  m.analysis = AnalysisType::plane_stress;
+  m.materials = {conductor(s.k, 2.0, 3.0)};
+  g = testing::add_grid(m, 6, 2, [&s](double x, double y) { return Vec2(s.L * x, 0.1 * y); }, 0);
+  m.thermal.emplace();
+  m.thermal->boundary.push_back({ThermalBoundary::Kind::temperature, side(m, g, false, 0), s.T0, 0.0});
+  m.thermal->boundary.push_back({ThermalBoundary::Kind::radiation, side(m, g, false, g.ni), s.e * s.sigma, s.Ta});
+  return m;
+}
+
+TEST(ThermalRadiation, SlabRadiatingToAnAmbientHasTheSurfaceTemperatureOfItsQuartic) {
+  const RadiatingSlab s;
+  testing::Grid g;
+  const Model m = radiating_slab(s, g);
+  const ThermalResult r = solve_steady_conduction(m);
+  const double TL = s.surface();
+  // The radiation is a sizeable share of the problem: T_L well away from both ends.
+  ASSERT_GT(TL - s.Ta, 0.2 * (s.T0 - s.Ta));
+  ASSERT_LT(TL - s.Ta, 0.8 * (s.T0 - s.Ta));
+  for (const Node& n : m.nodes) {
+    EXPECT_NEAR(r.T[static_cast<std::size_t>(n.id - 1)], s.T0 + (TL - s.T0) * n.r / s.L, 1e-8 * s.T0) << "x = " << n.r;
+  }
+  EXPECT_GT(r.iterations, 2);  // Newton's passes, each refactorized
+  EXPECT_LT(r.iterations, 12);
+}
+
+TEST(ThermalRadiation, TransientSlabRadiatingSettlesOnTheSteadySurfaceTemperature) {
+  const RadiatingSlab s;
+  testing::Grid g;
+  Model m = radiating_slab(s, g);
+  m.materials[0].stores_heat = true;
+  m.thermal->type = ThermalType::transient;
+  m.thermal->initial_temperature = s.T0;
+  m.thermal->time_step = 0.002;  // alpha = 20 / 6: L^2 / alpha = 0.075
+  m.thermal->end_time = 1.5;
+  m.thermal->output_times = {0.01, 1.5};
+  const ThermalResult r = solve_transient_conduction(m);
+  const double TL = s.surface();
+  // Cooling starts at the radiating face.
+  EXPECT_LT(r.history[0][static_cast<std::size_t>(g.at(g.ni, 0))], s.T0 - 10.0);
+  EXPECT_NEAR(r.history[0][static_cast<std::size_t>(g.at(0, 0))], s.T0, 1e-9 * s.T0);
+  for (const Node& n : m.nodes) {
+    EXPECT_NEAR(r.T[static_cast<std::size_t>(n.id - 1)], s.T0 + (TL - s.T0) * n.r / s.L, 1e-4 * s.T0) << "x = " << n.r;
+  }
 }
 
 }  // namespace

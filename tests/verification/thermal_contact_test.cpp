@@ -15,9 +15,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <Eigen/Dense>
 
 #include "contact_conductance.hpp"
 #include "support/mesh_builder.hpp"
+#include "support/settling_transient.hpp"
 #include "support/stacked_blocks.hpp"
 #include "thermal_analysis.hpp"
 
@@ -176,6 +178,176 @@ TEST(ThermalContact, TemperaturesAndContactAreIteratedTogetherToAFixedPoint) {
   const int n = c.inner.ni;
   EXPECT_LT(s.thermal->T[c.inner.at(n, 0)] - s.thermal->T[c.outer.at(0, 0)],
             0.5 * (first.T[c.inner.at(n, 0)] - first.T[c.outer.at(0, 0)]));
+}
+
+// Coupled ring (issue 21's "What it must show"): the inner cylinder, held hot at r = a, grows across
+// the gap g into the outer one, held cold at r = c, and the contact it makes conducts h(p). Every node
+// is held at u_z = 0, so the stress state is plane strain (eps_z = 0) and everything depends on r only.
+// The one-dimensional computation below is iterated to its fixed point and must agree with the
+// thermal-contact passes within 1 %.
+//
+// Conduction: the log profiles of Cylinders with the interface's h (touching: h(p) of the table;
+// open: gas / gap).
+// Lame with a temperature T(r) = A + B ln r in a ring r0 < r < r1 (plane strain, reference 0): with
+// I(r) = int_r0^r T s ds = [A s^2 / 2 + B (s^2 ln s / 2 - s^2 / 4)]_r0^r,
+//   u(r)       = (1 + nu) / (1 - nu) alpha I(r) / r + C1 r + C2 / r,
+//   sigma_r(r) = E / ((1 + nu)(1 - 2 nu)) C1 - E / (1 + nu) C2 / r^2 - E alpha / (1 - nu) I(r) / r^2
+// (from sigma_r = E / ((1 + nu)(1 - 2 nu)) ((1 - nu) u' + nu u / r - (1 + nu) alpha T)). The five
+// unknowns C1, C2 of each ring and the contact pressure p solve sigma_r(a) = 0, sigma_r(b) = -p,
+// sigma_r(b + g) = -p, sigma_r(c) = 0 and closure u_inner(b) - u_outer(b + g) = g; p <= 0 means the
+// gap stays open (p = 0, gap g - u_inner(b) + u_outer(b + g)).
+struct Ring1D {
+  Cylinders t;
+  double E = 1.0e6, nu = 0.3, alpha = 1.0e-5;
+  InterfaceConductance conductance;
+
+  struct State {
+    double p = 0.0;    // contact pressure (0 when open)
+    double gap = 0.0;  // open gap (0 when touching)
+    double h = 0.0;    // the interface's conductance
+  };
+
+  /// T = A + B ln r in each ring for interface conductance h.
+  [[nodiscard]] std::array<Eigen::Vector2d, 2> profiles(double h) const {
+    Cylinders c = t;
+    c.h = h;
+    const double q = c.flow();
+    return {Eigen::Vector2d(t.Ta + q / t.k1 * std::log(t.a), -q / t.k1),
+            Eigen::Vector2d(t.Tc + q / t.k2 * std::log(t.c), -q / t.k2)};
+  }
+
+  /// Contact pressure and gap for interface conductance h (Lame, the closure condition).
+  [[nodiscard]] State mechanics(double h) const {
+    const auto T = profiles(h);
+    const double inside = t.b + t.g;
+    const auto I = [](const Eigen::Vector2d& AB, double r0, double r) {
+      const auto F = [&AB](double s) { return AB[0] * s * s / 2.0 + AB[1] * (s * s * std::log(s) / 2.0 - s * s / 4.0); };
+      return F(r) - F(r0);
+    };
+    const double s1 = E / ((1.0 + nu) * (1.0 - 2.0 * nu));
+    const double s2 = -E / (1.0 + nu);
+    const double st = -E * alpha / (1.0 - nu);
+    const double ut = (1.0 + nu) / (1.0 - nu) * alpha;
+    // Rows: sigma_r(a) = 0, sigma_r(b) + p = 0, sigma_r(b + g) + p = 0, sigma_r(c) = 0, closure.
+    Eigen::Matrix<double, 5, 5> M = Eigen::Matrix<double, 5, 5>::Zero();
+    Eigen::Matrix<double, 5, 1> f = Eigen::Matrix<double, 5, 1>::Zero();
+    const auto stress_row = [&](int row, int ring, double r, double r0, const Eigen::Vector2d& AB, double p) {
+      M(row, 2 * ring) = s1;
+      M(row, 2 * ring + 1) = s2 / (r * r);
+      M(row, 4) = p;
+      f[row] = -st * I(AB, r0, r) / (r * r);
+    };
+    stress_row(0, 0, t.a, t.a, T[0], 0.0);
+    stress_row(1, 0, t.b, t.a, T[0], 1.0);
+    stress_row(2, 1, inside, inside, T[1], 1.0);
+    stress_row(3, 1, t.c, inside, T[1], 0.0);
+    const double thermal_in = ut * I(T[0], t.a, t.b) / t.b;  // u_inner(b) = thermal_in + C1 b + C2 / b
+    const double thermal_out = ut * I(T[1], inside, inside) / inside;
+    M(4, 0) = t.b;
+    M(4, 1) = 1.0 / t.b;
+    M(4, 2) = -inside;
+    M(4, 3) = -1.0 / inside;
+    f[4] = t.g - thermal_in + thermal_out;
+    const Eigen::Matrix<double, 5, 1> x = M.fullPivLu().solve(f);
+    if (x[4] > 0.0) return {x[4], 0.0, closed_conductance(conductance, x[4])};
+    // Open: the rings expand freely (p = 0); the gap left is g minus the closure.
+    M.col(4).setZero();
+    M.row(4).setZero();
+    M(4, 4) = 1.0;
+    f[4] = 0.0;
+    const Eigen::Matrix<double, 5, 1> free = M.fullPivLu().solve(f);
+    const double closure = thermal_in + free[0] * t.b + free[1] / t.b - thermal_out - free[2] * inside - free[3] / inside;
+    const double gap = t.g - closure;
+    return {0.0, gap, conductance.gas_conductivity / gap};
+  }
+
+  /// The fixed point h -> T -> (p, gap) -> h, from the open gap at its initial width.
+  [[nodiscard]] State solve() const {
+    double h = conductance.gas_conductivity / t.g;
+    for (int pass = 0; pass < 200; ++pass) {
+      const State s = mechanics(h);
+      if (std::abs(s.h - h) <= 1.0e-13 * h) return s;
+      h = s.h;
+    }
+    ADD_FAILURE() << "the one-dimensional fixed point did not settle";
+    return mechanics(h);
+  }
+};
+
+/// The ring model: the cylinders with thermal expansion, every node held at u_z = 0.
+CylinderModel expanding_rings(const Ring1D& ring, int n) {
+  CylinderModel c = cylinders(ring.t, n, ring.conductance);
+  Model& m = c.model;
+  for (Material& mat : m.materials) mat.table[0].alpha1 = mat.table[0].alpha2 = mat.table[0].alpha3 = ring.alpha;
+  testing::fill_temperatures(m, 0.0);
+  for (std::size_t k = 0; k < m.nodes.size(); ++k) testing::constrain(m, static_cast<int>(k), std::nullopt, 0.0);
+  return c;
+}
+
+Ring1D heated_ring() {
+  Ring1D ring;
+  ring.t.g = 1.0e-3;
+  ring.t.Ta = 400.0;
+  ring.t.Tc = 0.0;
+  ring.conductance = InterfaceConductance{{{0.0, 1.0}, {2000.0, 8.0}}, 1.0e-3};
+  return ring;
+}
+
+TEST(ThermalContact, RingHeatedFromInsideGrowsIntoAColdRingAsTheOneDimensionalFixedPointSays) {
+  const Ring1D ring = heated_ring();
+  const Ring1D::State exact = ring.solve();
+  // The fixed point is inside the table (h interpolated in p), far from the gas's h = 1, so both the
+  // pressure and the conductance it sets are tested.
+  ASSERT_GT(exact.p, 100.0);
+  ASSERT_LT(exact.p, 1900.0);
+  const CylinderModel c = expanding_rings(ring, 8);
+  const Solution s = solve_with_heat(c.model);
+  ASSERT_TRUE(s.thermal.has_value());
+  ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+  EXPECT_GE(s.thermal->passes, 3);
+  ASSERT_EQ(s.contact.size(), 1u);
+  for (const ContactPointResult& point : s.contact[0].points) {
+    EXPECT_NEAR(point.pressure, exact.p, 0.01 * exact.p) << "side A point at z = " << point.z;
+  }
+  Cylinders t = ring.t;
+  t.h = exact.h;
+  const int n = c.inner.ni;
+  for (const int k : c.inner.nodes) {
+    EXPECT_NEAR(s.thermal->T[k], t.exact(c.model.nodes[k].r, true), 0.01 * (t.Ta - t.Tc)) << "inner node " << k;
+  }
+  for (const int k : c.outer.nodes) {
+    EXPECT_NEAR(s.thermal->T[k], t.exact(c.model.nodes[k].r, false), 0.01 * (t.Ta - t.Tc)) << "outer node " << k;
+  }
+  const double jump = s.thermal->T[c.inner.at(n, 0)] - s.thermal->T[c.outer.at(0, 0)];
+  EXPECT_NEAR(jump, t.jump(), 0.01 * t.jump());
+}
+
+// Transient, the same rings starting cold: the first interval conducts through the gas only; at each
+// output time the stress step's contact state sets the conductances of the next (transient_coupling.hpp).
+// By t = 32 (about a hundred of the slowest mode's time constants) the run must sit on the steady
+// coupled solution within 0.5 %, having refactorized only when an output time changed the conductances.
+TEST(ThermalContact, TransientRunWithContactConductanceApproachesTheSteadyCoupledSolution) {
+  const Ring1D ring = heated_ring();
+  CylinderModel c = expanding_rings(ring, 4);
+  Model& m = c.model;
+  const auto [steady, s] = testing::steady_then_settling_transient(m);
+  ASSERT_TRUE(s.thermal.has_value() && steady.thermal.has_value());
+  ASSERT_EQ(s.steps.size(), 7u);
+  EXPECT_EQ(s.thermal->time_steps, 128);
+  EXPECT_LE(s.thermal->factorizations, 7);
+  // The early interval ran with the gas's conductance, the late ones touching: the first output time's
+  // interface jump is far larger than the last one's.
+  const int n = c.inner.ni;
+  const auto jump = [&](const std::vector<double>& T) { return T[c.inner.at(n, 0)] - T[c.outer.at(0, 0)]; };
+  EXPECT_GT(jump(s.thermal->history.front()), 1.5 * jump(s.thermal->history.back()));
+  for (std::size_t k = 0; k < m.nodes.size(); ++k) {
+    EXPECT_NEAR(s.thermal->T[k], steady.thermal->T[k], 0.005 * (ring.t.Ta - ring.t.Tc)) << "node " << k;
+  }
+  ASSERT_EQ(s.contact.size(), 1u);
+  for (std::size_t j = 0; j < s.contact[0].points.size(); ++j) {
+    const double p = steady.contact[0].points[j].pressure;
+    EXPECT_NEAR(s.contact[0].points[j].pressure, p, 0.005 * p) << "side A point " << j;
+  }
 }
 
 }  // namespace
