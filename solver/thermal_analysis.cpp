@@ -80,6 +80,30 @@ class ConductionSolver {
   int factorizations_ = 0;
 };
 
+/// A row of `kind` at position `index` with the extremes of T filled in.
+ThermalRecord temperature_row(ThermalRowKind kind, int index, std::span<const double> T) {
+  ThermalRecord row;
+  row.kind = kind;
+  row.index = index;
+  if (!T.empty()) {
+    const auto [lowest, highest] = std::minmax_element(T.begin(), T.end());
+    row.min_T = *lowest;
+    row.max_T = *highest;
+  }
+  return row;
+}
+
+/// The row of a steady pass: its conduction solve and its change from the previous pass's T.
+void report_steady(IterationObserver* observer, const ThermalResult& heat, int pass, double pass_change) {
+  if (!observer) return;
+  ThermalRecord row = temperature_row(ThermalRowKind::steady, pass, heat.T);
+  row.pass = pass;
+  row.iterations = heat.iterations;
+  row.max_change = heat.last_change;
+  row.pass_change = pass_change;
+  observer->on_thermal(row);
+}
+
 bool touching(GapState s) { return s == GapState::closed || s == GapState::overclosed; }
 
 }  // namespace
@@ -120,6 +144,7 @@ ThermalResult solve_steady_conduction(const Model& model, std::span<const double
     const bool settled = same_conductivities(k_next, k) || change <= steady_tolerance * (1.0 + largest_magnitude(T));
     if (settled) {
       result.iterations = pass;
+      result.last_change = change;
       result.factorizations = solver.factorizations();
       result.flux = system.fluxes(k_next, T);
       result.T = std::move(T);
@@ -134,7 +159,8 @@ ThermalResult solve_steady_conduction(const Model& model, std::span<const double
   throw SolverError(text.str());
 }
 
-ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance) {
+ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance,
+                                         IterationObserver* observer) {
   const Thermal& thermal = *model.thermal;
   ConductionSolver solver(model);
   const ThermalSystem& system = solver.system();
@@ -147,16 +173,26 @@ ThermalResult solve_transient_conduction(const Model& model, std::span<const dou
   double t = 0.0;
   for (const double output : thermal.output_times) {
     const double start = t;
+    double step_change = 0.0;  // the largest single-step change of this interval, for its row
     for (long taken = 1; output - t > sliver; ++taken) {
       const double remaining = output - t;
       const double dt = std::abs(remaining - step) <= sliver ? step : std::min(step, remaining);
-      T = solver.solve(system.conductivities(T), 1.0 / dt, T, gap_conductance, {});
+      std::vector<double> next = solver.solve(system.conductivities(T), 1.0 / dt, T, gap_conductance, {});
+      if (observer) step_change = std::max(step_change, largest_change(next, T));
+      T = std::move(next);
       t = remaining - dt <= sliver ? output : start + static_cast<double>(taken) * step;
       ++result.time_steps;
     }
     t = output;
     result.times.push_back(output);
     result.history.push_back(T);
+    if (observer) {
+      ThermalRecord row = temperature_row(ThermalRowKind::transient, static_cast<int>(result.times.size()), T);
+      row.time = output;
+      row.time_steps = result.time_steps;
+      row.max_change = step_change;
+      observer->on_thermal(row);
+    }
   }
   result.factorizations = solver.factorizations();
   result.flux = system.fluxes(system.conductivities(T), T);
@@ -198,12 +234,13 @@ Solution solve_with_heat(const Model& model, IterationObserver* observer, const 
       throw SolverError("conduction across gap elements and contact pairs is solved for steady runs only; a "
                         "transient run with a conductance is not supported yet");
     }
-    ThermalResult heat = solve_transient_conduction(model);
+    ThermalResult heat = solve_transient_conduction(model, {}, observer);
     Solution s = solve(with_temperature_steps(model, heat), observer, resume, options, cache, contact);
     s.thermal = std::move(heat);
     return s;
   }
   ThermalResult heat = solve_steady_conduction(model, H, pairs.conductances({}));
+  report_steady(observer, heat, 1, 0.0);
   Solution s = solve(with_temperatures(model, heat.T), observer, resume, options, cache, contact);
   if (H.empty() && pairs.row_count() == 0) {
     s.thermal = std::move(heat);
@@ -222,6 +259,7 @@ Solution solve_with_heat(const Model& model, IterationObserver* observer, const 
     const double change = largest_change(next.T, heat.T);
     heat = std::move(next);
     heat.passes = pass;
+    report_steady(observer, heat, pass, change);
     s = solve(with_temperatures(model, heat.T), observer, nullptr, options, cache, contact);
     if (states(s) == before && change <= coupling_tolerance * (1.0 + largest_magnitude(heat.T))) {
       s.thermal = std::move(heat);

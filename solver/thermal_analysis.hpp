@@ -55,8 +55,10 @@ std::vector<double> gap_conductances(const Model& model, std::span<const GapResu
 ThermalResult solve_steady_conduction(const Model& model, std::span<const double> gap_conductance = {},
                                       std::span<const double> contact_conductance = {});
 
-/// The transient temperatures at each output time.
-ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance = {});
+/// The transient temperatures at each output time; observer (optional) receives a ThermalRecord
+/// at each output time.
+ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance = {},
+                                         IterationObserver* observer = nullptr);
 
 /// The model with node temperatures T as its loads, in `loads` and in every step's loads.
 Model with_temperatures(const Model& model, const std::vector<double>& T);
@@ -67,6 +69,10 @@ Model with_temperature_steps(const Model& model, const ThermalResult& transient)
 
 /// solve() for any model: without `thermal` exactly solve(); with it, the conduction first (and the
 /// thermal-contact passes for conducting gaps and pairs), then the stress analysis, and the result's thermal.
+/// The observer receives a ThermalRecord (thermal_record.hpp) per steady pass or transient output
+/// time before the stress iterations that use it. A resumed transient run recomputes the
+/// conduction (the same numbers, the same rows) and resumes the stress analysis at the state's load
+/// step: its output time, and with it the temperatures, follow from the state's position.
 Solution solve_with_heat(const Model& model, IterationObserver* observer = nullptr,
                          const RestartState* resume = nullptr, const ResumeOptions& options = {},
                          const OrderingCache* cache = nullptr, const ContactMethodFactory& contact = make_contact_method);
