@@ -289,19 +289,17 @@ JobStore::Page JobStore::list(std::optional<JobState> state, int page_size, std:
 }
 
 std::vector<std::string> JobStore::iterations(std::int64_t id, int after) {
-  auto db = pool_->lease();
-  require_job(*db, id);
-  Statement q = db->prepare("SELECT row FROM iterations WHERE job_id = ? AND iteration > ? ORDER BY iteration");
-  q.bind(1, id).bind(2, after);
-  std::vector<std::string> rows;
-  while (q.step()) rows.push_back(q.text(0));
-  return rows;
+  return rows_after(id, "SELECT row FROM iterations WHERE job_id = ? AND iteration > ? ORDER BY iteration", after);
 }
 
 std::vector<std::string> JobStore::thermal_rows(std::int64_t id, int after) {
+  return rows_after(id, "SELECT row FROM thermal_rows WHERE job_id = ? AND row_index > ? ORDER BY row_index", after);
+}
+
+std::vector<std::string> JobStore::rows_after(std::int64_t id, const char* query, int after) {
   auto db = pool_->lease();
   require_job(*db, id);
-  Statement q = db->prepare("SELECT row FROM thermal_rows WHERE job_id = ? AND row_index > ? ORDER BY row_index");
+  Statement q = db->prepare(query);
   q.bind(1, id).bind(2, after);
   std::vector<std::string> rows;
   while (q.step()) rows.push_back(q.text(0));

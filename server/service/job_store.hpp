@@ -261,6 +261,8 @@ class JobStore {
   void open_writable();
   void open_read_only(const StoreError& why);
   void require_writable() const;
+  /// The rows `query` selects (job id and `after` bound as its two parameters); JobNotFound without the job.
+  [[nodiscard]] std::vector<std::string> rows_after(std::int64_t id, const char* query, int after);
   /// A write failed: for want of space, the store is not writable until recover_writes.
   void note_failure(const StoreError& e);
   /// A run's commit failed for want of space: the job becomes interrupted, now or (held in memory)
