@@ -418,15 +418,22 @@ std::optional<ClaimedJob> JobStore::claim(const std::string& worker, bool with_t
 void JobStore::record_iteration(std::int64_t id, int iteration, const std::string& row,
                                 const std::vector<std::uint8_t>& state, const std::optional<CommitTime>& previous,
                                 const Lease* lease) {
+  run_write(id, [&](Connection& db, const JobRecord&) {
+    if (lease && !check_lease(db, id, *lease, iteration, row)) return false;  // committed before: a retry
+    write_iteration(db, id, iteration, row, state, previous);
+    return true;
+  });
+}
+
+void JobStore::run_write(std::int64_t id, const std::function<bool(Connection&, const JobRecord&)>& write) {
   require_writable();
   int attempt = 0;
   try {
     auto db = pool_->lease();
     WriteTransaction tx(*db);
-    attempt = require_job(*db, id).attempts;
-    if (lease && !check_lease(*db, id, *lease, iteration, row)) return;  // committed before: a retry
-    write_iteration(*db, id, iteration, row, state, previous);
-    tx.commit();
+    const JobRecord job = require_job(*db, id);
+    attempt = job.attempts;
+    if (write(*db, job)) tx.commit();
   } catch (const StoreError& e) {
     note_failure(e);
     if (e.no_space() && attempt > 0) hand_on(id, attempt, e);
@@ -462,31 +469,21 @@ void JobStore::write_iteration(Connection& db, std::int64_t id, int iteration, c
 }
 
 void JobStore::record_thermal(std::int64_t id, int index, const std::string& row, const Lease* lease) {
-  require_writable();
-  int attempt = 0;
-  try {
-    auto db = pool_->lease();
-    WriteTransaction tx(*db);
-    const JobRecord job = require_job(*db, id);
-    attempt = job.attempts;
+  run_write(id, [&](Connection& db, const JobRecord& job) {
     // A thermal row comes before the next iteration: the lease must be one that may commit it.
-    if (lease) check_lease(*db, id, *lease, job.iteration + 1, row);
-    Statement old = db->prepare("SELECT row FROM thermal_rows WHERE job_id = ? AND row_index = ?");
+    if (lease) check_lease(db, id, *lease, job.iteration + 1, row);
+    Statement old = db.prepare("SELECT row FROM thermal_rows WHERE job_id = ? AND row_index = ?");
     old.bind(1, id).bind(2, index);
     // A resumed run reports its rows again: the same row changes nothing and announces nothing.
-    if (old.step() && old.text(0) == row) return;
-    db->prepare("INSERT OR REPLACE INTO thermal_rows (job_id, row_index, row) VALUES (?, ?, ?)")
+    if (old.step() && old.text(0) == row) return false;
+    db.prepare("INSERT OR REPLACE INTO thermal_rows (job_id, row_index, row) VALUES (?, ?, ?)")
         .bind(1, id)
         .bind(2, index)
         .bind(3, row)
         .run();
-    add_event(*db, id, "thermal", row);
-    tx.commit();
-  } catch (const StoreError& e) {
-    note_failure(e);
-    if (e.no_space() && attempt > 0) hand_on(id, attempt, e);
-    throw;
-  }
+    add_event(db, id, "thermal", row);
+    return true;
+  });
 }
 
 bool JobStore::cancel_requested(std::int64_t id) {

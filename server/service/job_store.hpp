@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -263,6 +264,9 @@ class JobStore {
   void require_writable() const;
   /// The rows `query` selects (job id and `after` bound as its two parameters); JobNotFound without the job.
   [[nodiscard]] std::vector<std::string> rows_after(std::int64_t id, const char* query, int after);
+  /// One write of a run's commit in a write transaction: `write` (given the job as the transaction
+  /// reads it) returns whether to commit. A failure for want of space hands the job on and rethrows.
+  void run_write(std::int64_t id, const std::function<bool(Connection&, const JobRecord&)>& write);
   /// A write failed: for want of space, the store is not writable until recover_writes.
   void note_failure(const StoreError& e);
   /// A run's commit failed for want of space: the job becomes interrupted, now or (held in memory)
