@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "thermal_record.hpp"
+
 namespace saasgaps {
 
 struct RestartState;
@@ -67,6 +69,9 @@ class IterationObserver {
   virtual void on_iteration(const IterationRecord& row, const RestartState& state) = 0;
   /// Polled at every iteration boundary: true stops the run there, its state kept.
   virtual bool stop_requested() { return false; }
+  /// Called after each thermal row of a run with `thermal` (thermal_record.hpp), before the stress
+  /// iterations that use its temperatures. An observer that shows only stress iterations ignores it.
+  virtual void on_thermal(const ThermalRecord& /*row*/) {}
 };
 
 }  // namespace saasgaps

@@ -111,6 +111,7 @@ struct ThermalResult {
   std::vector<double> times;      ///< transient: the output times (empty when steady)
   std::vector<std::vector<double>> history;  ///< transient: T per node at each output time
   int iterations = 0;             ///< steady: conduction solves of the k(T) iteration (last pass)
+  double last_change = 0.0;       ///< steady: largest node temperature change of the last of those solves
   int passes = 1;                 ///< thermal-contact passes (conducting gaps), else 1
   int time_steps = 0;             ///< transient: steps taken
   int factorizations = 0;         ///< of the conduction matrix

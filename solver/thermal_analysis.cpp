@@ -83,6 +83,30 @@ class ConductionSolver {
   int factorizations_ = 0;
 };
 
+/// A row of `kind` at position `index` with the extremes of T filled in.
+ThermalRecord temperature_row(ThermalRowKind kind, int index, std::span<const double> T) {
+  ThermalRecord row;
+  row.kind = kind;
+  row.index = index;
+  if (!T.empty()) {
+    const auto [lowest, highest] = std::minmax_element(T.begin(), T.end());
+    row.min_T = *lowest;
+    row.max_T = *highest;
+  }
+  return row;
+}
+
+/// The row of a steady pass: its conduction solve and its change from the previous pass's T.
+void report_steady(IterationObserver* observer, const ThermalResult& heat, int pass, double pass_change) {
+  if (!observer) return;
+  ThermalRecord row = temperature_row(ThermalRowKind::steady, pass, heat.T);
+  row.pass = pass;
+  row.iterations = heat.iterations;
+  row.max_change = heat.last_change;
+  row.pass_change = pass_change;
+  observer->on_thermal(row);
+}
+
 bool touching(GapState s) { return s == GapState::closed || s == GapState::overclosed; }
 
 }  // namespace
@@ -125,6 +149,7 @@ ThermalResult solve_steady_conduction(const Model& model, std::span<const double
                          change <= steady_tolerance * (1.0 + largest_magnitude(T));
     if (settled) {
       result.iterations = pass;
+      result.last_change = change;
       result.factorizations = solver.factorizations();
       result.flux = system.fluxes(k_next, T);
       result.T = std::move(T);
@@ -140,7 +165,8 @@ ThermalResult solve_steady_conduction(const Model& model, std::span<const double
 }
 
 ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance,
-                                         std::span<const double> contact_conductance, const OutputTimeHook& at_output) {
+                                         std::span<const double> contact_conductance, const OutputTimeHook& at_output,
+                                         IterationObserver* observer) {
   const Thermal& thermal = *model.thermal;
   ConductionSolver solver(model);
   const ThermalSystem& system = solver.system();
@@ -157,6 +183,7 @@ ThermalResult solve_transient_conduction(const Model& model, std::span<const dou
   for (std::size_t k = 0; k < thermal.output_times.size(); ++k) {
     const double output = thermal.output_times[k];
     const double start = t;
+    double step_change = 0.0;  // the largest single-step change of this interval, for its row
     for (long taken = 1; output - t > sliver; ++taken) {
       const double remaining = output - t;
       const double dt = std::abs(remaining - step) <= sliver ? step : std::min(step, remaining);
@@ -173,6 +200,7 @@ ThermalResult solve_transient_conduction(const Model& model, std::span<const dou
                             std::to_string(change));
         }
       }
+      if (observer) step_change = std::max(step_change, largest_change(guess, T));
       T = std::move(guess);
       t = remaining - dt <= sliver ? output : start + static_cast<double>(taken) * step;
       ++result.time_steps;
@@ -180,6 +208,13 @@ ThermalResult solve_transient_conduction(const Model& model, std::span<const dou
     t = output;
     result.times.push_back(output);
     result.history.push_back(T);
+    if (observer) {
+      ThermalRecord row = temperature_row(ThermalRowKind::transient, static_cast<int>(result.times.size()), T);
+      row.time = output;
+      row.time_steps = result.time_steps;
+      row.max_change = step_change;
+      observer->on_thermal(row);
+    }
     if (!at_output) continue;
     std::optional<InterfaceConductances> next = at_output(k, T);
     if (!next) break;
@@ -222,12 +257,13 @@ Solution solve_with_heat(const Model& model, IterationObserver* observer, const 
   const ContactConductance pairs(model);
   if (model.thermal->type == ThermalType::transient) {
     if (!H.empty() || pairs.row_count() > 0) return solve_coupled_transient(model, observer, resume, options, cache, contact);
-    ThermalResult heat = solve_transient_conduction(model);
+    ThermalResult heat = solve_transient_conduction(model, {}, {}, {}, observer);
     Solution s = solve(with_temperature_steps(model, heat), observer, resume, options, cache, contact);
     s.thermal = std::move(heat);
     return s;
   }
   ThermalResult heat = solve_steady_conduction(model, H, pairs.conductances({}));
+  report_steady(observer, heat, 1, 0.0);
   Solution s = solve(with_temperatures(model, heat.T), observer, resume, options, cache, contact);
   if (H.empty() && pairs.row_count() == 0) {
     s.thermal = std::move(heat);
@@ -246,6 +282,7 @@ Solution solve_with_heat(const Model& model, IterationObserver* observer, const 
     const double change = largest_change(next.T, heat.T);
     heat = std::move(next);
     heat.passes = pass;
+    report_steady(observer, heat, pass, change);
     s = solve(with_temperatures(model, heat.T), observer, nullptr, options, cache, contact);
     if (states(s) == before && change <= coupling_tolerance * (1.0 + largest_magnitude(heat.T))) {
       s.thermal = std::move(heat);

@@ -78,10 +78,11 @@ using OutputTimeHook =
 /// solve_steady_conduction (empty contact_conductance: every point at its initial gap), the
 /// conductances of the steps up to the first output time; at_output (optional) replaces them after
 /// each output time (a change refactorizes, an unchanged matrix reuses its factorization). A run
-/// that at_output ends has the output times up to that one only.
+/// that at_output ends has the output times up to that one only. observer (optional) receives a
+/// ThermalRecord at each output time, before at_output is called.
 ThermalResult solve_transient_conduction(const Model& model, std::span<const double> gap_conductance = {},
                                          std::span<const double> contact_conductance = {},
-                                         const OutputTimeHook& at_output = {});
+                                         const OutputTimeHook& at_output = {}, IterationObserver* observer = nullptr);
 
 /// The model with node temperatures T as its loads, in `loads` and in every step's loads.
 Model with_temperatures(const Model& model, const std::vector<double>& T);
@@ -92,6 +93,10 @@ Model with_temperature_steps(const Model& model, const ThermalResult& transient)
 
 /// solve() for any model: without `thermal` exactly solve(); with it, the conduction first (and the
 /// thermal-contact passes for conducting gaps and pairs), then the stress analysis, and the result's thermal.
+/// The observer receives a ThermalRecord (thermal_record.hpp) per steady pass or transient output
+/// time before the stress iterations that use it. A resumed transient run recomputes the
+/// conduction (the same numbers, the same rows) and resumes the stress analysis at the state's load
+/// step: its output time, and with it the temperatures, follow from the state's position.
 Solution solve_with_heat(const Model& model, IterationObserver* observer = nullptr,
                          const RestartState* resume = nullptr, const ResumeOptions& options = {},
                          const OrderingCache* cache = nullptr, const ContactMethodFactory& contact = make_contact_method);

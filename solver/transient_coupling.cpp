@@ -59,7 +59,7 @@ Solution solve_coupled_transient(const Model& model, IterationObserver* observer
     if (s.status != RunStatus::converged) return std::nullopt;
     return InterfaceConductances{gap_conductances(model, s.gaps), pairs.conductances(s.contact)};
   };
-  s.thermal = solve_transient_conduction(model, gap_conductances(model, {}), pairs.conductances({}), at_output);
+  s.thermal = solve_transient_conduction(model, gap_conductances(model, {}), pairs.conductances({}), at_output, observer);
   return s;
 }
 

@@ -11,6 +11,7 @@
 #include "cli/progress_table.hpp"
 #include "cli/usage.hpp"
 #include "io/history_json.hpp"
+#include "io/thermal_row_json.hpp"
 
 namespace saasgaps::cli {
 
@@ -52,6 +53,15 @@ class Watcher {
       }
       view_.iteration = view_.row->iteration;
       if (!live_) table_.print(*view_.row);
+    } else if (event.name == "thermal") {
+      try {
+        const ThermalRecord row = io::thermal_row_from_json(data);
+        // The live line shows the stress iterations; a thermal row gets a line of its own above it.
+        if (live_) std::cout << "\r\033[K";
+        table_.print(row);
+      } catch (const json::exception&) {
+        return;  // a row of another version: skipped like an unknown iteration row
+      }
     }
     if (live_) std::cout << "\r\033[K" << live_line(job_, view_);
     std::cout.flush();

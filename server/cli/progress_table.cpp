@@ -143,6 +143,23 @@ std::string live_summary(const IterationRecord& r) {
   return line;
 }
 
+std::string ProgressTable::thermal_text(const ThermalRecord& r) {
+  char text[240];
+  if (r.kind == ThermalRowKind::steady) {
+    std::snprintf(text, sizeof text, "thermal pass %d: %d solve%s, max |dT| %.6g, pass |dT| %.6g, T %.6g .. %.6g", r.pass,
+                  r.iterations, r.iterations == 1 ? "" : "s", r.max_change, r.pass_change, r.min_T, r.max_T);
+  } else {
+    std::snprintf(text, sizeof text, "thermal t = %.6g: %d step%s, max step |dT| %.6g, T %.6g .. %.6g", r.time,
+                  r.time_steps, r.time_steps == 1 ? "" : "s", r.max_change, r.min_T, r.max_T);
+  }
+  return text;
+}
+
+void ProgressTable::print(const ThermalRecord& row) {
+  out_ << thermal_text(row) << '\n';
+  out_.flush();
+}
+
 void ProgressTable::print(const IterationRecord& row) {
   // A row that first shows friction (a watched job: the model is not known) brings the friction
   // columns, under a header of its own.

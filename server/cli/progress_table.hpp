@@ -29,6 +29,13 @@ class ProgressTable {
   explicit ProgressTable(std::ostream& out, bool wide = false, bool friction = false)
       : out_(out), wide_(wide), friction_(friction) {}
   void print(const IterationRecord& row);
+  /// A thermal row on a line of its own, between the table's rows (thermal_text).
+  void print(const ThermalRecord& row);
+
+  /// "thermal pass 2: 3 solves, max |dT| 1.2e-03, pass |dT| 4.5, T 70 .. 500" (steady) or
+  /// "thermal t = 0.5: 10 steps, max step |dT| 12.3, T 70 .. 500" (transient), numbers to 6
+  /// significant digits.
+  [[nodiscard]] static std::string thermal_text(const ThermalRecord& row);
 
   /// The header line and a row without a line end (the live one-line display of `saasgaps watch`).
   [[nodiscard]] std::string header_text(const IterationRecord& row) const;

@@ -37,6 +37,10 @@ class CommandLineObserver final : public IterationObserver {
     last_iteration_ = state.iteration;
   }
 
+  void on_thermal(const ThermalRecord& row) override {
+    if (!options_.quiet) table_.print(row);
+  }
+
   bool stop_requested() override { return options_.stop_after && last_iteration_ >= *options_.stop_after; }
 
  private:

@@ -114,9 +114,18 @@ json job_json(const JobRecord& j) {
           {"links",
            {{"self", self},
             {"iterations", self + "/iterations"},
+            {"thermal", self + "/thermal"},
             {"events", self + "/events"},
             {"result", self + "/result"},
             {"model", self + "/model"}}}};
+}
+
+/// {"job": id, "<member>": [rows]}: the rows are stored as JSON text, spliced rather than parsed and
+/// printed again.
+std::string rows_page(std::int64_t id, const char* member, const std::vector<std::string>& rows) {
+  std::string page = "{\"job\":" + std::to_string(id) + ",\"" + member + "\":[";
+  for (std::size_t i = 0; i < rows.size(); ++i) page += (i ? "," : "") + rows[i];
+  return page + "]}";
 }
 
 /// A job as GET /v1/jobs lists it: the job resource without per-gap arrays (the last row's
@@ -376,12 +385,12 @@ void HttpApi::install(httplib::Server& server) {
   server.Get(R"(/v1/jobs/(\d+)/iterations)", [this](const httplib::Request& req, httplib::Response& res) {
     const std::int64_t id = job_in_path(req);
     const auto after = integer_parameter(req, "after", 0, 1'000'000'000).value_or(0);
-    std::string rows;
-    for (const std::string& row : store_.iterations(id, static_cast<int>(after))) {
-      rows += (rows.empty() ? "" : ",") + row;
-    }
-    // The rows are stored as JSON text: splice them rather than parse and print them again.
-    res.set_content("{\"job\":" + std::to_string(id) + ",\"iterations\":[" + rows + "]}", "application/json");
+    res.set_content(rows_page(id, "iterations", store_.iterations(id, static_cast<int>(after))), "application/json");
+  });
+  server.Get(R"(/v1/jobs/(\d+)/thermal)", [this](const httplib::Request& req, httplib::Response& res) {
+    const std::int64_t id = job_in_path(req);
+    const auto after = integer_parameter(req, "after", 0, 1'000'000'000).value_or(0);
+    res.set_content(rows_page(id, "thermal", store_.thermal_rows(id, static_cast<int>(after))), "application/json");
   });
   server.Get(R"(/v1/jobs/(\d+)/events)", [this](const httplib::Request& req, httplib::Response& res) { events(req, res); });
   server.Get(R"(/v1/jobs/(\d+)/result)", [this](const httplib::Request& req, httplib::Response& res) {

@@ -6,6 +6,7 @@
 #include "io/model_reader.hpp"
 #include "io/result_writer.hpp"
 #include "io/stored_state.hpp"
+#include "io/thermal_row_json.hpp"
 #include "service/commit_pipeline.hpp"
 #include "service/log.hpp"
 #include "service/metrics.hpp"
@@ -32,6 +33,13 @@ class SinkObserver final : public IterationObserver {
     });
   }
 
+  /// Thermal rows commit on the pipeline's thread too, in order with the iterations.
+  void on_thermal(const ThermalRecord& row) override {
+    pipeline_.wait();
+    thermal_row_ = io::thermal_row_text(row);
+    pipeline_.post([this, index = row.index] { sink_.thermal(index, thermal_row_); });
+  }
+
   /// A failed commit stops the run at once: execute_run then rethrows the failure.
   bool stop_requested() override { return shutting_down_ || pipeline_.failed() || sink_.stop_requested(); }
 
@@ -41,6 +49,7 @@ class SinkObserver final : public IterationObserver {
   const std::atomic<bool>& shutting_down_;
   CommitPipeline& pipeline_;
   std::string row_;
+  std::string thermal_row_;
   RestartState state_;
 };
 

@@ -45,6 +45,9 @@ class RunSink {
   /// on a CommitPipeline's thread while the solver computes the next iteration, so it may run
   /// concurrently with stop_requested (never with another iteration or finish).
   virtual void iteration(int iteration, const std::string& row, const std::vector<std::uint8_t>& state) = 0;
+  /// A thermal history row (io/thermal_row_json.hpp) at position `index` of the run: committed
+  /// when this returns. Called on the CommitPipeline's thread like iteration.
+  virtual void thermal(int index, const std::string& row) = 0;
   /// A cancel was asked for: stop at this iteration boundary. (A sink that learns of a cancel only
   /// from a commit's answer stops one iteration later: the commit overlaps the next iteration.)
   virtual bool stop_requested() = 0;

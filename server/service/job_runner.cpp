@@ -29,6 +29,11 @@ class StoreSink final : public RunSink {
     note_iteration(job_, row);
   }
 
+  void thermal(int index, const std::string& row) override {
+    store_.record_thermal(job_, index, row);
+    hub_.notify();
+  }
+
   bool stop_requested() override { return store_.cancel_requested(job_); }
 
   void finish(JobState state, const std::optional<std::string>& result, const std::optional<std::string>& message,

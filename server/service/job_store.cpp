@@ -91,6 +91,16 @@ extern const std::vector<const char*> migrations = {
     ALTER TABLE jobs ADD COLUMN lease_ticket TEXT;
     ALTER TABLE jobs ADD COLUMN finish_digest TEXT;
     )sql",
+    // 4: the thermal history rows of runs with `thermal` (a table of their own: their key is the
+    // row's index in the run, not an iteration, and a database of older jobs simply has none).
+    R"sql(
+    CREATE TABLE thermal_rows (
+      job_id INTEGER NOT NULL REFERENCES jobs(id) ON DELETE CASCADE,
+      row_index INTEGER NOT NULL,
+      row TEXT NOT NULL,
+      PRIMARY KEY (job_id, row_index)
+    ) WITHOUT ROWID;
+    )sql",
 };
 
 constexpr const char* job_columns =
@@ -279,9 +289,17 @@ JobStore::Page JobStore::list(std::optional<JobState> state, int page_size, std:
 }
 
 std::vector<std::string> JobStore::iterations(std::int64_t id, int after) {
+  return rows_after(id, "SELECT row FROM iterations WHERE job_id = ? AND iteration > ? ORDER BY iteration", after);
+}
+
+std::vector<std::string> JobStore::thermal_rows(std::int64_t id, int after) {
+  return rows_after(id, "SELECT row FROM thermal_rows WHERE job_id = ? AND row_index > ? ORDER BY row_index", after);
+}
+
+std::vector<std::string> JobStore::rows_after(std::int64_t id, const char* query, int after) {
   auto db = pool_->lease();
   require_job(*db, id);
-  Statement q = db->prepare("SELECT row FROM iterations WHERE job_id = ? AND iteration > ? ORDER BY iteration");
+  Statement q = db->prepare(query);
   q.bind(1, id).bind(2, after);
   std::vector<std::string> rows;
   while (q.step()) rows.push_back(q.text(0));
@@ -400,15 +418,22 @@ std::optional<ClaimedJob> JobStore::claim(const std::string& worker, bool with_t
 void JobStore::record_iteration(std::int64_t id, int iteration, const std::string& row,
                                 const std::vector<std::uint8_t>& state, const std::optional<CommitTime>& previous,
                                 const Lease* lease) {
+  run_write(id, [&](Connection& db, const JobRecord&) {
+    if (lease && !check_lease(db, id, *lease, iteration, row)) return false;  // committed before: a retry
+    write_iteration(db, id, iteration, row, state, previous);
+    return true;
+  });
+}
+
+void JobStore::run_write(std::int64_t id, const std::function<bool(Connection&, const JobRecord&)>& write) {
   require_writable();
   int attempt = 0;
   try {
     auto db = pool_->lease();
     WriteTransaction tx(*db);
-    attempt = require_job(*db, id).attempts;
-    if (lease && !check_lease(*db, id, *lease, iteration, row)) return;  // committed before: a retry
-    write_iteration(*db, id, iteration, row, state, previous);
-    tx.commit();
+    const JobRecord job = require_job(*db, id);
+    attempt = job.attempts;
+    if (write(*db, job)) tx.commit();
   } catch (const StoreError& e) {
     note_failure(e);
     if (e.no_space() && attempt > 0) hand_on(id, attempt, e);
@@ -441,6 +466,24 @@ void JobStore::write_iteration(Connection& db, std::int64_t id, int iteration, c
       .bind(4, id)
       .run();
   add_event(db, id, "iteration", row);
+}
+
+void JobStore::record_thermal(std::int64_t id, int index, const std::string& row, const Lease* lease) {
+  run_write(id, [&](Connection& db, const JobRecord& job) {
+    // A thermal row comes before the next iteration: the lease must be one that may commit it.
+    if (lease) check_lease(db, id, *lease, job.iteration + 1, row);
+    Statement old = db.prepare("SELECT row FROM thermal_rows WHERE job_id = ? AND row_index = ?");
+    old.bind(1, id).bind(2, index);
+    // A resumed run reports its rows again: the same row changes nothing and announces nothing.
+    if (old.step() && old.text(0) == row) return false;
+    db.prepare("INSERT OR REPLACE INTO thermal_rows (job_id, row_index, row) VALUES (?, ?, ?)")
+        .bind(1, id)
+        .bind(2, index)
+        .bind(3, row)
+        .run();
+    add_event(db, id, "thermal", row);
+    return true;
+  });
 }
 
 bool JobStore::cancel_requested(std::int64_t id) {

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -134,6 +135,8 @@ class JobStore {
   [[nodiscard]] Page list(std::optional<JobState> state, int page_size, std::optional<std::int64_t> before);
   /// History rows (JSON) with iteration > after, in order.
   [[nodiscard]] std::vector<std::string> iterations(std::int64_t id, int after);
+  /// Thermal history rows (JSON, io/thermal_row_json.hpp) with index > after, in order.
+  [[nodiscard]] std::vector<std::string> thermal_rows(std::int64_t id, int after);
   [[nodiscard]] std::string model(std::int64_t id);
   /// The result document; JobConflict while running, JobNotFound (for the result) when none exists.
   [[nodiscard]] std::optional<std::string> result(std::int64_t id);
@@ -182,6 +185,12 @@ class JobStore {
   void record_iteration(std::int64_t id, int iteration, const std::string& row,
                         const std::vector<std::uint8_t>& state, const std::optional<CommitTime>& previous = {},
                         const Lease* lease = nullptr);
+  /// One thermal history row of a run with `thermal` (index: its position in the run) and its
+  /// `thermal` event, in one transaction. A row already stored with the same text (a resumed run
+  /// reports its rows again) is left alone without an event; a different one replaces it. With a
+  /// lease, LeaseConflict unless the lease may commit the job's next iteration. A failure for want
+  /// of space hands the job on, as record_iteration does.
+  void record_thermal(std::int64_t id, int index, const std::string& row, const Lease* lease = nullptr);
   [[nodiscard]] bool cancel_requested(std::int64_t id);
   /// A run ended: its final state, result document and message (and the commit time of its last
   /// iteration, added to that row as commit_seconds). With a lease, LeaseConflict unless it holds
@@ -253,6 +262,11 @@ class JobStore {
   void open_writable();
   void open_read_only(const StoreError& why);
   void require_writable() const;
+  /// The rows `query` selects (job id and `after` bound as its two parameters); JobNotFound without the job.
+  [[nodiscard]] std::vector<std::string> rows_after(std::int64_t id, const char* query, int after);
+  /// One write of a run's commit in a write transaction: `write` (given the job as the transaction
+  /// reads it) returns whether to commit. A failure for want of space hands the job on and rethrows.
+  void run_write(std::int64_t id, const std::function<bool(Connection&, const JobRecord&)>& write);
   /// A write failed: for want of space, the store is not writable until recover_writes.
   void note_failure(const StoreError& e);
   /// A run's commit failed for want of space: the job becomes interrupted, now or (held in memory)

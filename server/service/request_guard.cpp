@@ -67,7 +67,7 @@ bool is_media_type(const std::string& content_type, const std::string& type) { r
 
 /// The routes of the remote worker protocol (worker_api.cpp) that take a body.
 bool is_worker_route(const std::string& path) {
-  static const std::regex worker(R"(/v1/jobs/\d+/(lease|work/iterations|work/finish))");
+  static const std::regex worker(R"(/v1/jobs/\d+/(lease|work/iterations|work/thermal|work/finish))");
   return std::regex_match(path, worker);
 }
 

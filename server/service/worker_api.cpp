@@ -47,7 +47,8 @@ void install_worker_api(httplib::Server& server, JobStore& store, EventHub& hub,
                       req.method + " " + req.path + ": no such resource; the remote-worker routes exist only on a "
                       "service started with --executor slurm, for the workers it submits to Slurm");
     };
-    for (const char* route : {R"(/v1/jobs/(\d+)/lease)", R"(/v1/jobs/(\d+)/work/iterations)", R"(/v1/jobs/(\d+)/work/finish)"}) {
+    for (const char* route : {R"(/v1/jobs/(\d+)/lease)", R"(/v1/jobs/(\d+)/work/iterations)",
+                              R"(/v1/jobs/(\d+)/work/thermal)", R"(/v1/jobs/(\d+)/work/finish)"}) {
       server.Post(route, absent);
     }
     server.Get(R"(/v1/jobs/(\d+)/work)", absent);
@@ -78,6 +79,14 @@ void install_worker_api(httplib::Server& server, JobStore& store, EventHub& hub,
     note_iteration(id, it.row);
     res.set_content(nlohmann::json{{"committed", it.iteration}, {"stop", store.cancel_requested(id)}}.dump(),
                     "application/json");
+  });
+  server.Post(R"(/v1/jobs/(\d+)/work/thermal)", [&store, &hub](const httplib::Request& req, httplib::Response& res) {
+    const std::int64_t id = job_in_path(req);
+    const Lease lease = request_lease(req);
+    const protocol::ThermalRow t = decoded(req, protocol::decode_thermal);
+    store.record_thermal(id, t.index, t.row, &lease);
+    hub.notify();
+    res.status = 204;
   });
   server.Post(R"(/v1/jobs/(\d+)/work/finish)", [&store, &hub](const httplib::Request& req, httplib::Response& res) {
     const std::int64_t id = job_in_path(req);

@@ -110,6 +110,10 @@ class HttpSink final : public RunSink {
     service_.log("iteration " + std::to_string(iteration) + " committed" + (stop_.load() ? "; a stop was requested" : ""));
   }
 
+  void thermal(int index, const std::string& row) override {
+    service_.send("POST", path_ + "/work/thermal", protocol::encode_thermal(index, row));
+  }
+
   bool stop_requested() override { return stop_; }
 
   void finish(JobState state, const std::optional<std::string>& result, const std::optional<std::string>& message,

@@ -119,6 +119,19 @@ Iteration decode_iteration(const std::string& body) {
   return it;
 }
 
+std::string encode_thermal(int index, const std::string& row) {
+  const std::vector<std::uint8_t> cbor = json::to_cbor(json{{"index", index}, {"row", row}});
+  return {cbor.begin(), cbor.end()};
+}
+
+ThermalRow decode_thermal(const std::string& body) {
+  const json j = decode(body);
+  ThermalRow t{field<int>(j, "index"), field<std::string>(j, "row")};
+  if (t.index < 1) throw std::invalid_argument("the body's \"index\" must be >= 1");
+  require_json(t.row, "row");
+  return t;
+}
+
 std::string encode_finish(const Finish& finish) {
   json j = {{"state", to_string(finish.state)}};
   if (finish.result) j["result"] = *finish.result;

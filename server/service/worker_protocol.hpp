@@ -3,6 +3,7 @@
 /// CBOR maps, so restart states travel as the bytes the store keeps, not as base64 or JSON numbers:
 ///   GET  /v1/jobs/{id}/work              -> {job, attempt, model, state: bytes|null, settings}
 ///   POST /v1/jobs/{id}/work/iterations   <- {iteration, row, state: bytes}   -> JSON {stop}
+///   POST /v1/jobs/{id}/work/thermal      <- {index, row}                     -> 204
 ///   POST /v1/jobs/{id}/work/finish       <- {state, result?, message?, error?, model_digest}
 ///   POST /v1/jobs/{id}/lease             -> JSON {attempt, secret}
 /// The lease request carries the run's single-use ticket in the Saasgaps-Ticket header,
@@ -44,6 +45,14 @@ struct Iteration {
 };
 std::string encode_iteration(int iteration, const std::string& row, const std::vector<std::uint8_t>& state);
 Iteration decode_iteration(const std::string& body);
+
+/// A thermal history row (io/thermal_row_json.hpp) and its index in the run.
+struct ThermalRow {
+  int index = 0;
+  std::string row;
+};
+std::string encode_thermal(int index, const std::string& row);
+ThermalRow decode_thermal(const std::string& body);
 
 struct Finish {
   JobState state = JobState::failed;

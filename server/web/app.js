@@ -346,6 +346,17 @@ function exactConvergenceSvg(history) {
   return svg;
 }
 
+// The heat conduction table's columns (GET /v1/jobs/{id}/thermal rows): steady rows by pass,
+// transient rows by output time, as the CLI's thermal lines show them.
+function thermalColumns(row) {
+  const number = value => (typeof value === "number" ? String(Number(value.toPrecision(6))) : "");  // 6 digits, as the CLI
+  const columns = row.kind === "steady"
+    ? [["pass", r => String(r.pass)], ["solves", r => String(r.iterations)], ["max |dT|", r => number(r.max_change)],
+       ["pass |dT|", r => number(r.pass_change)]]
+    : [["time", r => number(r.time)], ["steps", r => String(r.time_steps)], ["max step |dT|", r => number(r.max_change)]];
+  return columns.concat([["min T", r => number(r.min_T)], ["max T", r => number(r.max_T)]]);
+}
+
 async function showJob(id) {
   view.replaceChildren(document.getElementById("job-view").content.cloneNode(true));
   const $ = selector => view.querySelector(selector);
@@ -412,6 +423,26 @@ async function showJob(id) {
     $("#iterations tbody").insertBefore(tr, later === undefined ? null : rows.get(later));
   }
   const historyRows = () => [...rowData.keys()].sort((a, b) => a - b).map(k => rowData.get(k));
+
+  const thermalRows = new Map();  // index -> its table row
+  function addThermalRow(row) {
+    if (thermalRows.has(row.index)) return;
+    const columns = thermalColumns(row);
+    if (thermalRows.size === 0) {
+      $("#thermal thead tr").replaceChildren(...columns.map(([title]) => {
+        const th = document.createElement("th");
+        th.textContent = title;
+        return th;
+      }));
+      $("#thermal-section").hidden = false;
+    }
+    const tr = document.createElement("tr");
+    tr.dataset.index = row.index;
+    for (const [, format] of columns) cell(tr, format(row));
+    thermalRows.set(row.index, tr);
+    const later = [...thermalRows.keys()].filter(k => k > row.index).sort((a, b) => a - b)[0];
+    $("#thermal tbody").insertBefore(tr, later === undefined ? null : thermalRows.get(later));
+  }
 
   function showState(job) {
     $("#job-title").textContent = job.title;
@@ -651,16 +682,18 @@ async function showJob(id) {
     } catch (error) { $("#action-status").textContent = error.message; }
   });
 
-  const [job, history, named] = await Promise.all([api(base), api(base + "/iterations"),
-                                                   api(base + "/units").catch(() => ({}))]);
+  const [job, history, named, thermal] = await Promise.all([api(base), api(base + "/iterations"),
+                                                            api(base + "/units").catch(() => ({})),
+                                                            api(base + "/thermal").catch(() => ({ thermal: [] }))]);
   units = named || {};
   const unitNames = Object.entries(units).map(([kind, name]) => `${kind} ${name}`);
   $("#job-units").textContent = unitNames.length ? unitNames.join(", ") : "not named in the model";
   for (const row of history.iterations) addRow(row);
+  for (const row of thermal.thermal) addThermalRow(row);
   showState(job);
   ready("job");
 
-  // The event stream: one event per iteration and per state change. EventSource reconnects by
+  // The event stream: one event per iteration, per thermal row and per state change. EventSource reconnects by
   // itself with Last-Event-ID; the server ends the stream when the job stops changing.
   let source = null;
   function follow() {
@@ -670,6 +703,7 @@ async function showJob(id) {
       addRow(JSON.parse(event.data));
       api(base).then(showState).catch(() => {});
     });
+    source.addEventListener("thermal", event => addThermalRow(JSON.parse(event.data)));
     source.addEventListener("state", () => api(base).then(showState).catch(() => {}));
     source.onerror = () => {
       // A finished job closes its stream; stop reconnecting then.

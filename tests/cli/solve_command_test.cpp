@@ -2,6 +2,10 @@
 // stderr, and a run stopped and resumed through --state-out / --resume files.
 #include "command_fixture.hpp"
 
+#include <fstream>
+
+#include "support/transient_heating.hpp"
+
 namespace {
 
 using saasgaps::testing::Outcome;
@@ -257,3 +261,34 @@ TEST_F(SolveCommand, ThermalRunWritesComputedTemperaturesAndHeatFluxThatPlotAndE
   const std::string text((std::istreambuf_iterator<char>(vtu)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("Name=\"q_r\""), std::string::npos);
 }
+
+namespace {
+
+/// A transient heating of the shrink-fit rings (tests/support/transient_heating.hpp): four output
+/// times, each a load step of the stress analysis.
+TEST_F(SolveCommand, TransientHeatRunShowsItsThermalRowsAndResumesMidWayToTheLastDigit) {
+  std::ofstream(path("heated.json"))
+      << saasgaps::testing::transient_heating("ring-shrink-fit-plane-strain.json", {.hot = 400.0}).dump();
+  const Outcome full = saasgaps("solve " + path("heated.json") + " -o " + path("full.json"));
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  // A line per output time before the iteration table; steps of 0.05 to t = 0.25, 0.5, ...
+  // (docs/model.md quotes the second line.)
+  for (const char* line : {"thermal t = 0.25: 5 steps, max step |dT| ",
+                           "thermal t = 0.5: 10 steps, max step |dT| 25.2263, T 0 .. 400\n", "thermal t = 1: 20 steps"}) {
+    EXPECT_NE(full.err.find(line), std::string::npos) << line << "\n" << full.err;
+  }
+  EXPECT_LT(full.err.find("thermal t = 1: 20 steps"), full.err.find("iter"));
+  const int iterations = json_of(path("full.json"))["iterations"].get<int>();
+  ASSERT_GT(iterations, 4);
+  // Stopped two iterations before the end, past the first output time (position.step is 0-based), resumed.
+  const Outcome stopped = saasgaps("solve " + path("heated.json") + " -q --stop-after " + std::to_string(iterations - 2) +
+                                   " --state-out " + path("state.json") + " -o " + path("partial.json"));
+  EXPECT_EQ(stopped.exit_code, 3) << stopped.err;
+  EXPECT_GE(json_of(path("state.json"))["position"]["step"].get<int>(), 1);
+  const Outcome resumed = saasgaps("solve " + path("heated.json") + " -q --resume " + path("state.json") + " -o " +
+                                   path("resumed.json"));
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(numbers(json_of(path("resumed.json"))), numbers(json_of(path("full.json"))));
+}
+
+}  // namespace

@@ -110,10 +110,10 @@ class Contract:
         for block in events:
             fields = dict(line.split(": ", 1) for line in block.splitlines() if ": " in line)
             kind = fields.get("event")
-            if not check(kind in ("state", "iteration") and "id" in fields and "data" in fields,
+            if not check(kind in ("state", "iteration", "thermal") and "id" in fields and "data" in fields,
                          f"{where}: malformed event {block[:120]!r}"):
                 continue
-            schema = schemas["StateEvent"] if kind == "state" else schemas["HistoryRow"]
+            schema = schemas[{"state": "StateEvent", "iteration": "HistoryRow", "thermal": "ThermalRow"}[kind]]
             self.check_value(f"{where} (event {fields['id']})", schema, json.loads(fields["data"]))
 
 
@@ -245,11 +245,29 @@ def exercise(client, repo, document_bytes, directory):
     named = client.json("POST", "/v1/jobs", body=result, headers={"Content-Type": "application/json"}, expect=422)
     check(named["errors"][0]["detail"].startswith("this is a result document"), f"a result as a model: {named}")
 
+    # A transient heat conduction run: its thermal rows, one per output time, and their events.
+    heated = json.loads((examples / "quickstart-plane-strain-block.json").read_text())
+    del heated["loads"]["temperatures"]
+    heated["materials"][0]["density"] = 1.0
+    heated["materials"][0]["table"][0].update({"k": 1.0, "c": 1.0})
+    heated["thermal"] = {"type": "transient", "initial_temperature": 70.0, "time_step": 0.1, "end_time": 1.0,
+                         "output_times": [0.5, 1.0], "boundary": [{"edges": [[1, 2], [2, 3]], "temperature": 500.0}]}
+    thermal_job = client.json("POST", "/v1/jobs", body=heated, expect=202)["id"]
+    client.wait_for(thermal_job, {"converged"})
+    rows = client.json("GET", f"/v1/jobs/{thermal_job}/thermal", expect=200)
+    check([(r["index"], r["time"], r["time_steps"]) for r in rows["thermal"]] == [(1, 0.5, 5), (2, 1.0, 10)],
+          f"thermal rows: {rows}")
+    after = client.json("GET", f"/v1/jobs/{thermal_job}/thermal?after=1", expect=200)
+    check([r["index"] for r in after["thermal"]] == [2], f"thermal rows after 1: {after}")
+    client.request("GET", f"/v1/jobs/{thermal_job}/thermal?after=-1", expect=400)
+    _, _, stream = client.request("GET", f"/v1/jobs/{thermal_job}/events", expect=200)
+    check(stream.decode().count("event: thermal\n") == 2, "the event stream lacks the two thermal events")
+
     # Jobs that do not exist, including an id beyond 64 bits.
     for missing in ("424242", "99999999999999999999"):
         problem = client.json("GET", f"/v1/jobs/{missing}", expect=404)
         check(missing in problem["detail"], f"404 for job {missing} does not name it: {problem['detail']}")
-        for suffix in ("/iterations", "/events", "/result", "/model", "/units", "/contact", "/result.vtu",
+        for suffix in ("/iterations", "/thermal", "/events", "/result", "/model", "/units", "/contact", "/result.vtu",
                        "/plots/effective.png"):
             client.request("GET", f"/v1/jobs/{missing}{suffix}", expect=404)
         client.request("POST", f"/v1/jobs/{missing}/cancel", body="", expect=404)

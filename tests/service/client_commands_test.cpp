@@ -13,6 +13,7 @@
 #include "service/long_job_model.hpp"
 #include "service/server_process.hpp"
 #include "service/service_fixture.hpp"
+#include "support/transient_heating.hpp"
 
 namespace saasgaps::testing {
 namespace {
@@ -76,6 +77,17 @@ TEST_F(ClientCommands, SubmitAndWatchFollowARunToItsEndThenFetchItsParts) {
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_CONTAINS(missing.err, "(HTTP 404)");
   EXPECT_CONTAINS(missing.err, "no job 7");
+}
+
+// A transient heat conduction run: `watch` prints its thermal rows as `solve` does.
+TEST_F(ClientCommands, WatchPrintsTheThermalRowsOfAHeatConductionRun) {
+  ServerProcess server(database());
+  std::ofstream(dir_ / "heated.json") << transient_heating("ring-shrink-fit-plane-strain.json", {.hot = 400.0}).dump();
+  const Outcome run = shell("SAASGAPS_SERVER=" + url(server), "saasgaps submit heated.json --watch");
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_CONTAINS(run.out, "thermal t = 0.25: 5 steps, max step |dT| 400, T 0 .. 400\n");
+  EXPECT_CONTAINS(run.out, "thermal t = 1: 20 steps");
+  EXPECT_CONTAINS(run.out, "converged");
 }
 
 TEST_F(ClientCommands, InvalidModelIsExitTwoWithEveryPointer) {

@@ -159,6 +159,8 @@ TEST_F(OldDatabase, MigratesAndItsInterruptedJobResumesFromTheOldState) {
     ASSERT_TRUE(row.contains("commit_seconds")) << "row " << k + 1;
     EXPECT_GT(row["commit_seconds"].get<double>(), 0.0);
   }
+  // Migrated to the thermal rows' table: a model without thermal has none.
+  EXPECT_TRUE(store.thermal_rows(1, 0).empty());
   // The latest state is stored in the new encoding, and decodes to the final iteration.
   service::Connection c(path.string());
   service::Statement q = c.prepare("SELECT state FROM states WHERE job_id = 1 ORDER BY iteration DESC LIMIT 1");

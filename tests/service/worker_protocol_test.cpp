@@ -60,6 +60,16 @@ TEST(WorkerProtocol, IterationsAndFinishesRoundTripTheirBytes) {
 }
 
 /// Issue 17: nlohmann's CBOR decoder recurses once per level; 10^5 levels overflowed the stack.
+TEST(WorkerProtocol, ThermalRowsRoundTripAndBadOnesAreRefused) {
+  const std::string row = R"({"index":3,"kind":"transient"})";
+  const protocol::ThermalRow t = protocol::decode_thermal(protocol::encode_thermal(3, row));
+  EXPECT_EQ(t.index, 3);
+  EXPECT_EQ(t.row, row);
+  EXPECT_THROW(protocol::decode_thermal(protocol::encode_thermal(0, row)), std::invalid_argument);
+  EXPECT_THROW(protocol::decode_thermal(protocol::encode_thermal(1, "{not json")), std::invalid_argument);
+  EXPECT_THROW(protocol::decode_thermal("\xa0"), std::invalid_argument);  // an empty CBOR map
+}
+
 TEST(WorkerProtocol, DeepBodiesAreRefusedAtTheirPointer) {
   // {"iteration": 1, "row": "{}", "state": [[[...1...]]]} with 10^5 arrays, written byte by byte.
   std::string body = "\xA3\x69iteration\x01\x63row\x62{}\x65state";

@@ -176,6 +176,15 @@ TEST_F(Worker, EveryWriteChecksTheLeaseAndAFinishSpendsIt) {
   EXPECT_EQ(client.Post(path + "/work/iterations", held, "{not cbor", "application/cbor")->status, 400);
   EXPECT_EQ(client.Post(path + "/work/finish", held, cbor({{"state", "interrupted"}}), "application/cbor")->status, 400);
 
+  // A thermal row under the lease: stored once (a repeat, as a resumed run sends, changes nothing);
+  // without the right secret, refused.
+  const std::string thermal = cbor({{"index", 1}, {"row", R"({"index":1,"kind":"steady"})"}});
+  EXPECT_EQ(client.Post(path + "/work/thermal", held, thermal, "application/cbor")->status, 204);
+  EXPECT_EQ(client.Post(path + "/work/thermal", held, thermal, "application/cbor")->status, 204);
+  EXPECT_EQ(get_json(client, path + "/thermal")["thermal"], json::parse(R"([{"index":1,"kind":"steady"}])"));
+  EXPECT_EQ(client.Post(path + "/work/thermal", {{"Saasgaps-Lease", "1:guess"}}, thermal, "application/cbor")->status, 409);
+  EXPECT_EQ(client.Post(path + "/work/thermal", held, "{not cbor", "application/cbor")->status, 400);
+
   // A cancel reaches the worker in the answer to its next iteration.
   ASSERT_EQ(client.Post(path + "/cancel", "", "application/json")->status, 202);
   const std::string second = cbor({{"iteration", 2}, {"row", R"({"iteration":2})"}, {"state", json::binary({2})}});

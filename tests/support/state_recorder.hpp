@@ -1,6 +1,6 @@
 #pragma once
-/// An observer for restart tests: keeps every history row and restart state, and asks to stop after
-/// `stop_after` iterations (0: never).
+/// An observer for restart tests: keeps every history row, thermal row and restart state, and asks
+/// to stop after `stop_after` iterations (0: never).
 
 #include <vector>
 
@@ -15,9 +15,11 @@ class StateRecorder : public IterationObserver {
     rows.push_back(row);
     states.push_back(state);
   }
+  void on_thermal(const ThermalRecord& row) override { thermal.push_back(row); }
   bool stop_requested() override { return stop_after_ > 0 && static_cast<int>(states.size()) >= stop_after_; }
   std::vector<IterationRecord> rows;
   std::vector<RestartState> states;
+  std::vector<ThermalRecord> thermal;
 
  private:
   int stop_after_;

@@ -24,6 +24,7 @@
 #include "conduction_kernel.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/settling_transient.hpp"
+#include "support/state_recorder.hpp"
 #include "thermal_analysis.hpp"
 
 namespace saasgaps {
@@ -464,10 +465,27 @@ TEST(ThermalGaps, TemperaturesAndContactAreIteratedTogetherToAFixedPoint) {
   testing::Grid inner, outer;
   const int n = 8;
   Model m = expanding_cylinders(t, n, inner, outer);
-  const Solution s = solve_with_heat(m);
+  testing::StateRecorder recorder;
+  const Solution s = solve_with_heat(m, &recorder);
   ASSERT_TRUE(s.thermal.has_value());
   EXPECT_EQ(s.status, RunStatus::converged);
   EXPECT_GE(s.thermal->passes, 2);
+  // A thermal row per pass: the held temperatures bound T, and the last pass changed T by no more
+  // than the stopping rule allows.
+  ASSERT_EQ(recorder.thermal.size(), static_cast<std::size_t>(s.thermal->passes));
+  for (std::size_t k = 0; k < recorder.thermal.size(); ++k) {
+    const ThermalRecord& row = recorder.thermal[k];
+    EXPECT_EQ(row.kind, ThermalRowKind::steady);
+    EXPECT_EQ(row.index, static_cast<int>(k) + 1);
+    EXPECT_EQ(row.pass, static_cast<int>(k) + 1);
+    EXPECT_EQ(row.iterations, 1);  // a constant k: one solve per pass
+    EXPECT_EQ(row.max_T, t.Ta);
+    EXPECT_EQ(row.min_T, t.Tc);
+  }
+  EXPECT_EQ(recorder.thermal.front().pass_change, 0.0);
+  EXPECT_EQ(recorder.thermal.front().max_change, t.Ta);  // from the reference temperature 0
+  EXPECT_GT(recorder.thermal[1].pass_change, 0.0);
+  EXPECT_LE(recorder.thermal.back().pass_change, coupling_tolerance * (1.0 + t.Ta));
   for (const GapResult& g : s.gaps) EXPECT_TRUE(g.state == GapState::closed || g.state == GapState::overclosed);
   const ThermalResult fixed_point = solve_steady_conduction(m, gap_conductances(m, s.gaps));
   for (std::size_t k = 0; k < m.nodes.size(); ++k) {

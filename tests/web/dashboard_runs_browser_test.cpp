@@ -2,7 +2,7 @@
 // real `saasgaps serve`: a convergence that carries a warning, an exact-mode run, a job followed live
 // (placeholders, then its convergence drawn and redrawn while it runs), an assembly upload and a run
 // with contact surfaces (a table per pair and the contact-pressure plot; with friction, its rows and
-// columns on hand-made data).
+// columns on hand-made data), and a transient heat conduction run (its thermal rows in a table).
 // Screenshots land in build/tests/artifacts/.
 #include <gtest/gtest.h>
 
@@ -16,6 +16,7 @@
 #include "service/job_client.hpp"
 #include "service/long_job_model.hpp"
 #include "service/server_process.hpp"
+#include "support/transient_heating.hpp"
 #include "web/browser_session.hpp"
 
 namespace saasgaps::testing {
@@ -376,6 +377,41 @@ TEST_F(DashboardRuns, AContactRunShowsATablePerPairAndTheContactPressurePlot) {
   EXPECT_EQ(cells[at("stick")], "2");
   EXPECT_EQ(cells[at("slip")], "2");
   EXPECT_EQ(cells[at("friction residual")], "2.50e-14");
+}
+
+}  // namespace
+}  // namespace saasgaps::testing
+
+namespace saasgaps::testing {
+namespace {
+
+// A transient heat conduction run: its heat conduction table has a row per output time, the times,
+// steps and temperatures of GET /v1/jobs/{id}/thermal; a model without thermal shows no such table.
+TEST_F(DashboardRuns, ATransientHeatRunShowsItsThermalRowsInATable) {
+  const std::int64_t job = submit_job(client, transient_heating("ring-shrink-fit-plane-strain.json", {.hot = 400.0}).dump());
+  ASSERT_EQ(wait_for_state(client, job, {"converged", "not_converged", "failed"})["state"], "converged");
+  const json rows = get_json(client, "/v1/jobs/" + std::to_string(job) + "/thermal")["thermal"];
+  ASSERT_EQ(rows.size(), 4u);
+
+  Browser browser(dir / "chromium-profile");
+  open_job(browser, server, job);
+  EXPECT_EQ(browser.run("return document.querySelector('#thermal-section').hidden;"), false);
+  const json headers = browser.run("return [...document.querySelectorAll('#thermal thead th')].map(t => t.textContent);");
+  EXPECT_EQ(headers, json({"time", "steps", "max step |dT|", "min T", "max T"}));
+  const json table = browser.run(
+      "return [...document.querySelectorAll('#thermal tbody tr')].map(r => [...r.children].map(c => c.textContent));");
+  ASSERT_EQ(table.size(), rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    EXPECT_DOUBLE_EQ(std::strtod(table[k][0].get<std::string>().c_str(), nullptr), rows[k]["time"].get<double>());
+    EXPECT_EQ(table[k][1], std::to_string(rows[k]["time_steps"].get<int>()));
+    EXPECT_EQ(table[k][4], "400");  // the bore is held at 400
+  }
+  save_artifact("dashboard-thermal.png", browser.screenshot());
+
+  const std::int64_t plain = submit_job(client, example_text("report-problem1.json"));
+  wait_for_state(client, plain, {"converged", "not_converged", "failed"});
+  open_job(browser, server, plain);
+  EXPECT_EQ(browser.run("return document.querySelector('#thermal-section').hidden;"), true);
 }
 
 }  // namespace
