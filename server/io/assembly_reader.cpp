@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "errors.hpp"
+#include "io/assembly_importer.hpp"
 #include "io/gap_generator.hpp"
 #include "io/gmsh_mesh.hpp"
 #include "io/json_pointer.hpp"
@@ -21,10 +22,7 @@
 
 namespace saasgaps::io {
 
-namespace {
-
-using nlohmann::json;
-namespace fs = std::filesystem;
+namespace assembly {
 
 /// Sections of the model document the importer writes itself; the rest pass through.
 constexpr std::array<std::string_view, 6> generated_sections{"/nodes", "/elements", "/constraints", "/gaps/elements",
@@ -37,87 +35,7 @@ std::string shown(const json& value) {
   return text;
 }
 
-/// Which dimensions a use of a group accepts, and how to say it.
-struct GroupUse {
-  std::initializer_list<int> dims;
-  const char* role;   ///< "a region", "a pressure"...
-  const char* needs;  ///< "a surface (dimension 2)"
-};
-
 constexpr double default_pair_tolerance = 0.1;
-
-class Importer {
- public:
-  Importer(const json& assembly, fs::path base, FileAccess access)
-      : doc_(assembly), base_(std::move(base)), access_(access) {}
-
-  json run();
-
- private:
-  void report(std::string pointer, std::string detail) {
-    // An upload's files sit in a private directory the client never saw: name them as uploaded.
-    if (access_ == FileAccess::base_only) {
-      const std::string directory = (base_ / "").string();
-      for (std::size_t at = detail.find(directory); at != std::string::npos; at = detail.find(directory, at)) {
-        detail.erase(at, directory.size());
-      }
-    }
-    issues_.push_back({std::move(pointer), std::move(detail)});
-  }
-
-  // ---- shape checks
-  bool object(const json& v, const std::string& p, std::initializer_list<std::string_view> required,
-              std::initializer_list<std::string_view> optional);
-  /// parent[key] when it is an array (non-empty if asked); nullptr when absent (object() reports a
-  /// missing required key) or reported.
-  const json* array(const json& parent, const std::string& p, std::string_view key, bool non_empty);
-  std::optional<double> number(const json& o, const std::string& p, std::string_view key, bool positive = false);
-  std::optional<std::string> string(const json& o, const std::string& p, std::string_view key);
-
-  /// The file `name` (the value at `pointer`) names, or nullopt (reported) when it may not be read.
-  std::optional<fs::path> resolve_file(const std::string& name, const std::string& pointer);
-
-  // ---- the mesh and its groups
-  void load_mesh();
-  /// The group o["group"] names (reported at <p>/group when missing, misspelt or of the wrong dimension).
-  const PhysicalGroup* group(const json& o, const std::string& p, const GroupUse& use);
-  const PhysicalGroup* named_group(const json& name, const std::string& at, const GroupUse& use);
-  /// Node indices of a group (sorted, unique); reports nodes that no surface element uses.
-  std::vector<int> group_nodes(const PhysicalGroup& g, const std::string& p);
-  int tag_of(int node) const { return static_cast<int>(mesh_.node_tags[static_cast<std::size_t>(node)]); }
-
-  // ---- sections
-  void regions(json& model);
-  void constraints(json& model);
-  void loads(json& model);
-  void pressures(const json& loads, const std::string& p, json& out);
-  void nodal_forces(const json& loads, const std::string& p, json& out);
-  void temperatures(const json& loads, const std::string& p, json& out);
-  void temperature_file(const json& file, const std::string& p, std::vector<std::optional<double>>& T,
-                        std::vector<std::string>& source);
-  void gaps(json& model);
-  std::optional<FaceChain> face(const json& name, const std::string& p);
-  /// An exact face pair {faces: [A, B]} (at p) as a contact pair of two surfaces in `contact`.
-  void contact_pair(const json& faces, const std::string& p, json& contact);
-  /// Index in contact["surfaces"] of the surface made of curve group `name` (at p), defined on first use.
-  std::optional<std::size_t> contact_surface(const json& name, const std::string& p, json& contact);
-  void validate(const json& model);
-
-
-  const json& doc_;
-  fs::path base_;
-  FileAccess access_;
-  std::vector<InputIssue> issues_;
-  GmshMesh mesh_;
-  bool mesh_loaded_ = false;
-  std::vector<Vec2> positions_;
-  std::vector<int> ids_;
-  std::optional<MeshGroups> groups_;  ///< once the mesh is loaded
-  std::set<int> material_ids_;
-  /// Generated contact pointers (/contact/surfaces/k, /contact/pairs/k) and the assembly values they
-  /// come from, so that the model reader's findings are reported where the user wrote them.
-  std::vector<std::pair<std::string, std::string>> contact_origin_;
-};
 
 // ---- shape checks
 
@@ -293,6 +211,7 @@ void Importer::regions(json& model) {
         continue;
       }
       surface_material[surface] = {m->get<int>(), angle};
+      surface_material_[surface] = m->get<int>();
     }
   }
   if (!complete) return;
@@ -378,26 +297,37 @@ void Importer::pressures(const json& loads, const std::string& lp, json& out) {
     const double normal = number(o, p, "normal").value_or(0.0);
     const double shear = number(o, p, "shear").value_or(0.0);
     if (g == nullptr) continue;
-    const auto edges = groups_->edges(*g);
-    if (edges.empty()) report(pointer_append(p, "group"), "physical group \"" + g->name + "\" has no line elements");
-    for (const auto& [a, b] : edges) {
-      const std::vector<int> owner = a < 0 || b < 0 ? std::vector<int>{} : groups_->owners(a, b);
-      if (owner.size() != 1) {
-        report(pointer_append(p, "group"),
-               "curve group \"" + g->name + "\" is not on the boundary of the meshed surfaces" +
-                   (a >= 0 && b >= 0 ? " (edge " + std::to_string(tag_of(a)) + "-" + std::to_string(tag_of(b)) + " has " +
-                                           std::to_string(owner.size()) + " elements; a pressure edge has exactly one)"
-                                     : std::string()));
-        break;
-      }
-      const MeshFace& f = mesh_.faces[static_cast<std::size_t>(owner.front())];
-      const auto k = static_cast<int>(std::find(f.nodes.begin(), f.nodes.begin() + f.count, a) - f.nodes.begin());
-      const bool along = f.nodes[static_cast<std::size_t>((k + 1) % f.count)] == b;
-      result.push_back({{"nodes", along ? json{tag_of(a), tag_of(b)} : json{tag_of(b), tag_of(a)}},
-                        {"normal", normal},
-                        {"shear", shear}});
+    for (const BoundaryEdge& e : boundary_edges(*g, p, "a pressure").value_or(std::vector<BoundaryEdge>{})) {
+      result.push_back({{"nodes", {tag_of(e.a), tag_of(e.b)}}, {"normal", normal}, {"shear", shear}});
     }
   }
+}
+
+std::optional<std::vector<Importer::BoundaryEdge>> Importer::boundary_edges(const PhysicalGroup& g, const std::string& p,
+                                                                            std::string_view use) {
+  const auto edges = groups_->edges(g);
+  if (edges.empty()) {
+    report(pointer_append(p, "group"), "physical group \"" + g.name + "\" has no line elements");
+    return std::nullopt;
+  }
+  std::vector<BoundaryEdge> out;
+  for (const auto& [a, b] : edges) {
+    const std::vector<int> owner = a < 0 || b < 0 ? std::vector<int>{} : groups_->owners(a, b);
+    if (owner.size() != 1) {
+      report(pointer_append(p, "group"),
+             "curve group \"" + g.name + "\" is not on the boundary of the meshed surfaces" +
+                 (a >= 0 && b >= 0 ? " (edge " + std::to_string(tag_of(a)) + "-" + std::to_string(tag_of(b)) + " has " +
+                                         std::to_string(owner.size()) + " elements; " + std::string(use) +
+                                         " acts on an edge of exactly one)"
+                                   : std::string()));
+      return std::nullopt;
+    }
+    const MeshFace& f = mesh_.faces[static_cast<std::size_t>(owner.front())];
+    const auto k = static_cast<int>(std::find(f.nodes.begin(), f.nodes.begin() + f.count, a) - f.nodes.begin());
+    const bool along = f.nodes[static_cast<std::size_t>((k + 1) % f.count)] == b;
+    out.push_back(along ? BoundaryEdge{a, b, owner.front()} : BoundaryEdge{b, a, owner.front()});
+  }
+  return out;
 }
 
 /// nodal_forces: [{group (points), fr?, fz?}]: the force at each point of the group.
@@ -558,8 +488,10 @@ std::optional<FaceChain> Importer::face(const json& name, const std::string& p) 
 
 /// A face pair of the exact method as contact: each face becomes a contact surface named for its
 /// curve group (its boundary edges as they are; the model reader judges the chain), the pair a contact
-/// pair [A, B], A the first face (the mortar's non-mortar side, docs/contact-surfaces.md).
-void Importer::contact_pair(const json& faces, const std::string& p, json& contact) {
+/// pair [A, B], A the first face (the mortar's non-mortar side, docs/contact-surfaces.md), with the
+/// pair's friction and conductance as given (the model reader judges them at their pointers).
+void Importer::contact_pair(const json& pair, const std::string& p, json& contact) {
+  const json& faces = pair["faces"];
   const std::string a_at = pointer_append(p, std::size_t{0}), b_at = pointer_append(p, std::size_t{1});
   const auto a = contact_surface(faces[0], a_at, contact);
   const auto b = contact_surface(faces[1], b_at, contact);
@@ -570,8 +502,12 @@ void Importer::contact_pair(const json& faces, const std::string& p, json& conta
     return;
   }
   const std::string pair_at = pointer_append("/contact/pairs", contact["pairs"].size());
-  contact_origin_.emplace_back(pair_at, p.substr(0, p.rfind('/')));
-  contact["pairs"].push_back({{"surfaces", {contact["surfaces"][*a]["name"], contact["surfaces"][*b]["name"]}}});
+  origins_.push_back({pair_at, p.substr(0, p.rfind('/')), true});
+  json generated = {{"surfaces", {contact["surfaces"][*a]["name"], contact["surfaces"][*b]["name"]}}};
+  for (const char* key : {"friction", "conductance"}) {
+    if (pair.contains(key)) generated[key] = pair[key];
+  }
+  contact["pairs"].push_back(std::move(generated));
 }
 
 std::optional<std::size_t> Importer::contact_surface(const json& name, const std::string& p, json& contact) {
@@ -594,7 +530,7 @@ std::optional<std::size_t> Importer::contact_surface(const json& name, const std
     report(p, "curve group \"" + g->name + "\" has no line elements");
     return std::nullopt;
   }
-  contact_origin_.emplace_back(pointer_append("/contact/surfaces", surfaces.size()), p);
+  origins_.push_back({pointer_append("/contact/surfaces", surfaces.size()), p});
   surfaces.push_back({{"name", g->name}, {"edges", std::move(edges)}});
   return surfaces.size() - 1;
 }
@@ -626,7 +562,7 @@ void Importer::gaps(json& model) {
     for (std::size_t i = 0; i < list->size(); ++i) {
       const std::string p = pointer_append("/gaps/pairs", i);
       const json& o = (*list)[i];
-      if (!object(o, p, {"faces"}, {"first_id", "tolerance"})) continue;
+      if (!object(o, p, {"faces"}, {"first_id", "tolerance", "friction", "conductance"})) continue;
       for (const char* key : {"first_id", "tolerance"}) {
         if (o.contains(key)) {
           report(pointer_append(p, key), std::string(key) + " concerns generated gap elements, and with gaps.method "
@@ -639,7 +575,7 @@ void Importer::gaps(json& model) {
         report(pointer_append(p, "faces"), "faces must name two curve groups, got " + shown(*faces));
         continue;
       }
-      contact_pair(*faces, pointer_append(p, "faces"), contact);
+      contact_pair(o, pointer_append(p, "faces"), contact);
     }
     if (!contact["pairs"].empty()) model["contact"] = std::move(contact);
     return;
@@ -653,7 +589,13 @@ void Importer::gaps(json& model) {
   for (std::size_t i = 0; i < list->size(); ++i) {
     const std::string p = pointer_append("/gaps/pairs", i);
     const json& o = (*list)[i];
-    if (!object(o, p, {"faces"}, {"first_id", "tolerance"})) continue;
+    if (!object(o, p, {"faces"}, {"first_id", "tolerance", "friction", "conductance"})) continue;
+    for (const char* key : {"friction", "conductance"}) {
+      if (o.contains(key)) {
+        report(pointer_append(p, key), std::string(key) + " belongs to a contact pair, which a face pair becomes with "
+               "gaps.method \"exact\" (docs/import.md); gap elements conduct by gaps.conductance and have no friction");
+      }
+    }
     const double tolerance = number(o, p, "tolerance", true).value_or(default_pair_tolerance);
     long long id = next_id;
     if (const auto first = o.find("first_id"); first != o.end()) {
@@ -702,11 +644,13 @@ void Importer::validate(const json& model) {
       const bool generated = std::any_of(generated_sections.begin(), generated_sections.end(), [&](std::string_view s) {
         return issue.pointer.starts_with(s) && !issue.pointer.starts_with("/loads/body_force");
       });
-      const auto origin = std::find_if(contact_origin_.begin(), contact_origin_.end(), [&](const auto& o) {
-        return issue.pointer == o.first || issue.pointer.starts_with(o.first + "/");
+      const auto origin = std::find_if(origins_.begin(), origins_.end(), [&](const Origin& o) {
+        return issue.pointer == o.generated || issue.pointer.starts_with(o.generated + "/");
       });
-      if (origin != contact_origin_.end()) {
-        report(origin->second, "the generated " + issue.pointer + ": " + issue.detail);
+      if (origin != origins_.end() && origin->same_keys) {
+        report(origin->written + issue.pointer.substr(origin->generated.size()), issue.detail);
+      } else if (origin != origins_.end()) {
+        report(origin->written, "the generated " + issue.pointer + ": " + issue.detail);
       } else if (generated) {
         report("/mesh", "the generated model's " + issue.pointer + ": " + issue.detail);
       } else {
@@ -718,7 +662,7 @@ void Importer::validate(const json& model) {
 
 json Importer::run() {
   if (!object(doc_, "", {"schema_version", "title", "mesh", "analysis", "materials", "regions", "constraints"},
-              {"description", "units", "loads", "gaps", "solver", "output"})) {
+              {"description", "units", "loads", "gaps", "thermal", "solver", "output"})) {
     throw ModelError(std::move(issues_), "assembly");
   }
   if (const auto v = doc_.find("schema_version"); v != doc_.end() && !(v->is_number_integer() && *v == 1)) {
@@ -755,6 +699,7 @@ json Importer::run() {
   gaps(model);
   constraints(model);
   loads(model);
+  thermal(model);
   for (const char* key : {"solver", "output"}) {
     if (const auto v = doc_.find(key); v != doc_.end()) model[key] = *v;
   }
@@ -763,10 +708,11 @@ json Importer::run() {
   return model;
 }
 
-}  // namespace
+}  // namespace assembly
 
-json import_assembly(const json& assembly, const fs::path& base_directory, FileAccess access) {
-  return Importer(assembly, base_directory, access).run();
+nlohmann::json import_assembly(const nlohmann::json& assembly, const std::filesystem::path& base_directory,
+                               FileAccess access) {
+  return assembly::Importer(assembly, base_directory, access).run();
 }
 
 }  // namespace saasgaps::io

@@ -1,10 +1,11 @@
 #pragma once
 /// The assembly document (schemas/assembly.schema.json, docs/import.md): a Gmsh mesh and, by the
 /// names of its physical groups, the materials of its surfaces, the constraints, pressures, forces
-/// and temperatures on its curves and points, and the pairs of curves that face each other across a
-/// gap. import_assembly turns it into a model document (model.schema.json) with generated gap
-/// elements; the analysis, materials, gap settings, solver, output, units and body force blocks
-/// pass through unchanged.
+/// and temperatures on its curves and points, the pairs of curves that face each other across a
+/// gap, and the thermal conditions on its curves and heat sources in its surfaces. import_assembly
+/// turns it into a model document (model.schema.json) with generated gap elements or contact
+/// surfaces and a thermal section of edges and materials; the analysis, materials, gap settings,
+/// solver, output, units and body force blocks pass through unchanged.
 ///
 /// Every problem is an InputIssue located by the JSON Pointer of the assembly value it concerns
 /// (the group name, the pair, "/mesh" for the mesh file), thrown together as one ModelError. The

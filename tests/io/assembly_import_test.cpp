@@ -395,6 +395,113 @@ TEST(AssemblyImport, ExactFacePairErrorsAtTheirPointers) {
   }
 }
 
+// ---- heat conduction by physical group
+
+/// The two-block assembly with exact contact, a material per block and a thermal section by group
+/// instead of loads.temperatures.
+json thermal_two_blocks() {
+  json assembly = exact_two_blocks();
+  assembly["materials"][0]["table"][0]["k"] = 2.0;
+  json upper_material = assembly["materials"][0];
+  upper_material["id"] = 2;
+  assembly["materials"].push_back(upper_material);
+  assembly["regions"][1]["material"] = 2;
+  assembly["loads"].erase("temperatures");
+  assembly["gaps"]["pairs"][0]["conductance"] = {{"closed", 5.0}, {"gas_conductivity", 0.01}};
+  assembly["thermal"] = {
+      {"type", "steady"},
+      {"boundary", {{{"group", "bottom"}, {"temperature", 20.0}},
+                    {{"group", "top"}, {"flux", 3.0}},
+                    {{"group", "left"}, {"film", 0.5}, {"ambient", 70.0}}}},
+      {"sources", {{{"group", "upper"}, {"power_density", 1.5}}, {{"material", 1}, {"power_density", -0.5}}}}};
+  return assembly;
+}
+
+/// (node ids of each edge) of a thermal boundary entry.
+std::vector<std::vector<int>> thermal_edges(const Model& m, std::size_t entry) {
+  std::vector<std::vector<int>> edges;
+  for (const ThermalEdge& e : m.thermal->boundary[entry].edges) {
+    edges.push_back({m.nodes[static_cast<std::size_t>(e.node_a)].id, m.nodes[static_cast<std::size_t>(e.node_b)].id});
+  }
+  return edges;
+}
+
+TEST(AssemblyImport, ThermalConditionsAndSourcesByPhysicalGroup) {
+  const json model = io::import_assembly(thermal_two_blocks(), data_dir);
+  const Model m = io::read_model(model);
+  ASSERT_TRUE(m.thermal);
+  EXPECT_EQ(m.thermal->type, ThermalType::steady);
+  ASSERT_EQ(m.thermal->boundary.size(), 3u);
+  // Each entry keeps its index, kind and values; its edges are the group's line elements, each in
+  // the counter-clockwise order of the element that owns it.
+  EXPECT_EQ(m.thermal->boundary[0].kind, ThermalBoundary::Kind::temperature);
+  EXPECT_EQ(m.thermal->boundary[0].value, 20.0);
+  EXPECT_EQ(thermal_edges(m, 0), (std::vector<std::vector<int>>{{1, 2}, {2, 3}}));
+  EXPECT_EQ(m.thermal->boundary[1].kind, ThermalBoundary::Kind::flux);
+  EXPECT_EQ(m.thermal->boundary[1].value, 3.0);
+  EXPECT_EQ(thermal_edges(m, 1), (std::vector<std::vector<int>>{{11, 10}, {12, 11}}));
+  EXPECT_EQ(m.thermal->boundary[2].kind, ThermalBoundary::Kind::film);
+  EXPECT_EQ(m.thermal->boundary[2].value, 0.5);
+  EXPECT_EQ(m.thermal->boundary[2].ambient, 70.0);
+  EXPECT_EQ(thermal_edges(m, 2).size(), 2u);  // "left": one edge of each block
+  for (const ThermalEdge& e : m.thermal->boundary[2].edges) {
+    EXPECT_EQ(m.nodes[static_cast<std::size_t>(e.node_a)].r, 0.0);
+    EXPECT_EQ(m.nodes[static_cast<std::size_t>(e.node_b)].r, 0.0);
+  }
+  // The source on the upper block's surface group heats its material (2); the one by id passes through.
+  ASSERT_EQ(m.thermal->sources.size(), 2u);
+  EXPECT_EQ(m.materials[static_cast<std::size_t>(m.thermal->sources[0].material)].id, 2);
+  EXPECT_EQ(m.thermal->sources[0].power_density, 1.5);
+  EXPECT_EQ(m.materials[static_cast<std::size_t>(m.thermal->sources[1].material)].id, 1);
+  EXPECT_EQ(m.thermal->sources[1].power_density, -0.5);
+  // The exact face pair carries its conductance to the contact pair.
+  ASSERT_TRUE(m.contact && m.contact->pairs.size() == 1);
+  ASSERT_TRUE(m.contact->pairs[0].conductance);
+  EXPECT_EQ(model["contact"]["pairs"][0]["conductance"], (json{{"closed", 5.0}, {"gas_conductivity", 0.01}}));
+  EXPECT_FALSE(model.contains("loads") && model["loads"].contains("temperatures"));
+}
+
+TEST(AssemblyImport, ThermalErrorsAtTheirPointers) {
+  const std::vector<BadValue> cases{
+      {"an unknown group", "/thermal/boundary/1/group", "topp", "/thermal/boundary/1/group", "did you mean \"top\"?"},
+      {"a surface as a boundary", "/thermal/boundary/0/group", "lower", "/thermal/boundary/0/group",
+       "a thermal boundary condition needs a curve (dimension 1)"},
+      {"a point as a boundary", "/thermal/boundary/0/group", "corner", "/thermal/boundary/0/group",
+       "has dimension 0 (point)"},
+      {"edges beside the group", "/thermal/boundary/0/edges", json{{1, 2}}, "/thermal/boundary/0/edges",
+       "remove edges"},
+      {"a curve as a source", "/thermal/sources/0/group", "top", "/thermal/sources/0/group",
+       "a heat source needs a surface (dimension 2)"},
+      {"a group holding part of a material", "/regions/1/material", 1, "/thermal/sources/0/group",
+       "is material 1 too, and group \"upper\" does not hold it"},
+      {"a material heated twice", "/thermal/sources/1/material", 2, "/thermal/sources/1/material",
+       "already heated by /thermal/sources/0"},
+      {"group and material", "/thermal/sources/0/material", 2, "/thermal/sources/0", "exactly one of them"},
+      {"an unknown material", "/thermal/sources/1/material", 7, "/thermal/sources/1/material", "not the id"},
+      // The values pass through: the model reader's findings keep their pointers.
+      {"a negative film", "/thermal/boundary/2/film", -0.5, "/thermal/boundary/2/film", "film"},
+      {"two kinds", "/thermal/boundary/1/temperature", 5.0, "/thermal/boundary/1", "exactly one of"},
+      {"a transient key in a steady run", "/thermal/end_time", 2.0, "/thermal/end_time", "transient"},
+      {"a source's power", "/thermal/sources/0/power_density", "hot", "/thermal/sources/0/power_density", ""},
+      {"a pair's conductance", "/gaps/pairs/0/conductance/closed", -1.0, "/gaps/pairs/0/conductance/closed", ""},
+      {"temperatures given too", "/loads/temperatures", json{{"default", 70.0}}, "/loads/temperatures",
+       "computed by /thermal"},
+  };
+  for (const BadValue& c : cases) {
+    json assembly = thermal_two_blocks();
+    assembly[json::json_pointer(c.at)] = c.value;
+    const InputIssue issue = single_issue(assembly, data_dir);
+    EXPECT_EQ(issue.pointer, c.pointer) << c.what << ": " << issue.detail;
+    EXPECT_NE(issue.detail.find(c.says), std::string::npos) << c.what << ": " << issue.detail;
+  }
+  // A classic face pair makes gap elements, which conduct by gaps.conductance, not by the pair's.
+  json classic = load(data_dir / "two_blocks.assembly.json");
+  classic["gaps"]["pairs"][0]["conductance"] = 1.0;
+  const InputIssue conductance = single_issue(classic, data_dir);
+  EXPECT_EQ(conductance.pointer, "/gaps/pairs/0/conductance");
+  EXPECT_NE(conductance.detail.find("gaps.conductance"), std::string::npos) << conductance.detail;
+}
+
 TEST(AssemblyImport, AFileThatIsNotAMesh) {
   const Scratch scratch;
   scratch.write("two_blocks.msh", "{\"this\": \"is JSON, not a mesh\"}\n");

@@ -1,6 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the MHW-like heat-shield assembly: mhw-heat-shield.geo, mhw-heat-shield-temperatures.vtu and
-mhw-heat-shield.assembly.json.
+"""Writes the MHW-like heat-shield assembly: mhw-heat-shield.geo and mhw-heat-shield.assembly.json.
 
     /usr/bin/python3 schemas/examples/assemblies/make_mhw_assembly.py
 
@@ -9,10 +8,14 @@ axisymmetric graphite aeroshell barrel (r 2.0 .. 2.25 in, z 0 .. 4 in) closed by
 (r 0 .. 2.25 in, 0.25 in thick) 0.004 in above the barrel's end, and a retainer ring (r 1.7 .. 1.995
 in, z 0.5 .. 1.0 in) inside the barrel across a 0.005 in radial clearance. Gmsh x is r, y is z.
 
-The temperature field stands in for a thermal code's output: hot outside, hotter towards the cap,
-written as a VTU point field at the mesh's nodes (every block is a transfinite grid, so the nodes
-are known here without meshing). The barrel and cap are an orthotropic, temperature-dependent
-graphite (material axis 1 along z in the barrel, along r in the cap); the retainer an isotropic one.
+The parts touch on contact surfaces (gaps.method "exact": the retainer's outside against the barrel's
+bore, the barrel's end against the cap's rim), and the temperatures come from a steady conduction
+solve on the same mesh: the retainer's bore held hot (it carries the heat source's 2000 degF), the
+outer surface and the cap's top heated by a film to a 3000 degF boundary layer, the barrel's base
+held at 800 degF by the structure below; heat crosses each contact pair by its conductance
+(touching faces) or the gas in its gap (open faces). The barrel and cap are an orthotropic,
+temperature-dependent graphite (material axis 1 along z in the barrel, along r in the cap); the
+retainer an isotropic one. Conductivities in lbf/(s degF) (power in in lbf/s: 1 W/(m K) = 0.125).
 """
 
 import json
@@ -28,6 +31,11 @@ RET_IN, RET_GAP, RET_Z0, RET_Z1 = 1.7, 0.005, 0.5, 1.0
 RET_OUT = R_BORE - RET_GAP
 CAP_Z0 = Z_TOP + CAP_GAP
 CAP_Z1 = CAP_Z0 + CAP_T
+# Steady heating: temperatures degF, film lbf/(in s degF), conductivities lbf/(s degF).
+T_RETAINER_BORE, T_BASE, T_BOUNDARY_LAYER, FILM = 2000.0, 800.0, 3000.0, 2.0
+K_WITH_GRAIN, K_ACROSS_GRAIN, K_RETAINER = 12.0, 6.0, 10.0
+H_CONTACT, K_GAS = 50.0, 0.05
+CONTACT_CONDUCTANCE = {"closed": H_CONTACT, "gas_conductivity": K_GAS}
 # Elements per block edge.
 N_WALL, N_LOW, N_MID, N_HIGH = 4, 4, 5, 24
 N_CAP_R, N_CAP_T = 16, 3
@@ -42,11 +50,6 @@ BLOCKS = [
     ("cap_rim", R_BORE, R_OUT, CAP_Z0, CAP_Z1, N_WALL, N_CAP_T),
     ("retainer", RET_IN, RET_OUT, RET_Z0, RET_Z1, N_RET_R, N_MID),
 ]
-
-
-def temperature(r, z):
-    """degF: 600 on the axis at the base, up to about 2900 on the cap's outer rim."""
-    return 600.0 + 1500.0 * (r / R_OUT) ** 2 + 800.0 * (z / CAP_Z1) ** 1.5
 
 
 def geo():
@@ -84,6 +87,8 @@ def geo():
         "barrel_end": [edges["barrel_high"]["top"]],
         "cap_rim_underside": [edges["cap_rim"]["bottom"]],
         "cap_top": [edges["cap_centre"]["top"], edges["cap_rim"]["top"]],
+        "retainer_bore": [edges["retainer"]["left"]],
+        "outer_surface": [edges[b]["right"] for b in ("barrel_low", "barrel_mid", "barrel_high", "cap_rim")],
     }
     for name, curves in groups.items():
         out.append(f'Physical Curve("{name}") = {{{", ".join(map(str, curves))}}};')
@@ -93,39 +98,12 @@ def geo():
     return header + "\n".join(out) + "\n"
 
 
-def node_positions():
-    seen = {}
-    for _, r0, r1, z0, z1, nr, nz in BLOCKS:
-        for j in range(nz + 1):
-            for i in range(nr + 1):
-                r, z = r0 + (r1 - r0) * i / nr, z0 + (z1 - z0) * j / nz
-                seen[(round(r, 9), round(z, 9))] = (r, z)
-    return list(seen.values())
-
-
-def vtu():
-    nodes = node_positions()
-    points = " ".join(f"{r!r} {z!r} 0" for r, z in nodes)
-    values = " ".join(f"{temperature(r, z):.3f}" for r, z in nodes)
-    return ('<?xml version="1.0"?>\n'
-            '<!-- Stands in for a thermal code\'s output: nodal temperatures (degF) of the heat shield. -->\n'
-            '<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">\n'
-            f' <UnstructuredGrid>\n  <Piece NumberOfPoints="{len(nodes)}" NumberOfCells="0">\n'
-            f'   <Points>\n    <DataArray type="Float64" NumberOfComponents="3" format="ascii">{points}</DataArray>\n'
-            '   </Points>\n   <PointData Scalars="temperature">\n'
-            f'    <DataArray type="Float64" Name="temperature" format="ascii">{values}</DataArray>\n'
-            '   </PointData>\n   <Cells>\n'
-            '    <DataArray type="Int64" Name="connectivity" format="ascii"></DataArray>\n'
-            '    <DataArray type="Int64" Name="offsets" format="ascii"></DataArray>\n'
-            '    <DataArray type="UInt8" Name="types" format="ascii"></DataArray>\n'
-            '   </Cells>\n  </Piece>\n </UnstructuredGrid>\n</VTKFile>\n')
-
-
 def graphite_row(T, stiffening, expansion):
     """Orthotropic graphite at T: axis 1 the with-grain direction, 3 the hoop."""
     return {"T": T, "E1": 1.5e6 * stiffening, "E2": 1.1e6 * stiffening, "E3": 1.5e6 * stiffening,
             "nu12": 0.10, "nu13": 0.12, "nu23": 0.10, "G12": 0.45e6 * stiffening,
-            "alpha1": 0.8e-6 * expansion, "alpha2": 1.9e-6 * expansion, "alpha3": 0.8e-6 * expansion}
+            "alpha1": 0.8e-6 * expansion, "alpha2": 1.9e-6 * expansion, "alpha3": 0.8e-6 * expansion,
+            "k1": K_WITH_GRAIN, "k2": K_ACROSS_GRAIN, "k3": K_WITH_GRAIN}
 
 
 def assembly():
@@ -137,9 +115,10 @@ def assembly():
             f"axisymmetric graphite aeroshell barrel (r {R_BORE} to {R_OUT} in, z 0 to {Z_TOP} in) held axially at its "
             f"base, an end cap (r 0 to {R_OUT} in, {CAP_T} in thick) resting {CAP_GAP} in above the barrel's end, and "
             f"a retainer ring (r {RET_IN} to {RET_OUT} in, z {RET_Z0} to {RET_Z1} in) inside the barrel across a "
-            f"{RET_GAP} in radial clearance, held axially at its base. Heated unevenly (a thermal code's nodal field, "
-            "mhw-heat-shield-temperatures.vtu): about 1100 degF at the bore, up to 2900 degF at the cap's rim; "
-            "stress free at 70 degF. Barrel and cap: orthotropic graphite, stiffer and more expansive with "
+            f"{RET_GAP} in radial clearance, held axially at its base; the parts touch on contact surfaces. "
+            f"Temperatures from a steady conduction solve: the retainer's bore at {T_RETAINER_BORE} degF, the outer "
+            f"surface and the cap's top heated by a film to {T_BOUNDARY_LAYER} degF, the barrel's base at {T_BASE} "
+            "degF, heat crossing the contact pairs; stress free at 70 degF. Barrel and cap: orthotropic graphite, stiffer and more expansive with "
             "temperature (axis 1 along z in the barrel, along r in the cap); retainer: an isotropic graphite of higher expansion, which closes its clearance to the barrel. "
             "Units: in, lbf, psi, degF."),
         "units": {"length": "in", "force": "lbf", "stress": "psi", "temperature": "degF"},
@@ -149,8 +128,8 @@ def assembly():
             {"id": 1, "name": "graphite, orthotropic (representative)", "elastic": "orthotropic",
              "table": [graphite_row(70.0, 1.0, 1.0), graphite_row(1500.0, 1.15, 1.6), graphite_row(3000.0, 1.3, 2.0)]},
             {"id": 2, "name": "graphite, isotropic (representative)", "elastic": "isotropic",
-             "table": [{"T": 70.0, "E": 1.4e6, "nu": 0.12, "alpha": 3.0e-6},
-                       {"T": 3000.0, "E": 1.8e6, "nu": 0.12, "alpha": 4.6e-6}]},
+             "table": [{"T": 70.0, "E": 1.4e6, "nu": 0.12, "alpha": 3.0e-6, "k": K_RETAINER},
+                       {"T": 3000.0, "E": 1.8e6, "nu": 0.12, "alpha": 4.6e-6, "k": K_RETAINER}]},
         ],
         "regions": [
             {"group": "barrel_low", "material": 1, "angle": 90.0},
@@ -165,29 +144,31 @@ def assembly():
             {"group": "retainer_base", "z": 0.0},
             {"group": "axis", "r": 0.0},
         ],
-        "loads": {
-            "pressures": [{"group": "cap_top", "normal": 15.0}],
-            "temperatures": {"default": 70.0,
-                             "file": {"path": f"{NAME}-temperatures.vtu", "field": "temperature"}},
-        },
+        "loads": {"pressures": [{"group": "cap_top", "normal": 15.0}]},
         "gaps": {
-            "initial_modulus": 1000.0,
-            "tensile_schedule": [100.0, 10.0, 1.0],
+            "method": "exact",
             "pairs": [
-                {"faces": ["retainer_outside", "barrel_bore_at_retainer"], "first_id": 1001},
-                {"faces": ["barrel_end", "cap_rim_underside"], "first_id": 2001},
+                {"faces": ["retainer_outside", "barrel_bore_at_retainer"], "conductance": CONTACT_CONDUCTANCE},
+                {"faces": ["barrel_end", "cap_rim_underside"], "conductance": CONTACT_CONDUCTANCE},
+            ],
+        },
+        "thermal": {
+            "type": "steady",
+            "boundary": [
+                {"group": "retainer_bore", "temperature": T_RETAINER_BORE},
+                {"group": "barrel_base", "temperature": T_BASE},
+                {"group": "outer_surface", "film": FILM, "ambient": T_BOUNDARY_LAYER},
+                {"group": "cap_top", "film": FILM, "ambient": T_BOUNDARY_LAYER},
             ],
         },
         "solver": {"max_iterations": 40},
-        "output": {"watch_gaps": [1001, 1005, 2001, 2004]},
     }
 
 
 def main():
     (HERE / f"{NAME}.geo").write_text(geo())
-    (HERE / f"{NAME}-temperatures.vtu").write_text(vtu())
     (HERE / f"{NAME}.assembly.json").write_text(json.dumps(assembly(), indent=1) + "\n")
-    print("wrote", NAME + ".geo,", NAME + "-temperatures.vtu,", NAME + ".assembly.json")
+    print("wrote", NAME + ".geo,", NAME + ".assembly.json")
 
 
 if __name__ == "__main__":

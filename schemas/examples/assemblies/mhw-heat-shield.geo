@@ -66,3 +66,5 @@ Physical Curve("barrel_bore_at_retainer") = {7};
 Physical Curve("barrel_end") = {9};
 Physical Curve("cap_rim_underside") = {15};
 Physical Curve("cap_top") = {13, 17};
+Physical Curve("retainer_bore") = {21};
+Physical Curve("outer_surface") = {2, 5, 8, 16};
