@@ -1,11 +1,6 @@
 #include "io/simd_model_reader.hpp"
 
-#include <sys/mman.h>
-
 #include <array>
-#include <cstdint>
-#include <cstring>
-#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -288,33 +283,14 @@ class TapeWalk {
   std::optional<dom::array::iterator> skip_;  ///< tree() leaves the array that begins here empty
 };
 
-/// Asks for transparent huge pages (2 MiB) over the whole 2 MiB pages of [data, data + bytes): the
-/// parser's buffers are written once from end to end, and at 4 KiB a page the kernel's page
-/// faults cost about as much as the parse itself (a 60 MB model: 100,000 faults and more). A
-/// kernel without them (or with them off) ignores the advice.
-void advise_huge_pages(void* data, std::size_t bytes) {
-  constexpr std::uintptr_t huge = 2 << 20;
-  const auto begin = (reinterpret_cast<std::uintptr_t>(data) + huge - 1) & ~(huge - 1);
-  const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(huge - 1);
-  if (end > begin) (void)madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-}
-
 }  // namespace
 
 bool read_model_text(std::string_view text, SectionReader& reader, std::string* digest) {
   dom::parser parser;
   if (parser.allocate(text.size(), max_json_depth) != simdjson::SUCCESS) return false;
-  // The tape (8 bytes per value, key and bracket: 3.5 times the text) and the string buffer.
-  advise_huge_pages(parser.doc.tape.get(), (text.size() + 3) * sizeof(std::uint64_t));
-  advise_huge_pages(parser.doc.string_buf.get(), 5 * text.size() / 3 + simdjson::SIMDJSON_PADDING);
-  // The text with the padding simdjson's SIMD loads read past the end, in a buffer of our own so
-  // that it gets huge pages too.
-  const std::unique_ptr<char[]> padded(simdjson::internal::allocate_padded_buffer(text.size()));
-  if (!padded) return false;
-  advise_huge_pages(padded.get(), text.size());
-  std::memcpy(padded.get(), text.data(), text.size());
+  // The parser copies the text into a buffer with the padding its SIMD loads read past the end.
   dom::element root;
-  if (parser.parse(padded.get(), text.size(), false).get(root) != simdjson::SUCCESS) return false;
+  if (parser.parse(text.data(), text.size(), true).get(root) != simdjson::SUCCESS) return false;
   dom::object members;
   if (root.get(members) != simdjson::SUCCESS) return false;
   TapeWalk walk(reader);
