@@ -6,7 +6,6 @@
 // file that includes RapidJSON.)
 #define RAPIDJSON_FORCEINLINE __attribute__((always_inline))
 #include <rapidjson/error/en.h>
-#include <rapidjson/filereadstream.h>
 #include <rapidjson/memorystream.h>
 #include <rapidjson/reader.h>
 
@@ -19,6 +18,7 @@
 #include <limits>
 #include <memory>
 #include <utility>
+#include <vector>
 
 #include "io/json_limits.hpp"
 #include "io/tree_builder.hpp"
@@ -435,6 +435,62 @@ class ResultHandler : public rapidjson::BaseReaderHandler<rapidjson::UTF8<>, Res
   std::vector<bool> element_seen_;
 };
 
+/// A RapidJSON input stream over TextPieces, one buffer of pieces at a time (RapidJSON's
+/// FileReadStream, with the source a function: a file or a database blob).
+class PieceReadStream {
+ public:
+  using Ch = char;
+  PieceReadStream(const TextPieces& next, std::size_t capacity) : next_(next), buffer_(capacity + 1) { fill(); }
+  [[nodiscard]] Ch Peek() const { return *current_; }
+  Ch Take() {
+    const Ch c = *current_;
+    advance();
+    return c;
+  }
+  [[nodiscard]] std::size_t Tell() const { return count_ + static_cast<std::size_t>(current_ - buffer_.data()); }
+  // An input stream only (RapidJSON's Reader never writes to it).
+  void Put(Ch) { std::abort(); }
+  void Flush() { std::abort(); }
+  Ch* PutBegin() { std::abort(); }
+  std::size_t PutEnd(Ch*) { std::abort(); }
+
+ private:
+  void advance() {
+    if (current_ < last_) {
+      ++current_;
+    } else if (!end_) {
+      count_ += filled_;
+      fill();
+    }
+  }
+  /// The buffer full, or what is left; at the end a '\0' after the text, which RapidJSON reads as
+  /// the end (as FileReadStream does).
+  void fill() {
+    const std::size_t capacity = buffer_.size() - 1;
+    filled_ = 0;
+    while (filled_ < capacity) {
+      const std::size_t got = next_(buffer_.data() + filled_, capacity - filled_);
+      if (got == 0) break;
+      filled_ += got;
+    }
+    current_ = buffer_.data();
+    last_ = buffer_.data() + filled_ - 1;
+    if (filled_ < capacity) {
+      buffer_[filled_] = '\0';
+      ++last_;
+      end_ = true;
+    }
+  }
+
+  const TextPieces& next_;
+  std::vector<char> buffer_;
+  std::size_t filled_ = 0;
+  std::size_t count_ = 0;  ///< bytes before the buffer
+  char* current_ = nullptr;
+  char* last_ = nullptr;
+  bool end_ = false;
+};
+
 template <class Stream>
 ResultArrays parse(Stream& stream, const ResultSelection& selection) {
   ResultArrays out;
@@ -456,12 +512,16 @@ ResultArrays read_result_arrays(std::string_view text, const ResultSelection& se
   return parse(stream, selection);
 }
 
+ResultArrays read_result_arrays_pieces(const TextPieces& next, const ResultSelection& selection) {
+  PieceReadStream stream(next, 64 * 1024);
+  return parse(stream, selection);
+}
+
 ResultArrays read_result_arrays_file(const std::string& path, const ResultSelection& selection) {
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!file) throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
-  std::vector<char> buffer(64 * 1024);
-  rapidjson::FileReadStream stream(file.get(), buffer.data(), buffer.size());
-  return parse(stream, selection);
+  return read_result_arrays_pieces(
+      [&file](char* out, std::size_t capacity) { return std::fread(out, 1, capacity, file.get()); }, selection);
 }
 
 }  // namespace saasgaps::io

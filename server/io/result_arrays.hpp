@@ -20,6 +20,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -82,6 +83,14 @@ class ResultTextError : public std::runtime_error {
 /// or coordinate, a string where a number belongs, a number beyond a double) are mesh_error. A
 /// number beyond a double in the tree part: std::invalid_argument naming its pointer.
 ResultArrays read_result_arrays(std::string_view text, const ResultSelection& selection);
+
+/// A source of a result's text in pieces: copies the text's next bytes into `out` (at most
+/// `capacity`) and returns how many; 0 at the end. (A file, a SQLite blob handle.)
+using TextPieces = std::function<std::size_t(char* out, std::size_t capacity)>;
+
+/// The same from pieces, asked for 64 KiB at a time: the text is never held whole, memory is the
+/// arrays and one piece. Exceptions of `next` pass through.
+ResultArrays read_result_arrays_pieces(const TextPieces& next, const ResultSelection& selection);
 
 /// The same from a file, read in 64 KiB pieces (the text is never held whole). A file that cannot
 /// be opened: std::runtime_error "cannot read PATH: <reason>".

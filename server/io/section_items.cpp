@@ -82,4 +82,22 @@ bool SectionReader::read_constraint_values(const ConstraintValues& item, std::si
   return true;
 }
 
+bool SectionReader::take_nodal_temperatures(std::span<const TemperatureValues> items) {
+  // The rules of read_temperatures for items of the usual shape: each node resolves, once.
+  std::vector<std::pair<int, double>> values;
+  values.reserve(items.size());
+  std::vector<bool> given(model_.nodes.size(), false);
+  for (const TemperatureValues& item : items) {
+    const auto node_id = item.node.id();
+    const Entry* found = node_id ? nodes_.find(*node_id) : nullptr;
+    if (found == nullptr) return false;
+    const auto node = static_cast<std::size_t>(found->index);
+    if (given[node]) return false;
+    given[node] = true;
+    values.emplace_back(found->index, item.T.value());
+  }
+  typed_temperatures_ = std::move(values);
+  return true;
+}
+
 }  // namespace saasgaps::io

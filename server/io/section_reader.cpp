@@ -489,6 +489,11 @@ void SectionReader::read_temperatures(const Obj& loads, Loads& into) {
   if (const auto fallback = number_field(temperatures, "default")) {
     into.node_temperature.assign(model_.nodes.size(), *fallback);
   }
+  if (typed_temperatures_ && temperatures.pointer == "/loads/temperatures") {
+    // Judged by take_nodal_temperatures (section_items.cpp); the tree's nodal array is empty.
+    for (const auto& [node, T] : *typed_temperatures_) into.node_temperature[static_cast<std::size_t>(node)] = T;
+    typed_temperatures_.reset();
+  }
   const json* list = array_field(temperatures, "nodal", 0);
   if (list == nullptr) return;
   // Per node index, the item that gave its temperature (its pointer is spelled only for an issue:

@@ -240,6 +240,11 @@ struct ConstraintValues {
   Number node;
   std::optional<Number> r, z;
 };
+/// An item of the top-level loads.temperatures.nodal with exactly the keys node and T, each once,
+/// each a number (a thermal model has one per heated node: 258,000 at 10^6 unknowns).
+struct TemperatureValues {
+  Number node, T;
+};
 
 /// Reads one document, accumulating issues; one function per section of the document. Every
 /// check reports its own issue and returns nullopt / nullptr / false, and the caller carries on, so
@@ -269,6 +274,12 @@ class SectionReader {
   bool read_node_values(const NodeValues& item, std::size_t index);
   bool read_element_values(const ElementValues& item, std::size_t index);
   bool read_constraint_values(const ConstraintValues& item, std::size_t index);
+  /// The fast path of the top-level /loads/temperatures/nodal, called after the nodes are read and
+  /// before read_section(loads): true when every item is valid (its node resolves, no node is given
+  /// twice); read_section(loads) then takes these values in place of the tree's nodal array, which
+  /// the driver leaves empty. False (nothing changed, nothing reported) when some item breaks a
+  /// rule, and the tree's nodal array must be judged as usual.
+  bool take_nodal_temperatures(std::span<const TemperatureValues> items);
   /// The Model, or ModelError with every issue.
   Model finish();
 
@@ -412,6 +423,8 @@ class SectionReader {
   std::size_t item_ = 0;               ///< index of the item being read
   PrescribedAt prescribed_;  ///< constraints: (node index, component) -> pointer
   std::vector<std::string> temperature_pointers_;  ///< every loads.temperatures given (thermal excludes them)
+  /// take_nodal_temperatures: (node index, T) of /loads/temperatures/nodal, in the text's order.
+  std::optional<std::vector<std::pair<int, double>>> typed_temperatures_;
 };
 
 }  // namespace saasgaps::io

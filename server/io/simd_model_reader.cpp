@@ -1,6 +1,7 @@
 #include "io/simd_model_reader.hpp"
 
 #include <array>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -91,6 +92,29 @@ bool constraint_values(dom::element item, ConstraintValues& v) {
          (seen & 1U) != 0;
 }
 
+bool temperature_values(dom::element item, TemperatureValues& v) {
+  static constexpr std::array<std::string_view, 2> keys{"node", "T"};
+  unsigned seen = 0;
+  return members_of(item, keys, seen,
+                    [&](std::size_t k, dom::element value) { return number_of(value, k == 0 ? v.node : v.T); }) &&
+         seen == 3;
+}
+
+/// The only member `key` of object `o`: false when o is not an object, has no such member or has
+/// it twice (then the tree's rules, which keep the later value, must judge it).
+bool only_member(dom::element o, std::string_view key, dom::element& value) {
+  dom::object members;
+  if (o.get(members) != simdjson::SUCCESS) return false;
+  int found = 0;
+  for (const dom::key_value_pair member : members) {
+    if (member.key == key) {
+      value = member.value;
+      ++found;
+    }
+  }
+  return found == 1;
+}
+
 /// The walk over the tape.
 class TapeWalk {
  public:
@@ -121,6 +145,11 @@ class TapeWalk {
         reader_.read_section(s, nullptr);
       } else if (streams_items(s) && values[k].is_array()) {
         read_items(s, values[k]);
+      } else if (s == Section::loads && typed_nodal_temperatures(values[k])) {
+        path_.start_at_member(std::string(section_key(s)));
+        const json value = tree(values[k]);  // its nodal array left empty: the reader holds the values
+        skip_ = std::nullopt;
+        reader_.read_section(s, &value);
       } else {
         path_.start_at_member(std::string(section_key(s)));
         const json value = tree(values[k]);
@@ -152,6 +181,10 @@ class TapeWalk {
       case dom::element_type::ARRAY: {
         path_.open(false);
         value = json::array();
+        if (skip_ && dom::array(e).begin() == *skip_) {
+          path_.close();
+          return value;
+        }
         auto& items = value.get_ref<json::array_t&>();
         for (const dom::element item : dom::array(e)) items.push_back(tree(item));
         path_.close();
@@ -208,6 +241,27 @@ class TapeWalk {
     reader_.end_items(s, index);
   }
 
+  /// The fast path of /loads/temperatures/nodal (258,000 items at 10^6 unknowns, which a tree
+  /// costs a fifth of the read): when loads.temperatures.nodal is there once, every item has the
+  /// usual shape and the reader takes them all, the loads tree is built without the items
+  /// (skip_). Any other case: false, and the tree of loads holds the items.
+  bool typed_nodal_temperatures(dom::element loads) {
+    dom::element temperatures, nodal;
+    dom::array items;
+    if (!only_member(loads, "temperatures", temperatures) || !only_member(temperatures, "nodal", nodal) ||
+        nodal.get(items) != simdjson::SUCCESS) {
+      return false;
+    }
+    std::vector<TemperatureValues> values;
+    values.reserve(items.size());
+    for (const dom::element item : items) {
+      if (!temperature_values(item, values.emplace_back())) return false;
+    }
+    if (!reader_.take_nodal_temperatures(values)) return false;
+    skip_ = items.begin();
+    return true;
+  }
+
   bool read_typed(Section s, dom::element item, std::size_t index) {
     if (s == Section::nodes) {
       NodeValues v;
@@ -226,6 +280,7 @@ class TapeWalk {
   std::vector<InputIssue> repeated_;
   std::array<bool, section_count> present_{};  ///< the first value of each section the root has
   std::array<dom::element, section_count> values_{};
+  std::optional<dom::array::iterator> skip_;  ///< tree() leaves the array that begins here empty
 };
 
 }  // namespace

@@ -209,13 +209,13 @@ bool not_modified(const httplib::Request& req, httplib::Response& res, const std
   return false;
 }
 
-/// The job's stored result text; 404 when it has none yet.
-std::string stored_result_text(JobStore& store, std::int64_t id) {
-  std::optional<std::string> result = store.result(id);
+/// The job's stored result, to be read in pieces; 404 when it has none yet.
+std::unique_ptr<JobStore::StoredResult> open_stored_result(JobStore& store, std::int64_t id) {
+  std::unique_ptr<JobStore::StoredResult> result = store.open_result(id);
   if (!result) {
     throw HttpError(404, "Not Found", "job " + std::to_string(id) + " has no result yet (" + to_string(store.get(id).state) + ")");
   }
-  return std::move(*result);
+  return result;
 }
 
 HttpError damaged_result(std::int64_t id, const std::string& what) {
@@ -224,11 +224,19 @@ HttpError damaged_result(std::int64_t id, const std::string& what) {
 }
 
 /// What a plot or the VTU export reads of the job's stored result, as typed arrays
-/// (io/result_arrays.hpp): no tree of the nodes and elements.
+/// (io/result_arrays.hpp): no tree of the nodes and elements, and the text never held whole: it is
+/// read from the database's blob handle in 64 KiB pieces straight into the SAX reader.
 io::ResultArrays stored_result_arrays(JobStore& store, std::int64_t id, const io::ResultSelection& selection) {
-  const std::string result = stored_result_text(store, id);
+  const std::unique_ptr<JobStore::StoredResult> result = open_stored_result(store, id);
+  std::size_t offset = 0;
+  const io::TextPieces pieces = [&](char* out, std::size_t capacity) {
+    const std::size_t count = std::min(capacity, result->size() - offset);
+    result->read(offset, out, count);
+    offset += count;
+    return count;
+  };
   try {
-    return io::read_result_arrays(result, selection);
+    return io::read_result_arrays_pieces(pieces, selection);
   } catch (const io::ResultTextError& e) {
     throw damaged_result(id, std::string("not JSON: ") + e.what());
   } catch (const io::NestingTooDeep& e) {
@@ -395,11 +403,7 @@ void HttpApi::install(httplib::Server& server) {
   server.Get(R"(/v1/jobs/(\d+)/events)", [this](const httplib::Request& req, httplib::Response& res) { events(req, res); });
   server.Get(R"(/v1/jobs/(\d+)/result)", [this](const httplib::Request& req, httplib::Response& res) {
     const std::int64_t id = job_in_path(req);
-    std::shared_ptr<JobStore::StoredResult> result = store_.open_result(id);
-    if (!result) {
-      throw HttpError(404, "Not Found", "job " + std::to_string(id) + " has no result yet (" +
-                                            to_string(store_.get(id).state) + ")");
-    }
+    std::shared_ptr<JobStore::StoredResult> result = open_stored_result(store_, id);
     if (not_modified(req, res, result_tag(store_, id, result->size()))) return;
     // Streamed from the database in 64 KiB pieces: a result of hundreds of megabytes is never
     // copied whole, let alone parsed. A job deleted meanwhile ends the response early.

@@ -18,6 +18,7 @@
 //   read, SAX      the nlohmann SAX pass (io/model_stream.hpp) + its digest: what parse_model did
 //                  before simdjson, and still does for text simdjson refuses
 //   read, stream   parse_model(text, &digest): simdjson's tape, typed items, digest from the tape
+//   read, stream without the digest   parse_model(text): what the digest costs
 // The read rates are also printed as ratios of CPU rates, all measured in this one run.
 //   write, tree    the tree writer (kept in tests/io) + dump(2): what `saasgaps solve -o` wrote before
 //   write, stream  io::write_result, compact (the default) and --pretty, through a 64 KiB buffer
@@ -31,6 +32,10 @@
 //   arrays only       the read alone, without the drawing
 //   convergence, tree / arrays   the same for the convergence plot
 // and the ratios tree / arrays of wall time, CPU time and peak RSS, measured in this one run.
+//
+// With --stored RESULT.json, the result stored in a SQLite database (a temporary directory) and
+// read for a contour as the service reads it: the text fetched whole (before) against the blob
+// handle's 64 KiB pieces fed to the SAX reader (now), with their peak RSS, in this one run.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -38,6 +43,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <random>
@@ -54,6 +61,7 @@
 #include "io/result_writer.hpp"
 #include "io/state_codec.hpp"
 #include "plot/plot_request.hpp"
+#include "service/sqlite.hpp"
 
 using namespace saasgaps;
 
@@ -175,7 +183,7 @@ nlohmann::json tree_before(const std::string& text, const plot::PlotRequest& req
 }
 
 void print_ratios(const char* what, const Measured& tree, const Measured& arrays) {
-  std::printf("%s, tree / arrays: wall %.2fx, CPU %.2fx, peak RSS %.2fx\n", what, tree.seconds / arrays.seconds,
+  std::printf("%s: wall %.2fx, CPU %.2fx, peak RSS %.2fx\n", what, tree.seconds / arrays.seconds,
               tree.cpu_seconds / arrays.cpu_seconds, tree.peak_mib / arrays.peak_mib);
 }
 
@@ -202,8 +210,55 @@ int plots(const char* path) {
             const io::ResultArrays read = io::read_result_arrays_file(path, plot::result_selection_for(request));
             return size;
           }));
-    print_ratios(what.c_str(), tree, arrays);
+    print_ratios((what + ", tree / arrays").c_str(), tree, arrays);
   }
+  return 0;
+}
+
+/// A stored result read for a picture as the service reads it (the contour's selection), from a
+/// SQLite database of the service's page size: the text fetched whole with SELECT (before) against
+/// the blob handle's 64 KiB pieces fed to the SAX reader (now). The reading alone, no drawing.
+int stored(const char* path) {
+  char directory[] = "/tmp/saasgaps-io-bench-XXXXXX";
+  if (mkdtemp(directory) == nullptr) return 1;
+  const std::string database = std::string(directory) + "/results.db";
+  double size = 0.0;
+  {
+    service::Connection db(database);
+    db.execute("CREATE TABLE results (job_id INTEGER PRIMARY KEY, document TEXT NOT NULL)");
+    const std::string text = file_text(path);
+    size = static_cast<double>(text.size());
+    db.prepare("INSERT INTO results (job_id, document) VALUES (1, ?)").bind(1, text).run();
+  }
+  std::printf("result %s: %.1f MB of text, stored; this process holds %.0f MiB\n", path, size / 1e6, peak_rss_mib());
+  plot::PlotRequest request;
+  request.name = "effective";
+  const io::ResultSelection selection = plot::result_selection_for(request);
+  const Measured whole = in_child([&] {
+    service::Connection db(database);
+    service::Statement q = db.prepare("SELECT document FROM results WHERE job_id = 1");
+    if (!q.step()) std::abort();
+    const io::ResultArrays read = io::read_result_arrays(q.text(0), selection);
+    return size;
+  });
+  print("stored, text whole (before)", whole);
+  const Measured pieces = in_child([&] {
+    service::Connection db(database);
+    service::BlobReader blob(db, "results", "document", 1);
+    std::size_t offset = 0;
+    const io::ResultArrays read = io::read_result_arrays_pieces(
+        [&](char* out, std::size_t capacity) {
+          const std::size_t count = std::min(capacity, blob.size() - offset);
+          blob.read(offset, out, count);
+          offset += count;
+          return count;
+        },
+        selection);
+    return size;
+  });
+  print("stored, blob pieces", pieces);
+  print_ratios("stored result read, whole text / blob pieces", whole, pieces);
+  std::filesystem::remove_all(directory);
   return 0;
 }
 
@@ -211,9 +266,10 @@ int plots(const char* path) {
 
 int main(int argc, char** argv) {
   if (argc == 3 && std::string(argv[1]) == "--plots") return plots(argv[2]);
+  if (argc == 3 && std::string(argv[1]) == "--stored") return stored(argv[2]);
   const bool reads_only = argc == 3 && std::string(argv[2]) == "--reads-only";
   if (argc != 2 && !reads_only) {
-    std::fprintf(stderr, "usage: %s MODEL.json [--reads-only] | --plots RESULT.json\n", argv[0]);
+    std::fprintf(stderr, "usage: %s MODEL.json [--reads-only] | --plots RESULT.json | --stored RESULT.json\n", argv[0]);
     return 2;
   }
   std::string text = file_text(argv[1]);
@@ -241,8 +297,16 @@ int main(int argc, char** argv) {
     return size;
   });
   print("read, stream (simdjson)", stream);
-  std::printf("read rate of CPU, stream / tree: %.1fx; stream / nlohmann SAX: %.1fx\n",
-              tree.cpu_seconds / stream.cpu_seconds, sax.cpu_seconds / stream.cpu_seconds);
+  // The same without the restart digest (which `saasgaps solve` computes only for --state-out or
+  // --resume; the service for every job): what the digest costs.
+  const Measured no_digest = in_child([&] {
+    const Model model = io::parse_model(text);
+    return size;
+  });
+  print("read, stream without the digest", no_digest);
+  std::printf("read rate of CPU, stream / tree: %.1fx; stream / nlohmann SAX: %.1fx; without the digest / tree: %.1fx\n",
+              tree.cpu_seconds / stream.cpu_seconds, sax.cpu_seconds / stream.cpu_seconds,
+              tree.cpu_seconds / no_digest.cpu_seconds);
 
   if (reads_only) return 0;
   const Model model = io::parse_model(text);

@@ -4,6 +4,7 @@
 // seed: mutated result text never crashes it, and it refuses exactly what nlohmann's parser refuses.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -121,6 +122,60 @@ TEST(ResultArrays, ColumnsHoldTheTreesNumbersBitForBit) {
     }
     EXPECT_FALSE(elements.first_missing[0] || elements.first_missing[1]);
   }
+}
+
+TEST(ResultArrays, PiecesReadAsTheWholeTextAndNoPieceIsAskedBeyond64KiB) {
+  // What the service does with a stored result: the text comes from a blob handle in pieces and is
+  // never held whole. The source here counts what it is asked for: the reader asks for at most
+  // 64 KiB at a time, and every byte exactly once, in order; the pieces it gets may be of any size.
+  std::mt19937_64 rng(7);
+  const std::string text = random_result(rng, 60).dump();  // 1.1 MB: many pieces
+  ASSERT_GT(text.size(), 16U * 64 * 1024);
+  for (const std::size_t most : {std::size_t{1}, std::size_t{7}, std::size_t{4096}, std::size_t{1} << 20}) {
+    std::size_t offset = 0, largest_request = 0, requests = 0;
+    const TextPieces pieces = [&](char* out, std::size_t capacity) {
+      largest_request = std::max(largest_request, capacity);
+      ++requests;
+      const std::size_t count = std::min({capacity, most, text.size() - offset});
+      text.copy(out, count, offset);
+      offset += count;
+      return count;
+    };
+    const ResultArrays streamed = read_result_arrays_pieces(pieces, contour);
+    const ResultArrays whole = read_result_arrays(text, contour);
+    EXPECT_EQ(offset, text.size());
+    EXPECT_LE(largest_request, 64U * 1024);
+    EXPECT_GE(requests, text.size() / (64 * 1024));
+    EXPECT_EQ(streamed.document, whole.document);
+    ASSERT_TRUE(streamed.nodes && streamed.elements);
+    EXPECT_EQ(streamed.nodes->id, whole.nodes->id);
+    EXPECT_EQ(streamed.nodes->r, whole.nodes->r);
+    EXPECT_EQ(streamed.nodes->u_z, whole.nodes->u_z);
+    EXPECT_EQ(streamed.elements->node_ids, whole.elements->node_ids);
+    EXPECT_EQ(streamed.elements->values, whole.elements->values);
+  }
+  // Text that is not JSON is refused at the same byte either way, across a piece boundary.
+  const std::string broken = text.substr(0, 100000) + "}" + text.substr(100000);
+  std::size_t offset = 0;
+  const TextPieces pieces = [&](char* out, std::size_t capacity) {
+    const std::size_t count = std::min(capacity, broken.size() - offset);
+    broken.copy(out, count, offset);
+    offset += count;
+    return count;
+  };
+  std::string streamed_error, whole_error;
+  try {
+    (void)read_result_arrays_pieces(pieces, contour);
+  } catch (const ResultTextError& e) {
+    streamed_error = e.what();
+  }
+  try {
+    (void)read_result_arrays(broken, contour);
+  } catch (const ResultTextError& e) {
+    whole_error = e.what();
+  }
+  EXPECT_FALSE(whole_error.empty());
+  EXPECT_EQ(streamed_error, whole_error);
 }
 
 TEST(ResultArrays, WithoutTheMeshNodesAndElementsAreSkipped) {
