@@ -2,7 +2,9 @@
 // mode's active-set solver) against one numeric factorization + solve of the same matrix, measured in
 // the same run.
 //
-//   build/tests/bench/saasgaps_surface_contact_bench --dofs 1e5
+//   build/tests/bench/saasgaps_surface_contact_bench --dofs 1.5e5
+//   build/tests/bench/saasgaps_surface_contact_bench --dofs 1.5e5 --eccentric 2
+//   build/tests/bench/saasgaps_surface_contact_bench --dofs 1e6 --repeat 1
 //
 // The model is the plane-strain shrink fit of tests/verification/surface_contact_test.cpp at scale
 // (tests/support/shrink_fit_rings.hpp): two whole rings (1..1.5 and 1.5..2.2, E 30e6 and 10e6) meshed on their own with non-matching
@@ -11,6 +13,14 @@
 // first active set is every row, since every initial gap is < 0). Reported: building the rows (pairing
 // and integration), the baseline (one numeric factorization of K, whose pattern holds the rows'
 // couplings, and one solve), the contact solve from a cold start, and the ratios.
+//
+// --eccentric e moves the shaft by e interferences along +r: the initial gap round the interface is
+// then about -delta (1 + e cos theta), so for e > 1 the points where cos theta < -1/e start open and
+// the contact must find where it ends (a partial contact: several active sets).
+//
+// Unless --around is given, the mesh keeps the shape of its elements at every size: `around` grows
+// with the square root of the unknowns (600 at 10^5, 732 at 1.5 x 10^5, 1896 at 10^6; a multiple of
+// 12, so that both rings' counts are multiples of 4).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
@@ -25,31 +35,56 @@
 #include "stiffness_system.hpp"
 #include "support/shrink_fit_rings.hpp"
 
+#include "peak_memory.hpp"
 #include "stopwatch.hpp"
 
 using namespace saasgaps;
 
 namespace {
 
+using saasgaps::bench::peak_rss_mib;
 using saasgaps::bench::timed;
+
+/// Moves the nodes of the shaft (the elements of material 0) by `offset` along r.
+void move_shaft(Model& m, double offset) {
+  std::vector<bool> shaft(m.nodes.size(), false);
+  for (const Element& e : m.elements) {
+    if (e.material != 0) continue;
+    for (int k = 0; k < e.node_count; ++k) shaft[static_cast<std::size_t>(e.nodes[k])] = true;
+  }
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) {
+    if (shaft[n]) m.nodes[n].r += offset;
+  }
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Times the contact-surface solve against one factorization + solve of the same matrix"};
   double target_dofs = 1.0e5;
-  int around = 600;
+  int around = 0;
   int repeat = 3;
-  app.add_option("--dofs", target_dofs, "Approximate number of degrees of freedom (at most 2e5)")
-      ->check(CLI::Range(100.0, 2.0e5));
-  app.add_option("--around", around, "Segments round the shaft (the bore has 5/3 as many)")->check(CLI::Range(12, 100000));
+  double eccentric = 0.0;
+  app.add_option("--dofs", target_dofs, "Approximate number of degrees of freedom (at most 2e6)")
+      ->check(CLI::Range(100.0, 2.0e6));
+  app.add_option("--around", around, "Segments round the shaft, a multiple of 12 (the bore has 5/3 as many); "
+                 "default: 600 sqrt(dofs / 1e5)")->check(CLI::Range(12, 100000));
+  app.add_option("--eccentric", eccentric,
+                 "Move the shaft by this many interferences along r: above 1, part of the interface opens")
+      ->check(CLI::Range(0.0, 100.0));
   app.add_option("--repeat", repeat, "Runs of each timing; the best is reported")->check(CLI::Range(1, 100));
   CLI11_PARSE(app, argc, argv);
+  if (around == 0) around = 12 * std::max(1, static_cast<int>(std::lround(50.0 * std::sqrt(target_dofs / 1.0e5))));
+  if (around % 12 != 0) {
+    std::fprintf(stderr, "--around must be a multiple of 12 (both rings' counts multiples of 4)\n");
+    return 1;
+  }
 
   // (radial + 1) x (around + 5/3 around) nodes, 2 unknowns each.
   const int total_around = around + around * 5 / 3;
   const int radial = std::max(1, static_cast<int>(std::lround(target_dofs / (2.0 * total_around))) - 1);
-  const Model m = testing::shrink_fit_rings::shrink_fit(AnalysisType::plane_strain, radial, {around, around * 5 / 3});
+  Model m = testing::shrink_fit_rings::shrink_fit(AnalysisType::plane_strain, radial, {around, around * 5 / 3});
+  move_shaft(m, eccentric * testing::shrink_fit_rings::delta);
   SurfaceContact surfaces;
   double rows_s = 1e300;
   for (int r = 0; r < repeat; ++r) rows_s = std::min(rows_s, timed([&] { surfaces = surface_contact(m); }));
@@ -85,9 +120,9 @@ int main(int argc, char** argv) {
   }
   const double baseline = factorize_s + solve_s;
   std::printf("model: plane-strain shrink fit, %d x (%d, %d) quads, %lld unknowns, %zu contact rows, nnz(L) %.3g, "
-              "%.3g Gflop per factorization\n",
+              "%.3g Gflop per factorization, shaft moved by %g interferences\n",
               radial, around, around * 5 / 3, static_cast<long long>(dofs.size()), surfaces.pairs.pairs.size(),
-              cholesky.factor_nonzeros(), cholesky.factor_flops() / 1e9);
+              cholesky.factor_nonzeros(), cholesky.factor_flops() / 1e9, eccentric);
   std::printf("%-52s %10.3f\n", "contact rows (pairing and integration)", rows_s);
   std::printf("%-52s %10.3f\n", "  of which mortar rows, bin search", search_s);
   std::printf("%-52s %10.3f\n", "  the same rows, all against all", all_s);
@@ -100,5 +135,6 @@ int main(int argc, char** argv) {
               report.complementarity);
   std::printf("ratio contact solve / (factorization + solve): %.3f\n", contact_s / baseline);
   std::printf("ratio (rows + contact solve) / (factorization + solve): %.3f\n", (rows_s + contact_s) / baseline);
+  std::printf("peak RSS of the process: %.0f MiB\n", peak_rss_mib());
   return 0;
 }
