@@ -22,14 +22,12 @@
 #include "io/gap_generator.hpp"
 #include "io/gmsh_mesh.hpp"
 #include "io/mesh_groups.hpp"
+#include "io/value_rules.hpp"
 
 namespace saasgaps::io::assembly {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
-
-/// A value for a message: its JSON text, cut short.
-std::string shown(const json& value);
 
 /// Which dimensions a use of a group accepts, and how to say it.
 struct GroupUse {
@@ -56,6 +54,10 @@ class Importer {
     }
     issues_.push_back({std::move(pointer), std::move(detail)});
   }
+  /// report() as a callable, for the shared checks of value_rules.hpp.
+  auto reporter() {
+    return [this](const std::string& pointer, std::string detail) { report(pointer, std::move(detail)); };
+  }
 
   // ---- shape checks
   bool object(const json& v, const std::string& p, std::initializer_list<std::string_view> required,
@@ -63,7 +65,8 @@ class Importer {
   /// parent[key] when it is an array (non-empty if asked); nullptr when absent (object() reports a
   /// missing required key) or reported.
   const json* array(const json& parent, const std::string& p, std::string_view key, bool non_empty);
-  std::optional<double> number(const json& o, const std::string& p, std::string_view key, bool positive = false);
+  std::optional<double> number(const json& o, const std::string& p, std::string_view key,
+                               const Range& range = any_number);
   std::optional<std::string> string(const json& o, const std::string& p, std::string_view key);
 
   /// The file `name` (the value at `pointer`) names, or nullopt (reported) when it may not be read.

@@ -19,6 +19,8 @@
 #include "io/mesh_groups.hpp"
 #include "io/model_reader.hpp"
 #include "io/nodal_values_file.hpp"
+#include "io/value_quote.hpp"
+#include "io/value_rules.hpp"
 
 namespace saasgaps::io {
 
@@ -28,74 +30,31 @@ namespace assembly {
 constexpr std::array<std::string_view, 6> generated_sections{"/nodes", "/elements", "/constraints", "/gaps/elements",
                                                              "/loads/", "/contact"};
 
-/// A value for a message: its JSON text, cut short.
-std::string shown(const json& value) {
-  std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
-  if (text.size() > 60) text = text.substr(0, 60) + "...";
-  return text;
-}
-
 constexpr double default_pair_tolerance = 0.1;
 
 // ---- shape checks
 
 bool Importer::object(const json& v, const std::string& p, std::initializer_list<std::string_view> required,
                       std::initializer_list<std::string_view> optional) {
-  if (!v.is_object()) {
-    report(p, "expected an object, got " + shown(v));
-    return false;
-  }
-  for (auto it = v.begin(); it != v.end(); ++it) {
-    const auto known = [&](std::initializer_list<std::string_view> keys) {
-      return std::find(keys.begin(), keys.end(), it.key()) != keys.end();
-    };
-    if (known(required) || known(optional)) continue;
-    std::string allowed;
-    for (const auto list : {required, optional}) {
-      for (const std::string_view k : list) allowed += (allowed.empty() ? "" : ", ") + std::string(k);
-    }
-    report(pointer_append(p, it.key()), "unknown key \"" + it.key() + "\" (allowed here: " + allowed + ")");
-  }
-  for (const std::string_view k : required) {
-    if (!v.contains(k)) report(p, "missing required key \"" + std::string(k) + "\"");
-  }
-  return true;
+  return check_object(v, p, {required.begin(), required.size()}, {optional.begin(), optional.size()}, reporter());
 }
 
 const json* Importer::array(const json& parent, const std::string& p, std::string_view key, bool non_empty) {
   const auto it = parent.find(key);
   if (it == parent.end()) return nullptr;
-  const std::string at = pointer_append(p, key);
-  if (!it->is_array()) {
-    report(at, std::string(key) + " must be an array, got " + shown(*it));
-    return nullptr;
-  }
-  if (non_empty && it->empty()) {
-    report(at, std::string(key) + " must not be empty");
-    return nullptr;
-  }
-  return &*it;
+  return check_array(*it, pointer_append(p, key), key, non_empty ? 1 : 0, reporter());
 }
 
-std::optional<double> Importer::number(const json& o, const std::string& p, std::string_view key, bool positive) {
+std::optional<double> Importer::number(const json& o, const std::string& p, std::string_view key, const Range& range) {
   const auto it = o.find(key);
   if (it == o.end()) return std::nullopt;
-  if (!it->is_number() || !std::isfinite(it->get<double>()) || (positive && !(it->get<double>() > 0.0))) {
-    report(pointer_append(p, key), std::string(key) + " must be a finite number" + (positive ? " > 0" : "") +
-                                       ", got " + shown(*it));
-    return std::nullopt;
-  }
-  return it->get<double>();
+  return check_number(*it, pointer_append(p, key), key, range, reporter());
 }
 
 std::optional<std::string> Importer::string(const json& o, const std::string& p, std::string_view key) {
   const auto it = o.find(key);
   if (it == o.end()) return std::nullopt;
-  if (!it->is_string()) {
-    report(pointer_append(p, key), std::string(key) + " must be a string, got " + shown(*it));
-    return std::nullopt;
-  }
-  return it->get<std::string>();
+  return check_string(*it, pointer_append(p, key), key, reporter());
 }
 
 // ---- the mesh and its groups
@@ -151,7 +110,7 @@ const PhysicalGroup* Importer::group(const json& o, const std::string& p, const 
 
 const PhysicalGroup* Importer::named_group(const json& value, const std::string& at, const GroupUse& use) {
   if (!value.is_string()) {
-    report(at, "a physical group name must be a string, got " + shown(value));
+    report(at, "a physical group name must be a string, got " + describe(value));
     return nullptr;
   }
   if (!groups_) return nullptr;
@@ -194,7 +153,7 @@ void Importer::regions(json& model) {
       continue;
     }
     if (!m->is_number_integer() || !material_ids_.contains(m->get<int>())) {
-      report(pointer_append(p, "material"), "material " + shown(*m) + " is not the id of an entry of /materials");
+      report(pointer_append(p, "material"), "material " + quote(*m) + " is not the id of an entry of /materials");
       complete = false;
       continue;
     }
@@ -394,7 +353,7 @@ void Importer::temperature_file(const json& file, const std::string& p, std::vec
   if (!object(file, p, {"path"}, {"field", "tolerance"})) return;
   const auto name = string(file, p, "path");
   const std::string field = string(file, p, "field").value_or("T");
-  const auto tolerance_given = number(file, p, "tolerance", true);
+  const auto tolerance_given = number(file, p, "tolerance", positive);
   if (!name) return;
   const auto resolved = resolve_file(*name, pointer_append(p, "path"));
   if (!resolved) return;
@@ -542,7 +501,7 @@ void Importer::gaps(json& model) {
   const auto it = doc_.find("gaps");
   if (it == doc_.end()) return;
   if (!it->is_object()) {
-    report("/gaps", "expected an object, got " + shown(*it));
+    report("/gaps", "expected an object, got " + describe(*it));
     return;
   }
   json settings = *it;
@@ -572,7 +531,7 @@ void Importer::gaps(json& model) {
       const auto faces = o.find("faces");
       if (faces == o.end()) continue;
       if (!faces->is_array() || faces->size() != 2) {
-        report(pointer_append(p, "faces"), "faces must name two curve groups, got " + shown(*faces));
+        report(pointer_append(p, "faces"), "faces must name two curve groups, got " + describe(*faces));
         continue;
       }
       contact_pair(o, pointer_append(p, "faces"), contact);
@@ -596,11 +555,11 @@ void Importer::gaps(json& model) {
                "gaps.method \"exact\" (docs/import.md); gap elements conduct by gaps.conductance and have no friction");
       }
     }
-    const double tolerance = number(o, p, "tolerance", true).value_or(default_pair_tolerance);
+    const double tolerance = number(o, p, "tolerance", positive).value_or(default_pair_tolerance);
     long long id = next_id;
     if (const auto first = o.find("first_id"); first != o.end()) {
       if (!first->is_number_integer() || first->get<long long>() < 1) {
-        report(pointer_append(p, "first_id"), "first_id must be a positive integer, got " + shown(*first));
+        report(pointer_append(p, "first_id"), "first_id must be a positive integer, got " + describe(*first));
         continue;
       }
       id = first->get<long long>();
@@ -608,7 +567,7 @@ void Importer::gaps(json& model) {
     const auto faces = o.find("faces");
     if (faces == o.end()) continue;
     if (!faces->is_array() || faces->size() != 2) {
-      report(pointer_append(p, "faces"), "faces must name two curve groups, got " + shown(*faces));
+      report(pointer_append(p, "faces"), "faces must name two curve groups, got " + describe(*faces));
       continue;
     }
     const auto a = face((*faces)[0], pointer_append(pointer_append(p, "faces"), std::size_t{0}));
@@ -665,8 +624,8 @@ json Importer::run() {
               {"description", "units", "loads", "gaps", "thermal", "solver", "output"})) {
     throw ModelError(std::move(issues_), "assembly");
   }
-  if (const auto v = doc_.find("schema_version"); v != doc_.end() && !(v->is_number_integer() && *v == 1)) {
-    report("/schema_version", "schema_version must be the integer 1, got " + shown(*v));
+  if (const auto v = doc_.find("schema_version"); v != doc_.end()) {
+    check_schema_version(*v, std::string("/schema_version"), reporter());
   }
   json model = json::object();
   model["schema_version"] = 1;

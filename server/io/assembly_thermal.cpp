@@ -18,6 +18,8 @@
 #include <set>
 
 #include "io/assembly_importer.hpp"
+
+#include "io/value_quote.hpp"
 #include "io/json_pointer.hpp"
 
 namespace saasgaps::io::assembly {
@@ -26,7 +28,7 @@ void Importer::thermal(json& model) {
   const auto it = doc_.find("thermal");
   if (it == doc_.end()) return;
   if (!it->is_object()) {
-    report("/thermal", "expected an object, got " + shown(*it));
+    report("/thermal", "expected an object, got " + describe(*it));
     return;
   }
   if (const auto loads = doc_.find("loads"); loads != doc_.end() && loads->is_object() && loads->contains("temperatures")) {
@@ -94,7 +96,7 @@ void Importer::thermal_sources(const json& list, const std::string& lp, json& ou
     if (power == o.end()) continue;  // reported by object()
     if (const auto m = o.find("material"); m != o.end()) {
       if (!m->is_number_integer() || !material_ids_.contains(m->get<int>())) {
-        report(pointer_append(p, "material"), "material " + shown(*m) + " is not the id of an entry of /materials");
+        report(pointer_append(p, "material"), "material " + quote(*m) + " is not the id of an entry of /materials");
         continue;
       }
       add(m->get<int>(), *power, p, pointer_append(p, "material"));

@@ -8,38 +8,6 @@
 
 namespace saasgaps::io {
 
-bool contains(const Range& range, double v) {
-  if (range.lower && (range.lower->inclusive ? v < range.lower->value : v <= range.lower->value)) return false;
-  if (range.upper && (range.upper->inclusive ? v > range.upper->value : v >= range.upper->value)) return false;
-  return true;
-}
-
-namespace {
-
-/// Bounds are round numbers; write 0 rather than 0.0 so the rule reads like the documentation.
-std::string format_bound(double v) {
-  if (v == std::floor(v) && std::fabs(v) < 1e15) return std::to_string(static_cast<long long>(v));
-  return format_number(v);
-}
-
-}  // namespace
-
-std::string requirement(const Range& range, std::string_view name) {
-  const auto op = [](const Bound& b) { return b.inclusive ? " <= " : " < "; };
-  std::string text;
-  if (range.lower && range.upper) {
-    text = format_bound(range.lower->value) + op(*range.lower) + std::string(name) + op(*range.upper) +
-           format_bound(range.upper->value);
-  } else if (range.lower) {
-    text = std::string(name) + (range.lower->inclusive ? " >= " : " > ") + format_bound(range.lower->value);
-  } else if (range.upper) {
-    text = std::string(name) + op(*range.upper) + format_bound(range.upper->value);
-  }
-  if (range.reason != nullptr) text += std::string(" (") + range.reason + ")";
-  return text;
-}
-
-
 namespace {
 
 // k and c are optional in every row: section_thermal.cpp judges whether a thermal run has them.
@@ -93,56 +61,17 @@ ElasticConstants constants_of(const PropertyRow& row) {
 
 bool SectionReader::check_object(const json& value, const std::string& pointer, std::span<const std::string_view> required,
                           std::span<const std::string_view> optional) {
-  if (!value.is_object()) {
-    report(pointer, "expected an object, got " + describe(value));
-    return false;
-  }
-  const auto allowed = [&](const std::string& key) {
-    return std::ranges::find(required, key) != required.end() || std::ranges::find(optional, key) != optional.end();
-  };
-  for (auto it = value.begin(); it != value.end(); ++it) {
-    if (allowed(it.key())) continue;
-    std::vector<std::string_view> names(required.begin(), required.end());
-    names.insert(names.end(), optional.begin(), optional.end());
-    report(pointer_append(pointer, it.key()), "unknown key " + quote_string(it.key()) + " (allowed here: " +
-                                                  (names.empty() ? std::string("none") : join(names)) + ")");
-  }
-  for (const std::string_view key : required) {
-    if (!value.contains(key)) report(pointer, "missing required key " + quote_string(key));
-  }
-  return true;
+  return io::check_object(value, pointer, required, optional, reporter());
 }
 
 const json* SectionReader::array(const json& value, const std::string& pointer, std::string_view name,
                           std::size_t min_items) {
-  if (!value.is_array()) {
-    report(pointer, std::string(name) + " must be an array, got " + describe(value));
-    return nullptr;
-  }
-  if (value.size() < min_items) {
-    report(pointer, std::string(name) + " must not be empty");
-    return nullptr;
-  }
-  return &value;
+  return check_array(value, pointer, name, min_items, reporter());
 }
 
 std::optional<double> SectionReader::number(const json& value, const Where& pointer, std::string_view name,
                                      const Range& range) {
-  // is_number() is false for booleans, so true is not silently 1.
-  if (!value.is_number()) {
-    report(pointer, std::string(name) + " must be a number, got " + describe(value));
-    return std::nullopt;
-  }
-  const double v = value.get<double>();
-  if (!std::isfinite(v)) {
-    report(pointer, std::string(name) + " = " + format_number(v) + " is not a finite number");
-    return std::nullopt;
-  }
-  if (!contains(range, v)) {
-    report(pointer, std::string(name) + " = " + quote(value) + " is out of range: need " + requirement(range, name));
-    return std::nullopt;
-  }
-  return v;
+  return check_number(value, pointer, name, range, reporter());
 }
 
 std::optional<int> SectionReader::integer(const json& value, const Where& pointer, std::string_view name,
@@ -185,11 +114,7 @@ std::optional<int> SectionReader::integer_field(const Obj& o, std::string_view k
 std::optional<std::string> SectionReader::string_field(const Obj& o, std::string_view key) {
   const json* v = o.find(key);
   if (v == nullptr) return std::nullopt;
-  if (!v->is_string()) {
-    report(o.at(key), std::string(key) + " must be a string, got " + describe(*v));
-    return std::nullopt;
-  }
-  return v->get<std::string>();
+  return check_string(*v, Where(o.pointer, key), key, reporter());
 }
 
 std::optional<std::size_t> SectionReader::choice_field(const Obj& o, std::string_view key,

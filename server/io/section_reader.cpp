@@ -193,10 +193,7 @@ Model SectionReader::finish() {
 /// schema_version is the integer 1.
 void SectionReader::read_schema_version(const Obj& root) {
   if (const json* version = root.find("schema_version")) {
-    if (!(version->is_number_integer() && *version == 1)) {
-      report(root.at("schema_version"),
-             "schema_version must be the integer 1 (the only version this reader knows), got " + describe(*version));
-    }
+    check_schema_version(*version, Where(root.pointer, "schema_version"), reporter());
   }
 }
 

@@ -31,45 +31,14 @@
 
 #include "errors.hpp"
 #include "io/json_pointer.hpp"
+#include "io/value_rules.hpp"
 #include "model.hpp"
 
 namespace saasgaps::io {
 
 using nlohmann::json;
 
-/// Ranges of numbers, with the wording of the rule they state.
-struct Bound {
-  double value = 0.0;
-  bool inclusive = false;
-};
 
-struct Range {
-  std::optional<Bound> lower;
-  std::optional<Bound> upper;
-  const char* reason = nullptr;  ///< why the range holds, when it is not obvious
-};
-
-constexpr Range any_number{};
-constexpr Range positive{Bound{0.0, false}, std::nullopt};
-constexpr Range non_negative{Bound{0.0, true}, std::nullopt};
-/// Elastic moduli (E, E1..E3, G12). The material law inverts the 4x4 compliance, whose determinant
-/// is of the order of 1 / E^4: it underflows to 0 beyond E ~ 1e77 and overflows below 1e-77, and the
-/// element condensation squares the stiffness (overflow beyond ~1e150). Far inside both, 1e-30 ..
-/// 1e30 holds every unit system (2e11 Pa, 3e7 psi, 200 GPa) and keeps products of moduli finite.
-constexpr Range modulus{Bound{1e-30, true}, Bound{1e30, true},
-                        "moduli beyond this range overflow or underflow the material law's arithmetic"};
-constexpr Range poisson_ratio{Bound{-1.0, false}, Bound{0.5, false},
-                              "an isotropic material is stable only for -1 < nu < 0.5"};
-constexpr Range hardening{Bound{0.0, true}, Bound{1.0, false}, "the secondary slope is a fraction of E"};
-constexpr Range extrapolation{Bound{0.0, true}, Bound{1.0, false}};
-constexpr Range tolerance_fraction{Bound{0.0, false}, Bound{1.0, false}};
-constexpr Range axisymmetric_radius{Bound{0.0, true}, std::nullopt,
-                                    "an axisymmetric model lies in the half plane r >= 0"};
-
-bool contains(const Range& range, double v);
-
-/// "E > 0", "0 <= hardening_ratio < 1": the rule a value broke.
-std::string requirement(const Range& range, std::string_view name);
 
 template <class Row>
 struct Field {
@@ -289,6 +258,10 @@ class SectionReader {
     issues_.push_back(RankedIssue{rank_, InputIssue{std::move(pointer), std::move(detail)}});
   }
   void report(const Where& where, std::string detail) { report(where.str(), std::move(detail)); }
+  /// report() as a callable, for the shared checks of value_rules.hpp.
+  auto reporter() {
+    return [this](const auto& pointer, std::string detail) { report(pointer, std::move(detail)); };
+  }
   /// True when value is an object; reports each unknown key at its own pointer and each missing
   /// required key at the object's pointer (the object is still read).
   bool check_object(const json& value, const std::string& pointer, std::span<const std::string_view> required,
