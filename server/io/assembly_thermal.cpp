@@ -19,8 +19,8 @@
 
 #include "io/assembly_importer.hpp"
 
-#include "io/value_quote.hpp"
 #include "io/json_pointer.hpp"
+#include "io/value_quote.hpp"
 
 namespace saasgaps::io::assembly {
 
