@@ -82,6 +82,59 @@ Mesh read_mesh(const json& result) {
   return m;
 }
 
+/// The contact point arrays (io/vtu_writer.hpp names them): every point of every pair of result
+/// `contact` written onto the node at its (r, z), a side-A node's reference position, found by a
+/// scan of the nodes (the first node there); a node on side A of two pairs keeps the later pair's.
+/// Nodes no point lands on hold 0, state -1 and pair 0.
+void add_contact_arrays(const json& result, const json& nodes, std::vector<VtuArray>& point_data) {
+  const auto contact = result.find("contact");
+  if (contact == result.end() || !contact->is_array() || contact->empty()) return;
+  struct Landed {
+    double pressure = 0.0, gap = 0.0, shear = 0.0, slip = 0.0;
+    std::int32_t state = -1, pair = 0;
+  };
+  std::vector<Landed> at(nodes.size());
+  std::int32_t pair = 0;
+  for (const json& entry : *contact) {
+    ++pair;
+    for (const json& point : entry.at("points")) {
+      const double r = point.at("r").get<double>(), z = point.at("z").get<double>();
+      std::size_t n = 0;
+      while (n < nodes.size() && !(nodes[n].at("r").get<double>() == r && nodes[n].at("z").get<double>() == z)) ++n;
+      if (n == nodes.size()) {
+        throw std::invalid_argument("contact pair " + std::to_string(pair) + ": no node at the point (" + json(r).dump() +
+                                    ", " + json(z).dump() + ")");
+      }
+      static const std::vector<std::string> states = {"open", "stick", "slip"};
+      const auto state = std::find(states.begin(), states.end(), point.at("state").get<std::string>());
+      if (state == states.end()) throw std::invalid_argument("contact state " + point.at("state").dump() + " is unknown");
+      at[n] = {point.at("pressure").get<double>(),
+               point.at("gap").get<double>(),
+               point.contains("shear") ? point["shear"].get<double>() : 0.0,
+               point.contains("slip") ? point["slip"].get<double>() : 0.0,
+               static_cast<std::int32_t>(state - states.begin()),
+               pair};
+    }
+  }
+  const std::string stress = vtu_unit_suffix(result, "stress"), length = vtu_unit_suffix(result, "length");
+  const auto reals = [&](const std::string& name, double Landed::*member) {
+    std::vector<double> v;
+    for (const Landed& l : at) v.push_back(l.*member);
+    point_data.push_back({name, 1, std::move(v)});
+  };
+  const auto ints = [&](const std::string& name, std::int32_t Landed::*member) {
+    std::vector<std::int32_t> v;
+    for (const Landed& l : at) v.push_back(l.*member);
+    point_data.push_back({name, 1, std::move(v)});
+  };
+  reals("contact_pressure" + stress, &Landed::pressure);
+  reals("contact_gap" + length, &Landed::gap);
+  reals("contact_shear" + stress, &Landed::shear);
+  reals("contact_slip" + length, &Landed::slip);
+  ints("contact_state", &Landed::state);
+  ints("contact_pair", &Landed::pair);
+}
+
 std::vector<VtuArray> id_arrays(const Mesh& m) {
   std::vector<std::int32_t> ids, gap;
   for (const Cell& c : m.cells) {
@@ -123,6 +176,8 @@ std::string vtu_document(const json& result, VtuFormat format) {
     }
     m.piece.point_data.push_back({"reaction" + vtu_unit_suffix(result, "force"), 3, std::move(force)});
   }
+  // Contact surfaces: their points on side A's nodes.
+  add_contact_arrays(result, nodes, m.piece.point_data);
 
   // ---- Cell data: element-only values (0 on gaps) and gap-only values (0 on solids), by their
   // document keys.
