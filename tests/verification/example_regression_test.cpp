@@ -1,6 +1,7 @@
 // Regression of every example model: each JSON model of schemas/examples (not the assemblies) is
 // solved as given and, when it has classic gaps, once more with "gaps.method": "exact"; nodal
-// displacements, element stresses and gap closures and stresses must equal the values committed in
+// displacements, element stresses, gap closures and stresses, and the contact points' pressure and
+// shear (runs with contact surfaces) must equal the values committed in
 // data/example_regression/<example>[.method-exact].txt to 1e-9 of each field's scale, and the status and
 // iteration counts exactly. This holds the solver's results in place while its code is rearranged.
 //
@@ -27,6 +28,7 @@
 
 #include "analysis.hpp"
 #include "io/model_reader.hpp"
+#include "thermal_analysis.hpp"
 #include "support/examples.hpp"
 
 namespace saasgaps {
@@ -87,6 +89,21 @@ std::vector<Field> fields_of(const Solution& s) {
     out[6].values.emplace_back(g.id, g.closure);
     out[7].values.emplace_back(g.id, g.sigma_m);
   }
+  // Contact surfaces (only in runs that have them, so that the files of the others keep their
+  // fields): each point's pressure and shear, numbered 1, 2, .. over the pairs in result order.
+  if (!s.contact.empty()) {
+    Field pressure{"contact_pressure", Kind::stress, {}}, shear{"contact_shear", Kind::stress, {}};
+    int point = 0;
+    for (const ContactPairResult& pair : s.contact) {
+      for (const ContactPointResult& p : pair.points) {
+        ++point;
+        pressure.values.emplace_back(point, p.pressure);
+        shear.values.emplace_back(point, p.shear);
+      }
+    }
+    out.push_back(std::move(pressure));
+    out.push_back(std::move(shear));
+  }
   return out;
 }
 
@@ -111,7 +128,8 @@ std::vector<std::size_t> sampled(const Field& f) {
 Solution solve_run(const ExampleRun& run) {
   nlohmann::json doc = testing::example_document(run.file);
   if (run.exact) doc["gaps"]["method"] = "exact";
-  return solve(io::read_model(doc));
+  // Models with `thermal` compute their temperatures first (solve_with_heat is solve() without it).
+  return solve_with_heat(io::read_model(doc));
 }
 
 /// The committed values of one run.

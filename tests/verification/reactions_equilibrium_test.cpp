@@ -18,6 +18,7 @@
 #include "io/result_writer.hpp"
 #include "material_state.hpp"
 #include "stiffness_system.hpp"
+#include "thermal_analysis.hpp"
 #include "support/examples.hpp"
 
 namespace saasgaps {
@@ -71,7 +72,8 @@ TEST_P(ReactionEquilibrium, ReactionsBalanceTheAppliedLoads) {
   nlohmann::json doc = testing::example_document(GetParam().file);
   if (GetParam().exact) doc["gaps"]["method"] = "exact";
   const Model model = io::read_model(doc);
-  const Solution s = solve(model);
+  // Models with `thermal` compute their temperatures first (solve_with_heat is solve() without it).
+  const Solution s = solve_with_heat(model);
   ASSERT_EQ(s.status, RunStatus::converged) << s.message;
 
   // The nodes the top-level constraints or any step's hold (a step may prescribe nodes of its own).
