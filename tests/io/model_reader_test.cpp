@@ -1074,6 +1074,44 @@ void expect_same_model(const Model& a, const Model& b) {
   if (a.gaps && b.gaps) {
     EXPECT_EQ(a.gaps->elements.size(), b.gaps->elements.size());
   }
+  // The third round's sections: contact surfaces and pairs, load steps, heat conduction.
+  ASSERT_EQ(a.contact.has_value(), b.contact.has_value());
+  if (a.contact) {
+    ASSERT_EQ(a.contact->surfaces.size(), b.contact->surfaces.size());
+    for (std::size_t i = 0; i < a.contact->surfaces.size(); ++i) {
+      EXPECT_EQ(a.contact->surfaces[i].name, b.contact->surfaces[i].name);
+      EXPECT_EQ(a.contact->surfaces[i].edges, b.contact->surfaces[i].edges);
+    }
+    ASSERT_EQ(a.contact->pairs.size(), b.contact->pairs.size());
+    for (std::size_t i = 0; i < a.contact->pairs.size(); ++i) {
+      EXPECT_EQ(a.contact->pairs[i].surfaces, b.contact->pairs[i].surfaces);
+      EXPECT_EQ(a.contact->pairs[i].friction, b.contact->pairs[i].friction);
+      EXPECT_EQ(a.contact->pairs[i].conductance.has_value(), b.contact->pairs[i].conductance.has_value());
+    }
+  }
+  ASSERT_EQ(a.steps.size(), b.steps.size());
+  for (std::size_t i = 0; i < a.steps.size(); ++i) {
+    EXPECT_EQ(a.steps[i].name, b.steps[i].name);
+    EXPECT_EQ(a.steps[i].increments, b.steps[i].increments);
+    EXPECT_EQ(a.steps[i].loads.has_value(), b.steps[i].loads.has_value());
+    ASSERT_EQ(a.steps[i].constraints.size(), b.steps[i].constraints.size());
+    for (std::size_t k = 0; k < a.steps[i].constraints.size(); ++k) {
+      EXPECT_EQ(a.steps[i].constraints[k].node, b.steps[i].constraints[k].node);
+      EXPECT_EQ(a.steps[i].constraints[k].u_r, b.steps[i].constraints[k].u_r);
+      EXPECT_EQ(a.steps[i].constraints[k].u_z, b.steps[i].constraints[k].u_z);
+    }
+  }
+  ASSERT_EQ(a.thermal.has_value(), b.thermal.has_value());
+  if (a.thermal) {
+    EXPECT_EQ(a.thermal->type, b.thermal->type);
+    ASSERT_EQ(a.thermal->boundary.size(), b.thermal->boundary.size());
+    for (std::size_t i = 0; i < a.thermal->boundary.size(); ++i) {
+      EXPECT_EQ(a.thermal->boundary[i].kind, b.thermal->boundary[i].kind);
+      EXPECT_EQ(a.thermal->boundary[i].edges.size(), b.thermal->boundary[i].edges.size());
+      EXPECT_EQ(a.thermal->boundary[i].value, b.thermal->boundary[i].value);
+      EXPECT_EQ(a.thermal->boundary[i].ambient, b.thermal->boundary[i].ambient);
+    }
+  }
 }
 
 TEST(ModelReader, EveryExampleReadsFromTextAsFromItsTree) {

@@ -12,6 +12,7 @@
 
 #include "io/assembly_reader.hpp"
 #include "io/model_reader.hpp"
+#include "support/examples.hpp"
 #include "stiffness_system.hpp"
 #include "support/quoted_figure.hpp"
 #include "thermal_analysis.hpp"
@@ -97,8 +98,8 @@ TEST(ImportedHeatShield, TemperaturesComeFromTheConductionSolve) {
   }
 }
 
-// ReactionEquilibrium's check for this example (it is an assembly, not one of the example models
-// that test walks): along z the supports carry the 15 psi on the cap, the computed temperatures'
+// ReactionEquilibrium's check for this example (which that test also runs on the committed import,
+// schemas/examples/mhw-heat-shield.json): along z the supports carry the 15 psi on the cap, the computed temperatures'
 // loads being self-equilibrated; along r an axisymmetric ring's radial loads are hoop stress.
 TEST(ImportedHeatShield, ReactionsBalanceThePressureOnTheCap) {
   const auto& [model, s] = heat_shield();
@@ -113,6 +114,15 @@ TEST(ImportedHeatShield, ReactionsBalanceThePressureOnTheCap) {
   double reactions = 0.0;
   for (const NodeReaction& r : s.reactions) reactions += r.f_z;
   EXPECT_NEAR(reactions + applied, 0.0, 1e-9 * applied_size) << "reactions " << reactions << ", loads " << applied;
+}
+
+// The example models' copy (schemas/examples/mhw-heat-shield.json, which the tests that walk the
+// examples solve) is the import of the assembly as it stands: regenerate it with
+//   build/saasgaps import schemas/examples/assemblies/mhw-heat-shield.assembly.json -o schemas/examples/mhw-heat-shield.json
+TEST(ImportedHeatShield, TheExampleModelIsTheAssemblysImport) {
+  const std::filesystem::path dir = std::filesystem::path(SAASGAPS_EXAMPLES_DIR) / "assemblies";
+  std::ifstream in(dir / "mhw-heat-shield.assembly.json");
+  EXPECT_EQ(io::import_assembly(nlohmann::json::parse(in), dir), testing::example_document("mhw-heat-shield.json"));
 }
 
 }  // namespace
