@@ -145,6 +145,23 @@ std::vector<const RestartState*> increment_ends(const testing::StateRecorder& r,
   return ends;
 }
 
+/// The first of the increment ends in which every point slips (1-based; 0: none), checked there:
+/// the force transferred equals mu times the normal force of that increment within 0.5 %.
+int first_sliding_increment(const std::vector<const RestartState*>& ends) {
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    const FrictionState& f = ends[i]->friction;
+    if (!std::all_of(f.state.begin(), f.state.end(), [](std::uint8_t x) { return x == static_cast<std::uint8_t>(SlipState::slip); })) {
+      continue;
+    }
+    double normal = 0.0;
+    for (double n : f.normal_force) normal += n;
+    EXPECT_GT(normal, 0.0);
+    EXPECT_NEAR(std::abs(transferred(*ends[i])), mu * normal, 0.005 * mu * normal) << "increment " << i + 1;
+    return static_cast<int>(i) + 1;
+  }
+  return 0;
+}
+
 TEST(FrictionSurfaces, PushedBlockRisesToMuNThenSlipsAndShowsHysteresisOnTheWayBack) {
   Blocks k = blocks(mu);
   // Full slip needs the shear traction mu p over the interface: a tangential displacement of about
@@ -279,21 +296,7 @@ TEST(FrictionSurfaces, InterferenceFitPushesOutAtMuTimesTheNormalContactForce) {
   ASSERT_EQ(s.status, RunStatus::converged) << s.message;
   const auto ends = increment_ends(recorder, 2);
   ASSERT_EQ(ends.size(), 20u);
-  // The first increment in which every point slips: the force there against mu x normal force.
-  bool slid = false;
-  for (const RestartState* e : ends) {
-    const FrictionState& f = e->friction;
-    if (!std::all_of(f.state.begin(), f.state.end(), [](std::uint8_t x) { return x == static_cast<std::uint8_t>(SlipState::slip); })) {
-      continue;
-    }
-    double normal = 0.0;
-    for (double n : f.normal_force) normal += n;
-    EXPECT_GT(normal, 0.0);
-    EXPECT_NEAR(transferred(*e), mu * normal, 0.005 * mu * normal);
-    slid = true;
-    break;
-  }
-  EXPECT_TRUE(slid);
+  EXPECT_GT(first_sliding_increment(ends), 0);
   // And from the result: the top's reaction at the end against mu x the integrated contact pressure
   // (the base's bottom reactions carry the normal force).
   std::vector<int> bottom;
@@ -346,20 +349,7 @@ TEST(FrictionSurfaces, AxisymmetricInterferenceFitPushesOutAtMuTimesTheNormalCon
   for (const double n : fitted_end.front()->friction.normal_force) EXPECT_GT(n, 0.0);
   const auto ends = increment_ends(recorder, 2);
   ASSERT_EQ(ends.size(), 20u);
-  // The first increment in which every point slips: the force there against mu x normal force.
-  int sliding_from = 0;
-  for (std::size_t i = 0; i < ends.size(); ++i) {
-    const FrictionState& f = ends[i]->friction;
-    if (!std::all_of(f.state.begin(), f.state.end(), [](std::uint8_t x) { return x == static_cast<std::uint8_t>(SlipState::slip); })) {
-      continue;
-    }
-    double normal = 0.0;
-    for (double n : f.normal_force) normal += n;
-    ASSERT_GT(normal, 0.0);
-    EXPECT_NEAR(std::abs(transferred(*ends[i])), mu * normal, 0.005 * mu * normal) << "increment " << i + 1;
-    sliding_from = static_cast<int>(i) + 1;
-    break;
-  }
+  const int sliding_from = first_sliding_increment(ends);
   // It sticks first (the hub shears before it slides), then slides well before the push ends.
   EXPECT_GT(sliding_from, 1);
   EXPECT_LT(sliding_from, 20);
