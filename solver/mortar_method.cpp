@@ -76,13 +76,18 @@ std::vector<ContactPairResult> contact_pair_results(const Model& model, const Su
     const ContactSurface& side_a = surfaces.surfaces[static_cast<std::size_t>(pair.surfaces[0])];
     std::vector<int> on_a(side_a.nodes.begin(), side_a.nodes.end());
     std::sort(on_a.begin(), on_a.end());
+    const bool with_friction = friction != nullptr && friction->size() == offset + surfaces.pairs.pairs.size() &&
+                               friction->tangential_force.size() == friction->size();
     for (std::size_t i = surfaces.first[k]; i < surfaces.first[k + 1]; ++i) {
       const ContactPair& row = surfaces.pairs.pairs[i];
       if (solved) {
+        // The normal and (with friction) the tangential row, as FrictionalContact::add_nodal_forces
+        // puts them on the nodes.
+        const Vec2 t = FrictionalContact::tangent(row);
         for (std::size_t e = 0; e < row.node.size(); ++e) {
-          if (std::binary_search(on_a.begin(), on_a.end(), row.node[e])) {
-            result.force += contact.force[offset + i] * row.coefficient(e);
-          }
+          if (!std::binary_search(on_a.begin(), on_a.end(), row.node[e])) continue;
+          result.force += contact.force[offset + i] * row.coefficient(e);
+          if (with_friction) result.force += friction->tangential_force[offset + i] * row.weight[e] * t;
         }
       }
       const Node& node = model.nodes[static_cast<std::size_t>(row.node[0])];

@@ -395,7 +395,7 @@ TEST(FrictionSurfaces, TheFrictionBlockExampleSlidesAtMuNBothWays) {
 // ContactPairResult::force, not the tangential forces (FrictionState::tangential_force), so the
 // example's result reads force {fr 0, fz 1000} where side B's force on the sliding block is
 // (+-300, 1000). Enable it with that fix.
-TEST(FrictionSurfaces, DISABLED_ThePairResultantCarriesTheFrictionForce) {
+TEST(FrictionSurfaces, ThePairResultantCarriesTheFrictionForce) {
   const Solution s = solve(testing::example_model("friction-block-push.json"));
   ASSERT_EQ(s.status, RunStatus::converged) << s.message;
   ASSERT_EQ(s.contact.size(), 1u);
