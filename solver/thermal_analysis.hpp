@@ -96,7 +96,9 @@ Model with_temperature_steps(const Model& model, const ThermalResult& transient)
 /// The observer receives a ThermalRecord (thermal_record.hpp) per steady pass or transient output
 /// time before the stress iterations that use it. A resumed transient run recomputes the
 /// conduction (the same numbers, the same rows) and resumes the stress analysis at the state's load
-/// step: its output time, and with it the temperatures, follow from the state's position.
+/// step: its output time, and with it the temperatures, follow from the state's position (with
+/// conducting gaps or pairs, the stress steps before it are replayed for their conductances:
+/// transient_coupling.hpp).
 Solution solve_with_heat(const Model& model, IterationObserver* observer = nullptr,
                          const RestartState* resume = nullptr, const ResumeOptions& options = {},
                          const OrderingCache* cache = nullptr, const ContactMethodFactory& contact = make_contact_method);
