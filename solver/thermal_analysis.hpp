@@ -16,6 +16,9 @@
 /// (prescribed nodes jump to their values at t > 0). Conductivity and capacity are taken at T_n. A
 /// step that would pass an output time is shortened to end on it. The factorization is reused while
 /// the assembled matrix is unchanged (bit for bit): a constant k and c and a constant step reuse one.
+/// While the matrix's inputs (k, the capacity rates density c / dt, the conductances) are those of
+/// the last assembly and no edge radiates, a step assembles only its right-hand side
+/// (ThermalSystem::assemble_rhs, the same bits).
 /// The run ends at the last output time.
 ///
 /// Gap elements conduct (gaps.conductance) with H = h(p) when closed (p the contact pressure, h
