@@ -71,8 +71,14 @@ void Assembler::add(std::size_t clique, const ElementBlock& block, const SystemS
       if (*position >= 0) sink.values[*position] += column[a];
     }
   }
+  add_rhs(clique, block, sink.rhs);
+}
+
+void Assembler::add_rhs(std::size_t clique, const ElementBlock& block, std::span<double> rhs) const {
+  const std::span<const Index> eq = equations_[clique];
+  const auto n = static_cast<Index>(eq.size());
   for (Index a = 0; a < n; ++a) {
-    if (eq[a] >= 0) sink.rhs[eq[a]] += block.f[a];
+    if (eq[a] >= 0) rhs[eq[a]] += block.f[a];
   }
   if (!lifted_[clique]) return;
   // Move K_fp u_p of nonzero prescribed values to the right-hand side.
@@ -81,7 +87,7 @@ void Assembler::add(std::size_t clique, const ElementBlock& block, const SystemS
     const double* column = block.K + lift_local_[k] * block.ld;
     const double u = lift_value_[k];
     for (Index a = 0; a < n; ++a) {
-      if (eq[a] >= 0) sink.rhs[eq[a]] -= column[a] * u;
+      if (eq[a] >= 0) rhs[eq[a]] -= column[a] * u;
     }
   }
 }

@@ -65,6 +65,10 @@ class Assembler {
 
   /// values += K and rhs += f - K_fp u_p at the clique's positions.
   void add(std::size_t clique, const ElementBlock& block, const SystemSink& sink) const;
+  /// rhs += f - K_fp u_p only: add() without the values (K is read only where lifted()).
+  void add_rhs(std::size_t clique, const ElementBlock& block, std::span<double> rhs) const;
+  /// Whether a clique has a nonzero prescribed value, so that its rhs needs its K.
+  [[nodiscard]] bool lifted(std::size_t clique) const { return lifted_[clique]; }
 
  private:
   CscPattern pattern_;

@@ -1,6 +1,7 @@
 #include "conduction_kernel.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace saasgaps {
 
@@ -76,15 +77,19 @@ Eigen::Matrix4d conduction_matrix(const ConductionData& e) {
   return condense<4, 1>(Kq, Vec5::Zero()).K;
 }
 
-ConductionBlock conduction_block(const ConductionData& e, const ConductionLoad& load) {
+namespace {
+
+/// K and the parts of f: conduction_block's kernel.
+std::pair<Eigen::Matrix4d, ConductionLoadParts> conduction_parts(const ConductionData& e, double source) {
   const Eigen::Matrix2d k = e.k.tensor();
-  ConductionBlock out;
+  Eigen::Matrix4d K4 = Eigen::Matrix4d::Zero();
+  ConductionLoadParts parts;
   if (e.node_count == 3) {
     const TriangleBlock t = triangle_block(e.x[0], e.x[1], e.x[2], e, k);
-    const Eigen::Vector3d previous(load.previous[0], load.previous[1], load.previous[2]);
-    out.K.topLeftCorner<3, 3>() = t.K + load.capacity_rate * t.C;
-    out.f.head<3>() = load.source * t.source + load.capacity_rate * (t.C * previous);
-    return out;
+    K4.topLeftCorner<3, 3>() = t.K;
+    parts.C.topLeftCorner<3, 3>() = t.C;
+    parts.source_load.head<3>() = source * t.source;
+    return {K4, parts};
   }
   // The conduction is condensed statically; the capacity reads the centre as the mean of the
   // corners at every time (C4 = P^T C5 P), so the centre keeps no heat of its own between steps.
@@ -95,7 +100,7 @@ ConductionBlock conduction_block(const ConductionData& e, const ConductionLoad& 
   for (const auto& tri : quad_triangles) {
     const TriangleBlock t = triangle_block(p[tri[0]], p[tri[1]], p[tri[2]], e, k);
     for (int i = 0; i < 3; ++i) {
-      f[tri[i]] += load.source * t.source[i];
+      f[tri[i]] += source * t.source[i];
       for (int j = 0; j < 3; ++j) {
         K(tri[i], tri[j]) += t.K(i, j);
         C(tri[i], tri[j]) += t.C(i, j);
@@ -103,17 +108,36 @@ ConductionBlock conduction_block(const ConductionData& e, const ConductionLoad& 
     }
   }
   const auto condensed = condense<4, 1>(K, f);
-  out.K = condensed.K;
-  out.f = condensed.f;
+  K4 = condensed.K;
+  parts.source_load = condensed.f;
+  Eigen::Matrix<double, 5, 4> P = Eigen::Matrix<double, 5, 4>::Zero();
+  P.topRows<4>() = Eigen::Matrix4d::Identity();
+  P.row(4).setConstant(0.25);
+  parts.C = P.transpose() * C * P;
+  return {K4, parts};
+}
+
+}  // namespace
+
+ConductionLoadParts conduction_load_parts(const ConductionData& e, double source) {
+  return conduction_parts(e, source).second;
+}
+
+Eigen::Vector4d conduction_load(const ConductionLoadParts& parts, const ConductionLoad& load) {
+  Eigen::Vector4d f = parts.source_load;
   if (load.capacity_rate > 0.0) {
-    Eigen::Matrix<double, 5, 4> P = Eigen::Matrix<double, 5, 4>::Zero();
-    P.topRows<4>() = Eigen::Matrix4d::Identity();
-    P.row(4).setConstant(0.25);
-    const Eigen::Matrix4d C4 = P.transpose() * C * P;
     const Eigen::Vector4d previous(load.previous[0], load.previous[1], load.previous[2], load.previous[3]);
-    out.K += load.capacity_rate * C4;
-    out.f += load.capacity_rate * (C4 * previous);
+    f += load.capacity_rate * (parts.C * previous);
   }
+  return f;
+}
+
+ConductionBlock conduction_block(const ConductionData& e, const ConductionLoad& load) {
+  const auto [K, parts] = conduction_parts(e, load.source);
+  ConductionBlock out;
+  out.K = K;
+  if (load.capacity_rate > 0.0) out.K += load.capacity_rate * parts.C;
+  out.f = conduction_load(parts, load);
   return out;
 }
 

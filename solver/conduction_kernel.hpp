@@ -66,6 +66,18 @@ struct ConductionBlock {
 };
 ConductionBlock conduction_block(const ConductionData& e, const ConductionLoad& load);
 
+/// What conduction_block's f is made of, constant while the element's geometry, k and source are:
+/// f = source_load + m (C T_previous) (the second term only when m > 0), C the corner capacity
+/// matrix (C4 for a quad), zero-padded to 4 x 4 for a triangle.
+struct ConductionLoadParts {
+  Eigen::Matrix4d C = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d source_load = Eigen::Vector4d::Zero();
+};
+ConductionLoadParts conduction_load_parts(const ConductionData& e, double source);
+
+/// f of conduction_block from its parts: the same operations, so the same bits, without the kernel.
+Eigen::Vector4d conduction_load(const ConductionLoadParts& parts, const ConductionLoad& load);
+
 /// The heat flux q = -k grad T of the element (power / area): per triangle constant; for a quad the
 /// area-weighted mean of its four triangles with the centre at the mean of the corner temperatures.
 Vec2 conduction_flux(const ConductionData& e, const std::array<double, 4>& T);

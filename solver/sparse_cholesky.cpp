@@ -43,7 +43,8 @@ struct SparseCholesky::Impl {
   double flops = 0.0;         // of one numeric factorization, from the analysis
   double factor_entries = 0.0;
 
-  Impl(const CscPattern& p, std::span<const Index> groups, const OrderingCache* cache) : pattern(p) {
+  Impl(const CscPattern& p, std::span<const Index> groups, const OrderingCache* cache, FillOrdering fill)
+      : pattern(p) {
     use_mapped_memory_for_cholmod();
     configure_solver_threads();
     cholmod_l_start(&common);
@@ -76,7 +77,18 @@ struct SparseCholesky::Impl {
       assert(diagonal[j] >= 0 && "every unknown couples to itself");
     }
 
-    if (!groups.empty()) {
+    if (fill == FillOrdering::minimum_degree) {
+      const auto started = std::chrono::steady_clock::now();
+      common.method[0].ordering = CHOLMOD_AMD;
+      // A scalar field's supernodes are small: merging more of them (at some explicit zeros)
+      // lets BLAS-3 run on bigger blocks.
+      common.nrelax[0] = 16;
+      common.nrelax[1] = 64;
+      common.nrelax[2] = 128;
+      L = cholmod_l_analyze(&A, &common);
+      ordering_name = "AMD";
+      ordering_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    } else if (!groups.empty()) {
       const auto started = std::chrono::steady_clock::now();
       const auto seconds = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -278,8 +290,9 @@ struct SparseCholesky::Impl {
   }
 };
 
-SparseCholesky::SparseCholesky(const CscPattern& pattern, std::span<const Index> groups, const OrderingCache* cache)
-    : impl_(std::make_unique<Impl>(pattern, groups, cache)) {}
+SparseCholesky::SparseCholesky(const CscPattern& pattern, std::span<const Index> groups, const OrderingCache* cache,
+                               FillOrdering fill)
+    : impl_(std::make_unique<Impl>(pattern, groups, cache, fill)) {}
 
 void SparseCholesky::set_max_blas_threads(int threads) { max_blas_threads = std::max(1, threads); }
 

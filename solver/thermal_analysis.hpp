@@ -16,6 +16,9 @@
 /// (prescribed nodes jump to their values at t > 0). Conductivity and capacity are taken at T_n. A
 /// step that would pass an output time is shortened to end on it. The factorization is reused while
 /// the assembled matrix is unchanged (bit for bit): a constant k and c and a constant step reuse one.
+/// While the matrix's inputs (k, the capacity rates density c / dt, the conductances) are those of
+/// the last assembly and no edge radiates, a step assembles only its right-hand side
+/// (ThermalSystem::assemble_rhs, the same bits).
 /// The run ends at the last output time.
 ///
 /// Gap elements conduct (gaps.conductance) with H = h(p) when closed (p the contact pressure, h
@@ -96,7 +99,9 @@ Model with_temperature_steps(const Model& model, const ThermalResult& transient)
 /// The observer receives a ThermalRecord (thermal_record.hpp) per steady pass or transient output
 /// time before the stress iterations that use it. A resumed transient run recomputes the
 /// conduction (the same numbers, the same rows) and resumes the stress analysis at the state's load
-/// step: its output time, and with it the temperatures, follow from the state's position.
+/// step: its output time, and with it the temperatures, follow from the state's position (with
+/// conducting gaps or pairs, the stress steps before it are replayed for their conductances:
+/// transient_coupling.hpp).
 Solution solve_with_heat(const Model& model, IterationObserver* observer = nullptr,
                          const RestartState* resume = nullptr, const ResumeOptions& options = {},
                          const OrderingCache* cache = nullptr, const ContactMethodFactory& contact = make_contact_method);

@@ -109,66 +109,94 @@ std::vector<Conductivity> ThermalSystem::conductivities(std::span<const double> 
   return k;
 }
 
+std::vector<double> ThermalSystem::capacity_rates(double inverse_dt, std::span<const double> previous) const {
+  std::vector<double> rates;
+  if (!(inverse_dt > 0.0)) return rates;
+  rates.reserve(model_.elements.size());
+  for (const Element& el : model_.elements) {
+    const Material& m = model_.materials[static_cast<std::size_t>(el.material)];
+    const double c = interpolate_thermal(m.table, mean_temperature(el.nodes, el.node_count, previous)).c;
+    rates.push_back(m.density * c * inverse_dt);
+  }
+  return rates;
+}
+
+ConductionLoad ThermalSystem::load(std::size_t e, double rate, std::span<const double> previous) const {
+  const Element& el = model_.elements[e];
+  ConductionLoad load;
+  load.source = source_[e];
+  if (rate > 0.0) {
+    load.capacity_rate = rate;
+    for (int a = 0; a < el.node_count; ++a) load.previous[a] = previous[static_cast<std::size_t>(el.nodes[a])];
+  }
+  return load;
+}
+
+void ThermalSystem::add_edges(std::size_t e, const std::array<Vec2, 4>& x, std::span<const double> current,
+                              Eigen::Matrix4d& K, Eigen::Vector4d& f) const {
+  const Element& el = model_.elements[e];
+  for (const EdgeLoad& edge : edges_[e]) {
+    const Vec2& xa = x[edge.a];
+    const Vec2& xb = x[edge.b];
+    if (edge.kind == ThermalBoundary::Kind::flux) {
+      const auto w = edge_weights(xa, xb, model_.analysis, model_.thickness);
+      f[edge.a] += edge.value * w[0];
+      f[edge.b] += edge.value * w[1];
+      continue;
+    }
+    double h = edge.value;
+    double ambient = edge.ambient;
+    if (edge.kind == ThermalBoundary::Kind::radiation) {
+      const double T0 = 0.5 * (current[static_cast<std::size_t>(el.nodes[edge.a])] +
+                               current[static_cast<std::size_t>(el.nodes[edge.b])]);
+      const double Ta = edge.ambient;
+      if (T0 > 0.0) {
+        h = 4.0 * edge.value * T0 * T0 * T0;
+        ambient = T0 - (T0 * T0 * T0 * T0 - Ta * Ta * Ta * Ta) / (4.0 * T0 * T0 * T0);
+      } else {
+        h = edge.value * (T0 * T0 + Ta * Ta) * (T0 + Ta);
+      }
+    }
+    const EdgeBlock film = film_block(xa, xb, model_.analysis, model_.thickness, h, ambient);
+    const std::array<int, 2> at{edge.a, edge.b};
+    for (int i = 0; i < 2; ++i) {
+      f[at[i]] += film.f[i];
+      for (int j = 0; j < 2; ++j) K(at[i], at[j]) += film.K(i, j);
+    }
+  }
+}
+
+Eigen::Matrix4d ThermalSystem::gap_matrix(std::size_t g, double conductance) const {
+  const GapElement& gap = model_.gaps->elements[g];
+  ConductionData d;
+  d.node_count = gap.node_count;
+  d.x = corner_coordinates(model_, gap.nodes, gap.node_count);
+  d.analysis = model_.analysis;
+  d.thickness = model_.thickness;
+  d.k = {conductance * gap_width_[g], 0.0, gap.angle_deg};
+  return conduction_matrix(d);
+}
+
 void ThermalSystem::assemble(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
                              std::span<const double> gap_conductance, std::span<const double> contact_conductance,
-                             std::span<const double> current, std::span<double> values, std::span<double> rhs) const {
+                             std::span<const double> current, std::span<double> values, std::span<double> rhs,
+                             std::vector<ConductionLoadParts>* loads) const {
   std::fill(values.begin(), values.end(), 0.0);
   std::fill(rhs.begin(), rhs.end(), 0.0);
   const SystemSink sink{values, rhs};
+  const std::vector<double> rates = capacity_rates(inverse_dt, previous);
+  if (loads != nullptr) loads->resize(model_.elements.size());
   for (std::size_t e = 0; e < model_.elements.size(); ++e) {
-    const Element& el = model_.elements[e];
-    const ConductionData d = data(el, k[e]);
-    ConductionLoad load;
-    load.source = source_[e];
-    if (inverse_dt > 0.0) {
-      const Material& m = model_.materials[static_cast<std::size_t>(el.material)];
-      const double c = interpolate_thermal(m.table, mean_temperature(el.nodes, el.node_count, previous)).c;
-      load.capacity_rate = m.density * c * inverse_dt;
-      for (int a = 0; a < el.node_count; ++a) load.previous[a] = previous[static_cast<std::size_t>(el.nodes[a])];
-    }
-    ConductionBlock block = conduction_block(d, load);
-    for (const EdgeLoad& edge : edges_[e]) {
-      const Vec2& xa = d.x[edge.a];
-      const Vec2& xb = d.x[edge.b];
-      if (edge.kind == ThermalBoundary::Kind::flux) {
-        const auto w = edge_weights(xa, xb, model_.analysis, model_.thickness);
-        block.f[edge.a] += edge.value * w[0];
-        block.f[edge.b] += edge.value * w[1];
-        continue;
-      }
-      double h = edge.value;
-      double ambient = edge.ambient;
-      if (edge.kind == ThermalBoundary::Kind::radiation) {
-        const double T0 = 0.5 * (current[static_cast<std::size_t>(el.nodes[edge.a])] +
-                                 current[static_cast<std::size_t>(el.nodes[edge.b])]);
-        const double Ta = edge.ambient;
-        if (T0 > 0.0) {
-          h = 4.0 * edge.value * T0 * T0 * T0;
-          ambient = T0 - (T0 * T0 * T0 * T0 - Ta * Ta * Ta * Ta) / (4.0 * T0 * T0 * T0);
-        } else {
-          h = edge.value * (T0 * T0 + Ta * Ta) * (T0 + Ta);
-        }
-      }
-      const EdgeBlock film = film_block(xa, xb, model_.analysis, model_.thickness, h, ambient);
-      const std::array<int, 2> at{edge.a, edge.b};
-      for (int i = 0; i < 2; ++i) {
-        block.f[at[i]] += film.f[i];
-        for (int j = 0; j < 2; ++j) block.K(at[i], at[j]) += film.K(i, j);
-      }
-    }
+    const ConductionData d = data(model_.elements[e], k[e]);
+    ConductionBlock block = conduction_block(d, load(e, rates.empty() ? 0.0 : rates[e], previous));
+    if (loads != nullptr) (*loads)[e] = conduction_load_parts(d, source_[e]);
+    add_edges(e, d.x, current, block.K, block.f);
     assembler_.add(e, ElementBlock::of(block.K, block.f), sink);
   }
   const Eigen::Vector4d none = Eigen::Vector4d::Zero();
   assert(gap_conductance.size() == gap_count());
   for (std::size_t g = 0; g < gap_count(); ++g) {
-    const GapElement& gap = model_.gaps->elements[g];
-    ConductionData d;
-    d.node_count = gap.node_count;
-    d.x = corner_coordinates(model_, gap.nodes, gap.node_count);
-    d.analysis = model_.analysis;
-    d.thickness = model_.thickness;
-    d.k = {gap_conductance[g] * gap_width_[g], 0.0, gap.angle_deg};
-    const Eigen::Matrix4d K = conduction_matrix(d);
+    const Eigen::Matrix4d K = gap_matrix(g, gap_conductance[g]);
     assembler_.add(model_.elements.size() + g, ElementBlock::of(K, none), sink);
   }
   assert(contact_conductance.size() == contact_.row_count());
@@ -176,6 +204,44 @@ void ThermalSystem::assemble(std::span<const Conductivity> k, double inverse_dt,
     const Eigen::MatrixXd K = contact_.block(r, contact_conductance[r]);
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(K.rows());
     assembler_.add(model_.elements.size() + gap_count() + r, ElementBlock::of(K, zero), sink);
+  }
+}
+
+void ThermalSystem::assemble_rhs(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
+                                 std::span<const double> gap_conductance,
+                                 std::span<const double> contact_conductance,
+                                 const std::vector<ConductionLoadParts>& loads, std::span<double> rhs) const {
+  assert(!radiates_ && loads.size() == model_.elements.size());
+  std::fill(rhs.begin(), rhs.end(), 0.0);
+  const std::vector<double> rates = capacity_rates(inverse_dt, previous);
+  Eigen::Matrix4d unused = Eigen::Matrix4d::Zero();  // films add into it; add_rhs reads no K unless lifted
+  for (std::size_t e = 0; e < model_.elements.size(); ++e) {
+    const ConductionLoad element_load = load(e, rates.empty() ? 0.0 : rates[e], previous);
+    const Element& el = model_.elements[e];
+    if (assembler_.lifted(e)) {
+      const ConductionData d = data(el, k[e]);
+      ConductionBlock block = conduction_block(d, element_load);
+      add_edges(e, d.x, {}, block.K, block.f);
+      assembler_.add_rhs(e, ElementBlock::of(block.K, block.f), rhs);
+      continue;
+    }
+    Eigen::Vector4d f = conduction_load(loads[e], element_load);
+    if (!edges_[e].empty()) add_edges(e, corner_coordinates(model_, el.nodes, el.node_count), {}, unused, f);
+    assembler_.add_rhs(e, ElementBlock::of(unused, f), rhs);
+  }
+  // Gap and contact cliques load the rhs only through their prescribed temperatures; their zeros
+  // are added too, as assemble does, so that not even the sign of a zero differs.
+  const Eigen::Vector4d none = Eigen::Vector4d::Zero();
+  for (std::size_t g = 0; g < gap_count(); ++g) {
+    const std::size_t clique = model_.elements.size() + g;
+    const Eigen::Matrix4d K = gap_matrix(g, gap_conductance[g]);
+    assembler_.add_rhs(clique, ElementBlock::of(K, none), rhs);
+  }
+  for (std::size_t r = 0; r < contact_.row_count(); ++r) {
+    const std::size_t clique = model_.elements.size() + gap_count() + r;
+    const Eigen::MatrixXd K = contact_.block(r, contact_conductance[r]);
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(K.rows());
+    assembler_.add_rhs(clique, ElementBlock::of(K, zero), rhs);
   }
 }
 

@@ -51,9 +51,24 @@ class ThermalSystem {
   /// at the edge's mean current temperature T0 (Newton): q_out ~ es (T0^4 - Ta^4) + 4 es T0^3 (T - T0),
   /// a film h = 4 es T0^3 with ambient T0 - (T0^4 - Ta^4) / (4 T0^3). At T0 <= 0 (a start at zero
   /// absolute) the secant film es (T0^2 + Ta^2)(T0 + Ta) with ambient Ta instead.
+  /// loads (optional): receives each solid element's load parts (conduction_kernel.hpp) for
+  /// assemble_rhs.
   void assemble(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
                 std::span<const double> gap_conductance, std::span<const double> contact_conductance,
-                std::span<const double> current, std::span<double> values, std::span<double> rhs) const;
+                std::span<const double> current, std::span<double> values, std::span<double> rhs,
+                std::vector<ConductionLoadParts>* loads = nullptr) const;
+
+  /// Each solid element's capacity rate density c / dt, c at the mean of its nodes' previous
+  /// temperatures (what assemble uses); empty for inverse_dt = 0.
+  [[nodiscard]] std::vector<double> capacity_rates(double inverse_dt, std::span<const double> previous) const;
+
+  /// The rhs of assemble, to the last bit, without the matrix: valid while k, the capacity rates,
+  /// the conductances and loads (from the assemble that filled it) are those of that assemble and
+  /// no edge radiates. Elements with a nonzero prescribed temperature are computed whole (their K
+  /// lifts it), the others from their load parts with no element kernel.
+  void assemble_rhs(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
+                    std::span<const double> gap_conductance, std::span<const double> contact_conductance,
+                    const std::vector<ConductionLoadParts>& loads, std::span<double> rhs) const;
 
   /// Node temperatures from the free unknowns x (prescribed nodes take their values).
   [[nodiscard]] std::vector<double> node_temperatures(std::span<const double> x) const;
@@ -65,6 +80,11 @@ class ThermalSystem {
   /// Gap elements in the pattern: all of model.gaps when they conduct, else none.
   [[nodiscard]] std::size_t gap_count() const { return gaps_conduct_ ? model_.gaps->elements.size() : 0; }
   [[nodiscard]] ConductionData data(const Element& el, const Conductivity& k) const;
+  [[nodiscard]] ConductionLoad load(std::size_t e, double rate, std::span<const double> previous) const;
+  /// Adds element e's flux, film and radiation edges (corners x) into K and f.
+  void add_edges(std::size_t e, const std::array<Vec2, 4>& x, std::span<const double> current, Eigen::Matrix4d& K,
+                 Eigen::Vector4d& f) const;
+  [[nodiscard]] Eigen::Matrix4d gap_matrix(std::size_t g, double conductance) const;
 
   const Model& model_;
   DofMap dofs_;

@@ -29,9 +29,19 @@
 
 namespace saasgaps {
 
-/// solve_with_heat for a transient model whose gaps or contact pairs conduct. Throws SolverError
-/// for a resume state (resuming such a run mid-way is not supported: its conductances depend on
-/// every stress solve before).
+/// Resuming mid-way. The conductances of every interval up to the resumed load step j come from the
+/// stress solves of steps 1..j-1, which the state does not hold; they are recomputed: the resumed
+/// run marches the conduction from t = 0 as the first run did and replays steps 1..j-1 silently
+/// (no history rows: the state already has them), each as the first run solved it (a fresh run's
+/// settings, step k from step k-1's last state), so that the same calls give the same numbers; step
+/// j then resumes from the state with the resume's settings, and the run goes on as before. The
+/// result, the rows after the state's iteration and the thermal rows are the uninterrupted run's to
+/// the last digit. Costs: the replayed stress steps (what the first run paid for them again).
+/// Limitation: a run that an earlier resume changed (a READ card) before step j replays those steps
+/// with the fresh run's settings, not the changed ones.
+
+/// solve_with_heat for a transient model whose gaps or contact pairs conduct. resume (optional):
+/// a state of this run; throws SolverError when its load step is not one of the output times.
 Solution solve_coupled_transient(const Model& model, IterationObserver* observer, const RestartState* resume,
                                  const ResumeOptions& options, const OrderingCache* cache,
                                  const ContactMethodFactory& contact);

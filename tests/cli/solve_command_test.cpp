@@ -292,3 +292,28 @@ TEST_F(SolveCommand, TransientHeatRunShowsItsThermalRowsAndResumesMidWayToTheLas
 }
 
 }  // namespace
+
+namespace {
+
+/// The same heating with conducting gaps: each interval's conductances come from the stress step
+/// before it (solver/transient_coupling.hpp), and a resume mid-way recomputes them.
+TEST_F(SolveCommand, TransientHeatRunWithConductingGapsResumesMidWayToTheLastDigit) {
+  nlohmann::json document = saasgaps::testing::transient_heating("ring-shrink-fit-plane-strain.json", {.hot = 400.0});
+  document["gaps"]["conductance"] = {{"closed", 20.0}, {"gas_conductivity", 0.0005}};
+  std::ofstream(path("coupled.json")) << document.dump();
+  const Outcome full = saasgaps("solve " + path("coupled.json") + " -q -o " + path("full.json"));
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  const int iterations = json_of(path("full.json"))["iterations"].get<int>();
+  ASSERT_GT(iterations, 4);
+  const Outcome stopped = saasgaps("solve " + path("coupled.json") + " -q --stop-after " +
+                                   std::to_string(iterations - 2) + " --state-out " + path("state.json") + " -o " +
+                                   path("partial.json"));
+  EXPECT_EQ(stopped.exit_code, 3) << stopped.err;
+  EXPECT_GE(json_of(path("state.json"))["position"]["step"].get<int>(), 1);
+  const Outcome resumed = saasgaps("solve " + path("coupled.json") + " -q --resume " + path("state.json") + " -o " +
+                                   path("resumed.json"));
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(numbers(json_of(path("resumed.json"))), numbers(json_of(path("full.json"))));
+}
+
+}  // namespace
