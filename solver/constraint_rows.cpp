@@ -12,7 +12,11 @@ namespace saasgaps {
 double contact_start(std::span<const double> g0) {
   double smallest = std::numeric_limits<double>::infinity();
   for (const double g : g0) smallest = std::min(smallest, g);
-  return std::max(0.0, smallest + 0.01 * std::abs(smallest));
+  // An interference of -smallest is resolved by the parts deforming about that much, which closes
+  // open gaps up to about that size too: starting from the rows with g0 <= 0 alone, the contact
+  // then spreads over several sets each far from the last (an eccentric fit: 2 factorizations).
+  if (smallest < 0.0) return -smallest;
+  return smallest + 0.01 * smallest;
 }
 
 ConstraintRows::ConstraintRows(const DofMap& dofs, const CscPattern& pattern) : dofs_(dofs), pattern_(pattern) {

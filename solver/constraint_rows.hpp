@@ -29,8 +29,9 @@
 namespace saasgaps {
 
 /// Where contact begins, for a cold start: the rows whose initial gap is at most this are active
-/// first. That is those within 1 % of the smallest gap, and every row closed or penetrating (g0 <= 0,
-/// an interference of contact surfaces).
+/// first. Without interference (every g0 >= 0) those within 1 % of the smallest gap; with one
+/// (smallest g0 < 0, contact surfaces) every row whose gap is at most the largest interference
+/// -min g0: the penetrating rows and the open ones the fit's deformation is likely to close.
 double contact_start(std::span<const double> g0);
 
 class ConstraintRows {

@@ -30,7 +30,8 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
   // Warm start: the last active set. Otherwise where contact begins (contact_start): every pair of
   // a uniform gap (fits, pressed contacts: one active set), the first point of contact of a curved
   // one (Hertz: 8 active sets where starting from every pair peels the contact open three pairs at a
-  // time, 13), and every pair already closed or penetrating.
+  // time, 13), and with an interference every pair whose gap is within the largest interference
+  // (an eccentric fit: one factorization where the pairs with g0 <= 0 alone took two).
   std::vector<double> g0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!rows_.empty(i)) g0.push_back(rows_.g0(i));

@@ -13,8 +13,9 @@
 /// converged answer has g_A = 0 to round-off whatever rho is. Then
 ///   A <- { i : lambda_i > tol_lambda_i }  U  { i not in A : g_i < -tol_g }
 /// until A repeats; an active set seen before (a cycle) changes only its worst pair. The first A is
-/// the last solve's, or the pairs whose initial gap is within 1 % of the smallest, and every pair whose
-/// initial gap is <= 0 (closed, or an interference of contact surfaces).
+/// the last solve's, or the pairs whose initial gap is within 1 % of the smallest, or, with an
+/// interference of contact surfaces (some g0 < 0), every pair whose initial gap is at most the
+/// largest interference -min g0 (contact_start).
 ///
 /// Equilibrium refinement (ConstraintRows::refine_equilibrium): the settled set's answer is corrected
 /// once so that K u = f + C^T lambda holds to the round-off of K alone, not of K_A.
