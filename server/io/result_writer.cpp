@@ -150,13 +150,18 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s) {
   out.field("reference_temperature", model.reference_temperature)
       .field("status", s.status == RunStatus::converged ? "converged" : "not_converged");
   if (!s.steps.empty()) {  // stepped models only
+    // A transient heat run's steps are its output times: each gives its time and the node
+    // temperatures there (the temperature history), in the model's node order.
+    const bool transient = s.thermal && !s.thermal->times.empty();
     out.key("steps").begin_array();
-    for (const StepResult& step : s.steps) {
-      out.begin_object()
-          .field("increments", step.increments)
-          .field("name", step.name)
-          .field("status", to_string(step.status))
-          .end_object();
+    for (std::size_t k = 0; k < s.steps.size(); ++k) {
+      const StepResult& step = s.steps[k];
+      const bool reached = transient && k < s.thermal->times.size();
+      out.begin_object();
+      if (reached) out.field("T", s.thermal->history[k]);
+      out.field("increments", step.increments).field("name", step.name).field("status", to_string(step.status));
+      if (reached) out.field("time", s.thermal->times[k]);
+      out.end_object();
     }
     out.end_array();
   }

@@ -266,6 +266,50 @@ TEST(ResultWriter, SteppedModelWritesTheLastStepsTemperaturesForNodesAndElements
   }
 }
 
+/// A transient heat run's steps are its output times: each step it reached carries its time and
+/// the node temperatures there (the temperature history); a step it did not reach, and every step
+/// of a run without a transient, carries neither.
+TEST(ResultWriter, TransientStepsCarryTheirTimeAndNodeTemperatures) {
+  const Model model = testing::example_model("report-problem3-case1.json");
+  Solution s;
+  s.status = RunStatus::not_converged;
+  for (const Node& n : model.nodes) s.nodes.push_back({n.id, 0.0, 0.0});
+  for (const Element& e : model.elements) {
+    ElementResult r;
+    r.id = e.id;
+    s.elements.push_back(r);
+  }
+  s.steps = {{"t1", 1, StepStatus::converged}, {"t2", 1, StepStatus::converged}, {"t3", 1, StepStatus::not_converged}};
+  ThermalResult heat;
+  heat.times = {0.5, 1.25};
+  for (const double scale : {1.0, 2.0}) {
+    std::vector<double> T;
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) T.push_back(scale * (100.0 + static_cast<double>(n)));
+    heat.history.push_back(T);
+  }
+  heat.T = heat.history.back();
+  heat.flux.assign(model.elements.size(), Vec2(0.0, 0.0));
+  s.thermal = heat;
+  const std::string text = result_text(model, s);
+  const nlohmann::json written = nlohmann::json::parse(text);
+  ASSERT_EQ(written["steps"].size(), 3U);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(written["steps"][k]["time"].get<double>(), heat.times[k]);
+    EXPECT_EQ(written["steps"][k]["T"].get<std::vector<double>>(), heat.history[k]);
+  }
+  EXPECT_FALSE(written["steps"][2].contains("T"));
+  EXPECT_FALSE(written["steps"][2].contains("time"));
+  // Keys in alphabetical order, as everywhere in the document: T, increments, name, status, time.
+  const std::size_t steps = text.find("\"steps\"");
+  EXPECT_LT(text.find("\"T\"", steps), text.find("\"increments\"", steps));
+  EXPECT_LT(text.find("\"status\"", steps), text.find("\"time\"", steps));
+  // A steady run (no output times): the steps are as before.
+  s.thermal->times.clear();
+  s.thermal->history.clear();
+  const nlohmann::json steady = nlohmann::json::parse(result_text(model, s));
+  for (const auto& step : steady["steps"]) EXPECT_FALSE(step.contains("T") || step.contains("time"));
+}
+
 TEST(ResultWriter, FailedDocumentAndHistoryRowsMatchTheirTrees) {
   std::string text;
   JsonWriter out(string_sink(text));
