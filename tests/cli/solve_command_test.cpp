@@ -280,6 +280,19 @@ TEST_F(SolveCommand, TransientHeatRunShowsItsThermalRowsAndResumesMidWayToTheLas
   EXPECT_LT(full.err.find("thermal t = 1: 20 steps"), full.err.find("iter"));
   const int iterations = json_of(path("full.json"))["iterations"].get<int>();
   ASSERT_GT(iterations, 4);
+  // The temperature history: each output time's step carries the time and the node temperatures,
+  // the last of them the nodes' T.
+  const nlohmann::json result = json_of(path("full.json"));
+  const std::vector<double> times = {0.25, 0.5, 0.75, 1.0};
+  ASSERT_EQ(result["steps"].size(), times.size());
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    EXPECT_DOUBLE_EQ(result["steps"][k]["time"].get<double>(), times[k]);
+    EXPECT_EQ(result["steps"][k]["T"].size(), result["nodes"].size());
+  }
+  for (std::size_t n = 0; n < result["nodes"].size(); ++n) {
+    EXPECT_EQ(result["steps"].back()["T"][n], result["nodes"][n]["T"]) << n;
+  }
+  EXPECT_NE(result["steps"][0]["T"], result["steps"].back()["T"]);  // it heats up
   // Stopped two iterations before the end, past the first output time (position.step is 0-based), resumed.
   const Outcome stopped = saasgaps("solve " + path("heated.json") + " -q --stop-after " + std::to_string(iterations - 2) +
                                    " --state-out " + path("state.json") + " -o " + path("partial.json"));
