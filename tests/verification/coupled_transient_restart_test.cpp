@@ -8,13 +8,12 @@
 #include <set>
 
 #include "io/model_reader.hpp"
-#include "io/state_codec.hpp"
-#include "io/stored_state.hpp"
 #include "restart_state.hpp"
 #include "thermal_analysis.hpp"
 #include "support/identical_solutions.hpp"
 #include "support/state_recorder.hpp"
 #include "support/transient_heating.hpp"
+#include "support/transient_resume.hpp"
 
 namespace saasgaps {
 namespace {
@@ -59,24 +58,14 @@ TEST(CoupledTransientRestart, StoppedAnywhereResumesToTheLastDigit) {
     ASSERT_TRUE(state.position.has_value());
     steps_stopped_in.insert(state.position->step);
 
-    for (const char* codec : {"json", "cbor", "stored"}) {
+    for (const std::string_view codec : testing::state_codecs) {
       SCOPED_TRACE(codec);
-      const RestartState from =
-          std::string(codec) == "json"   ? io::state_from_json(io::state_to_json(state, digest), digest)
-          : std::string(codec) == "cbor" ? io::state_from_cbor(io::state_to_cbor(state, digest), digest)
-                                         : io::decode_stored_state(io::encode_stored_state(state, digest), digest);
+      const RestartState from = testing::through_codec(codec, state, digest);
       Recorder again;
       const Solution resumed = solve_with_heat(model, &again, &from);
       testing::expect_identical(resumed, uninterrupted);
-      ASSERT_TRUE(resumed.thermal.has_value());
-      EXPECT_EQ(resumed.thermal->times, uninterrupted.thermal->times);
-      EXPECT_EQ(resumed.thermal->history, uninterrupted.thermal->history);
-      EXPECT_EQ(resumed.thermal->T, uninterrupted.thermal->T);
-      EXPECT_EQ(resumed.thermal->time_steps, uninterrupted.thermal->time_steps);
-      ASSERT_EQ(again.thermal.size(), all.thermal.size());
-      for (std::size_t i = 0; i < again.thermal.size(); ++i) {
-        EXPECT_TRUE(again.thermal[i].same_numbers(all.thermal[i])) << "thermal row " << i + 1;
-      }
+      testing::expect_same_thermal(resumed, uninterrupted);
+      testing::expect_same_rows(again.thermal, all.thermal);
       ASSERT_EQ(again.rows.size(), all.rows.size() - static_cast<std::size_t>(k));
       for (std::size_t i = 0; i < again.rows.size(); ++i) EXPECT_TRUE(again.rows[i].same_numbers(all.rows[k + i]));
     }

@@ -8,13 +8,12 @@
 #include <cmath>
 
 #include "io/model_reader.hpp"
-#include "io/state_codec.hpp"
-#include "io/stored_state.hpp"
 #include "restart_state.hpp"
 #include "thermal_analysis.hpp"
 #include "support/identical_solutions.hpp"
 #include "support/state_recorder.hpp"
 #include "support/transient_heating.hpp"
+#include "support/transient_resume.hpp"
 
 namespace saasgaps {
 namespace {
@@ -27,20 +26,6 @@ struct Case {
 };
 
 class TransientRestart : public ::testing::TestWithParam<Case> {};
-
-void expect_same_thermal(const Solution& a, const Solution& b) {
-  ASSERT_TRUE(a.thermal.has_value());
-  ASSERT_TRUE(b.thermal.has_value());
-  EXPECT_EQ(a.thermal->times, b.thermal->times);
-  EXPECT_EQ(a.thermal->history, b.thermal->history);
-  EXPECT_EQ(a.thermal->T, b.thermal->T);
-  EXPECT_EQ(a.thermal->time_steps, b.thermal->time_steps);
-}
-
-void expect_same_rows(const std::vector<ThermalRecord>& a, const std::vector<ThermalRecord>& b) {
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_TRUE(a[i].same_numbers(b[i])) << "thermal row " << i + 1;
-}
 
 TEST_P(TransientRestart, StoppedBetweenOutputTimesResumesToTheLastDigit) {
   const nlohmann::json document = testing::transient_heating(GetParam().example, GetParam().heating);
@@ -90,17 +75,14 @@ TEST_P(TransientRestart, StoppedBetweenOutputTimesResumesToTheLastDigit) {
     EXPECT_EQ(state.version, restart_version(with_temperature_steps(model, *uninterrupted.thermal)));
     if (state.position->step > 1) stopped_inside_a_later_step = true;
 
-    for (const char* codec : {"json", "cbor", "stored"}) {
+    for (const std::string_view codec : testing::state_codecs) {
       SCOPED_TRACE(codec);
-      const RestartState from =
-          std::string(codec) == "json"   ? io::state_from_json(io::state_to_json(state, digest), digest)
-          : std::string(codec) == "cbor" ? io::state_from_cbor(io::state_to_cbor(state, digest), digest)
-                                         : io::decode_stored_state(io::encode_stored_state(state, digest), digest);
+      const RestartState from = testing::through_codec(codec, state, digest);
       Recorder again;
       const Solution resumed = solve_with_heat(model, &again, &from);
       testing::expect_identical(resumed, uninterrupted);
-      expect_same_thermal(resumed, uninterrupted);
-      expect_same_rows(again.thermal, all.thermal);
+      testing::expect_same_thermal(resumed, uninterrupted);
+      testing::expect_same_rows(again.thermal, all.thermal);
       // The resumed run reports only the iterations after k, equal to the uninterrupted run's.
       ASSERT_EQ(again.rows.size(), all.rows.size() - static_cast<std::size_t>(k));
       for (std::size_t i = 0; i < again.rows.size(); ++i) EXPECT_TRUE(again.rows[i].same_numbers(all.rows[k + i]));
