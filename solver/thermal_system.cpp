@@ -1,5 +1,6 @@
 #include "thermal_system.hpp"
 
+#include <algorithm>
 #include <cassert>
 
 #include "element_data.hpp"
@@ -86,6 +87,24 @@ ThermalSystem::ThermalSystem(const Model& model)
       gap_width_.push_back(gap_width(model, g));
     }
   }
+  std::vector<char> in_solid(model.nodes.size(), 0);
+  for (const Element& el : model.elements) {
+    for (int a = 0; a < el.node_count; ++a) in_solid[static_cast<std::size_t>(el.nodes[a])] = 1;
+  }
+  std::vector<std::size_t> slot(model.nodes.size(), 0);  // 1 + index into outside_
+  for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+    const Index eq = dofs_.equation(static_cast<int>(n), 0);
+    if (in_solid[n] || eq < 0) continue;
+    outside_.push_back({static_cast<int>(n), eq, {}});
+    slot[n] = outside_.size();
+  }
+  for (std::size_t g = 0; g < gap_count(); ++g) {
+    const GapElement& gap = model.gaps->elements[g];
+    for (int a = 0; a < gap.node_count; ++a) {
+      const std::size_t s = slot[static_cast<std::size_t>(gap.nodes[a])];
+      if (s > 0) outside_[s - 1].gaps.emplace_back(g, a);
+    }
+  }
 }
 
 ConductionData ThermalSystem::data(const Element& el, const Conductivity& k) const {
@@ -166,7 +185,31 @@ void ThermalSystem::add_edges(std::size_t e, const std::array<Vec2, 4>& x, std::
   }
 }
 
+void ThermalSystem::hold_isolated(std::span<const double> gap_conductance, std::span<const double> previous,
+                                  std::span<double> values, std::span<double> rhs) const {
+  for (const OutsideNode& o : outside_) {
+    // Every gap block is positive semidefinite, so the node's row is empty iff each of its gaps
+    // adds 0 to its diagonal (at conductance 0, for one).
+    const bool conducts = std::ranges::any_of(o.gaps, [&](const std::pair<std::size_t, int>& at) {
+      return gap_matrix(at.first, gap_conductance[at.first])(at.second, at.second) != 0.0;
+    });
+    if (conducts) continue;
+    if (!values.empty()) {
+      // The diagonal ends its column of the upper-triangular pattern, which holds every diagonal.
+      const Index diagonal = assembler_.pattern().colptr[static_cast<std::size_t>(o.equation) + 1] - 1;
+      assert(assembler_.pattern().rowind[static_cast<std::size_t>(diagonal)] == o.equation);
+      assert(values[static_cast<std::size_t>(diagonal)] == 0.0);
+      values[static_cast<std::size_t>(diagonal)] = 1.0;
+    }
+    rhs[static_cast<std::size_t>(o.equation)] =
+        previous.empty() ? model_.reference_temperature : previous[static_cast<std::size_t>(o.node)];
+  }
+}
+
 Eigen::Matrix4d ThermalSystem::gap_matrix(std::size_t g, double conductance) const {
+  // An open gap with no gas conducts nothing; the kernel would divide by its zero centre-node
+  // conductance when condensing a quadrilateral.
+  if (conductance == 0.0) return Eigen::Matrix4d::Zero();
   const GapElement& gap = model_.gaps->elements[g];
   ConductionData d;
   d.node_count = gap.node_count;
@@ -205,6 +248,7 @@ void ThermalSystem::assemble(std::span<const Conductivity> k, double inverse_dt,
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(K.rows());
     assembler_.add(model_.elements.size() + gap_count() + r, ElementBlock::of(K, zero), sink);
   }
+  hold_isolated(gap_conductance, previous, values, rhs);
 }
 
 void ThermalSystem::assemble_rhs(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
@@ -243,6 +287,7 @@ void ThermalSystem::assemble_rhs(std::span<const Conductivity> k, double inverse
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(K.rows());
     assembler_.add_rhs(clique, ElementBlock::of(K, zero), rhs);
   }
+  hold_isolated(gap_conductance, previous, {}, rhs);
 }
 
 std::vector<double> ThermalSystem::node_temperatures(std::span<const double> x) const {

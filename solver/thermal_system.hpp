@@ -10,8 +10,16 @@
 ///
 /// Contact pairs with a `conductance` conduct through their mortar rows (contact_conductance.hpp):
 /// every row one more clique over its nodes, after the gap elements.
+///
+/// A node that nothing conducts to (no solid element has it, and every gap element that has it is
+/// at conductance 0 or the gaps do not conduct: a ground node of gap elements, a node of no element)
+/// has no capacity and no conduction, so its temperature is not a result of the solve: its row is
+/// T = held, held being its temperature of the step before in a time step (the initial temperature
+/// until something conducts to it) and the reference temperature in a steady solve. Without that
+/// its row would be zero and the matrix singular. Contact rows join nodes of solid elements only.
 
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "assembler.hpp"
@@ -52,7 +60,8 @@ class ThermalSystem {
   /// a film h = 4 es T0^3 with ambient T0 - (T0^4 - Ta^4) / (4 T0^3). At T0 <= 0 (a start at zero
   /// absolute) the secant film es (T0^2 + Ta^2)(T0 + Ta) with ambient Ta instead.
   /// loads (optional): receives each solid element's load parts (conduction_kernel.hpp) for
-  /// assemble_rhs.
+  /// assemble_rhs. A node nothing conducts to gets the row T = held (above): previous's value, or
+  /// the reference temperature when previous is empty.
   void assemble(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
                 std::span<const double> gap_conductance, std::span<const double> contact_conductance,
                 std::span<const double> current, std::span<double> values, std::span<double> rhs,
@@ -85,6 +94,10 @@ class ThermalSystem {
   void add_edges(std::size_t e, const std::array<Vec2, 4>& x, std::span<const double> current, Eigen::Matrix4d& K,
                  Eigen::Vector4d& f) const;
   [[nodiscard]] Eigen::Matrix4d gap_matrix(std::size_t g, double conductance) const;
+  /// Gives every node outside the solids that nothing conducts to at these gap conductances the
+  /// row T = held: a unit diagonal in values (skipped when empty) and held in rhs.
+  void hold_isolated(std::span<const double> gap_conductance, std::span<const double> previous,
+                     std::span<double> values, std::span<double> rhs) const;
 
   const Model& model_;
   DofMap dofs_;
@@ -100,6 +113,14 @@ class ThermalSystem {
     double value = 0.0, ambient = 0.0;
   };
   std::vector<std::vector<EdgeLoad>> edges_;  // per solid element, its film and flux edges
+  /// A free node of no solid element: the gap elements that have it (when the gaps conduct) are all
+  /// that can conduct to it. Usually none in a model.
+  struct OutsideNode {
+    int node = 0;
+    Index equation = 0;
+    std::vector<std::pair<std::size_t, int>> gaps;  // (gap element, the node's corner in it)
+  };
+  std::vector<OutsideNode> outside_;
 };
 
 }  // namespace saasgaps
