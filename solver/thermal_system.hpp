@@ -11,12 +11,13 @@
 /// Contact pairs with a `conductance` conduct through their mortar rows (contact_conductance.hpp):
 /// every row one more clique over its nodes, after the gap elements.
 ///
-/// A node that nothing conducts to (no solid element has it, and every gap element that has it is
-/// at conductance 0 or the gaps do not conduct: a ground node of gap elements, a node of no element)
-/// has no capacity and no conduction, so its temperature is not a result of the solve: its row is
-/// T = held, held being its temperature of the step before in a time step (the initial temperature
-/// until something conducts to it) and the reference temperature in a steady solve. Without that
-/// its row would be zero and the matrix singular. Contact rows join nodes of solid elements only.
+/// A node that nothing conducts to (no solid element has it, and the gaps do not conduct or every
+/// gap element that has it is at conductance 0, as an open gap without gas: a ground node of gap
+/// elements, a node of no element) has no capacity and no conduction, so its temperature is not a
+/// result of the solve: its row is T = held, held being its temperature of the step before in a
+/// time step (the initial temperature until something conducts to it) and the reference
+/// temperature in a steady solve. Without that its row would be zero and the matrix singular.
+/// Contact rows join nodes of solid elements only.
 
 #include <span>
 #include <utility>
