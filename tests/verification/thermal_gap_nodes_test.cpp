@@ -112,7 +112,8 @@ TEST(ThermalGapNodes, SteadyRunHoldsGroundNodesAtTheReferenceAndGivesProblem2sSt
   for (const ElementResult& e : given.elements) stress = std::max(stress, e.stress.cwiseAbs().maxCoeff());
   for (std::size_t e = 0; e < s.elements.size(); ++e) {
     for (int c = 0; c < 4; ++c) {
-      EXPECT_NEAR(s.elements[e].stress[c], given.elements[e].stress[c], 1e-9 * stress) << "element " << given.elements[e].id;
+      EXPECT_NEAR(s.elements[e].stress[c], given.elements[e].stress[c], 1e-9 * stress)
+          << "element " << given.elements[e].id;
     }
   }
 }
@@ -159,7 +160,8 @@ TEST(ThermalGapNodes, GapsAtZeroConductanceLeaveTheirGroundNodesOutAndTouchingOn
   for (int n : p.ground) {
     if (touched.contains(n)) {
       ++conducted;
-      EXPECT_NEAR(T[static_cast<std::size_t>(n)], reference + heating, 1e-9 * heating) << "node " << p.model.nodes[n].id;
+      EXPECT_NEAR(T[static_cast<std::size_t>(n)], reference + heating, 1e-9 * heating)
+          << "node " << p.model.nodes[n].id;
     } else {
       ++held;
       EXPECT_EQ(T[static_cast<std::size_t>(n)], reference) << "node " << p.model.nodes[n].id;
