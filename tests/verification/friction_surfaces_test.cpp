@@ -28,7 +28,6 @@
 #include "element_kernel.hpp"
 #include "errors.hpp"
 #include "io/state_codec.hpp"
-#include "io/stored_state.hpp"
 #include "support/examples.hpp"
 #include "support/hertz_line_contact.hpp"
 #include "support/identical_solutions.hpp"
@@ -36,6 +35,7 @@
 #include "support/shrink_fit_rings.hpp"
 #include "support/stacked_blocks.hpp"
 #include "support/state_recorder.hpp"
+#include "support/state_round_trip.hpp"
 
 namespace saasgaps {
 namespace {
@@ -464,10 +464,11 @@ TEST(FrictionSurfaces, RunStoppedAfterEveryIterationResumesToTheLastDigit) {
     ASSERT_EQ(stopped.status, RunStatus::stopped);
     const RestartState& saved = first.states.back();
     ASSERT_FALSE(saved.friction.empty());
-    const RestartState from_json = io::state_from_json(io::state_to_json(saved, digest), digest);
-    expect_identical_contact(solve(model, nullptr, &from_json), uninterrupted);
-    const RestartState from_store = io::decode_stored_state(io::encode_stored_state(saved, digest), digest);
-    expect_identical_contact(solve(model, nullptr, &from_store), uninterrupted);
+    for (const std::string_view codec : testing::state_codecs) {
+      SCOPED_TRACE(codec);
+      const RestartState from = testing::through_codec(codec, saved, digest);
+      expect_identical_contact(solve(model, nullptr, &from), uninterrupted);
+    }
   }
 }
 

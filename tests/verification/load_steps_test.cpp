@@ -15,9 +15,9 @@
 #include "errors.hpp"
 #include "io/history_json.hpp"
 #include "io/state_codec.hpp"
-#include "io/stored_state.hpp"
 #include "support/identical_solutions.hpp"
 #include "support/state_recorder.hpp"
+#include "support/state_round_trip.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/ring_fit.hpp"
 
@@ -209,8 +209,8 @@ TEST(LoadSteps, PlasticBarShowsLoadUnloadReloadInItsHistory) {
   }
 }
 
-/// Stops the run after every iteration k in turn, resumes from the saved state through the JSON and
-/// the stored (compressed CBOR) codecs, and expects the uninterrupted run's numbers to the last digit.
+/// Stops the run after every iteration k in turn, resumes from the saved state through the JSON,
+/// CBOR and stored (compressed CBOR) codecs, and expects the uninterrupted run's numbers to the last digit.
 void expect_exact_resumes(const Model& model, int minimum_iterations) {
   const std::string digest = "steps-test";
   Recorder all;
@@ -228,10 +228,11 @@ void expect_exact_resumes(const Model& model, int minimum_iterations) {
     EXPECT_EQ(saved.version, restart_version(model));
     EXPECT_EQ(*saved.position, *all.states[static_cast<std::size_t>(k - 1)].position);
 
-    const RestartState from_json = io::state_from_json(io::state_to_json(saved, digest), digest);
-    testing::expect_identical(solve(model, nullptr, &from_json), uninterrupted);
-    const RestartState from_store = io::decode_stored_state(io::encode_stored_state(saved, digest), digest);
-    testing::expect_identical(solve(model, nullptr, &from_store), uninterrupted);
+    for (const std::string_view codec : testing::state_codecs) {
+      SCOPED_TRACE(codec);
+      const RestartState from = testing::through_codec(codec, saved, digest);
+      testing::expect_identical(solve(model, nullptr, &from), uninterrupted);
+    }
   }
 }
 

@@ -16,9 +16,9 @@
 #include "element_data.hpp"
 #include "errors.hpp"
 #include "io/state_codec.hpp"
-#include "io/stored_state.hpp"
 #include "support/identical_solutions.hpp"
 #include "support/state_recorder.hpp"
+#include "support/state_round_trip.hpp"
 #include "support/mesh_builder.hpp"
 
 namespace saasgaps {
@@ -238,8 +238,8 @@ TEST(PlasticUnloading, PressedCylinderLoadsOnTheSecantLawAndUnloadsToAutofrettag
   }
 }
 
-/// Stops the run after every iteration k in turn, resumes through the JSON and the stored (compressed
-/// CBOR) codecs, and expects the uninterrupted run to the last digit.
+/// Stops the run after every iteration k in turn, resumes through the JSON, CBOR and stored
+/// (compressed CBOR) codecs, and expects the uninterrupted run to the last digit.
 void expect_exact_resumes(const Model& model, const Recorder& all, const Solution& uninterrupted) {
   const std::string digest = "plastic-test";
   for (int k = 1; k < uninterrupted.iterations; ++k) {
@@ -249,11 +249,12 @@ void expect_exact_resumes(const Model& model, const Recorder& all, const Solutio
     const RestartState& saved = first.states.back();
     EXPECT_EQ(saved.version, RestartState::plastic_steps_version);
     EXPECT_EQ(saved.materials, all.states[static_cast<std::size_t>(k - 1)].materials);
-    const RestartState from_json = io::state_from_json(io::state_to_json(saved, digest), digest);
-    EXPECT_EQ(from_json.materials, saved.materials);
-    testing::expect_identical(solve(model, nullptr, &from_json), uninterrupted);
-    const RestartState from_store = io::decode_stored_state(io::encode_stored_state(saved, digest), digest);
-    testing::expect_identical(solve(model, nullptr, &from_store), uninterrupted);
+    for (const std::string_view codec : testing::state_codecs) {
+      SCOPED_TRACE(codec);
+      const RestartState from = testing::through_codec(codec, saved, digest);
+      EXPECT_EQ(from.materials, saved.materials);
+      testing::expect_identical(solve(model, nullptr, &from), uninterrupted);
+    }
   }
 }
 

@@ -10,6 +10,7 @@
 #include "support/examples.hpp"
 #include "support/identical_solutions.hpp"
 #include "support/state_recorder.hpp"
+#include "support/state_round_trip.hpp"
 
 namespace saasgaps {
 namespace {
@@ -40,13 +41,11 @@ TEST_P(ExactRestart, StopAfterKResumeFromTheSavedStateGivesTheSameNumbers) {
     reference.erase("history");
     EXPECT_EQ(saved, reference);
 
-    const RestartState from_json = io::state_from_json(io::state_to_json(first.states.back(), digest), digest);
-    testing::expect_identical(solve(model, nullptr, &from_json), uninterrupted);
-    const RestartState from_cbor = io::state_from_cbor(io::state_to_cbor(first.states.back(), digest), digest);
-    testing::expect_identical(solve(model, nullptr, &from_cbor), uninterrupted);
-    const RestartState from_store =
-        io::decode_stored_state(io::encode_stored_state(first.states.back(), digest), digest);
-    testing::expect_identical(solve(model, nullptr, &from_store), uninterrupted);
+    for (const std::string_view codec : testing::state_codecs) {
+      SCOPED_TRACE(codec);
+      const RestartState from = testing::through_codec(codec, first.states.back(), digest);
+      testing::expect_identical(solve(model, nullptr, &from), uninterrupted);
+    }
   }
 }
 
