@@ -1,6 +1,6 @@
-// Heat runs on a model with nodes no solid element has: report problem 2's ground nodes (corners of
-// its gap elements only) and one node of no element. Nothing conducts to them unless the gaps
-// conduct, so their temperature is not a result of the conduction: it stays at the reference
+// Heat runs on models with nodes no solid element has: report problems 2 and 3's ground nodes
+// (corners of their gap elements only) and one node of no element. Nothing conducts to them unless
+// the gaps conduct, so their temperature is not a result of the conduction: it stays at the reference
 // temperature in a steady run and at the initial temperature in a transient one
 // (solver/thermal_system.hpp, docs/model.md). Before that rule their zero rows made the conduction
 // matrix singular.
@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 
 #include "support/examples.hpp"
 #include "thermal_analysis.hpp"
@@ -22,6 +23,7 @@ namespace saasgaps {
 namespace {
 
 constexpr double reference = 70.0;
+constexpr double initial = 40.0;    // transient runs
 constexpr double heating = 1100.0;  // problem 2's temperature over its reference (0 there)
 
 struct GapNodes {
@@ -35,12 +37,13 @@ int node_index(const Model& m, int id) {
   return static_cast<int>(it - m.nodes.begin());
 }
 
-/// Report problem 2 with `thermal` of the given type: its left end (nodes 14 and 2 of element 1) held
-/// at reference + heating, a conductor with capacity, and a node 35 of no element, held in r and z.
-GapNodes problem2(ThermalType type) {
+/// The report problem of `example` with `thermal` of the given type: the edge id_a-id_b of its
+/// first element held at reference + heating, a conductor with capacity, and a node of no element,
+/// held in r and z.
+GapNodes heated(const std::string& example, ThermalType type, int id_a, int id_b) {
   GapNodes p;
   Model& m = p.model;
-  m = testing::example_model("report-problem2.json");
+  m = testing::example_model(example);
   m.reference_temperature = reference;
   m.loads.node_temperature.clear();
   for (Material& mat : m.materials) {
@@ -51,15 +54,15 @@ GapNodes problem2(ThermalType type) {
     mat.density = 1.0;
     mat.conducts = mat.stores_heat = true;
   }
-  m.nodes.push_back({35, 4.0, -3.0});
+  m.nodes.push_back({m.nodes.back().id + 1, 4.0, -3.0});
   p.loose = static_cast<int>(m.nodes.size()) - 1;
   m.constraints.push_back({p.loose, 0.0, 0.0});
   Thermal& thermal = m.thermal.emplace();
   thermal.type = type;
   thermal.boundary.push_back(
-      {ThermalBoundary::Kind::temperature, {{0, node_index(m, 14), node_index(m, 2)}}, reference + heating, 0.0});
+      {ThermalBoundary::Kind::temperature, {{0, node_index(m, id_a), node_index(m, id_b)}}, reference + heating, 0.0});
   if (type == ThermalType::transient) {
-    thermal.initial_temperature = reference;
+    thermal.initial_temperature = initial;
     thermal.time_step = 0.5;
     thermal.end_time = 80.0;
     thermal.output_times = {5.0, 20.0, 80.0};
@@ -73,6 +76,9 @@ GapNodes problem2(ThermalType type) {
   }
   return p;
 }
+
+/// Problem 2 heated from the left end of its strip (nodes 14 and 2 of element 1).
+GapNodes problem2(ThermalType type) { return heated("report-problem2.json", type, 14, 2); }
 
 TEST(ThermalGapNodes, SteadyRunHoldsGroundNodesAtTheReferenceAndGivesProblem2sStresses) {
   const GapNodes p = problem2(ThermalType::steady);
@@ -132,9 +138,9 @@ TEST(ThermalGapNodes, TransientRunKeepsGroundNodesAtTheInitialTemperature) {
     SCOPED_TRACE("t = " + std::to_string(heat.times[k]));
     const std::vector<double>& T = heat.history[k];
     const auto at = [&T](int n) { return T[static_cast<std::size_t>(n)]; };
-    for (int n : p.ground) EXPECT_EQ(at(n), reference) << "node " << p.model.nodes[n].id;
-    EXPECT_EQ(at(p.loose), reference);
-    EXPECT_GT(at(far_end), reference);  // the heat has reached the far end
+    for (int n : p.ground) EXPECT_EQ(at(n), initial) << "node " << p.model.nodes[n].id;
+    EXPECT_EQ(at(p.loose), initial);
+    EXPECT_GT(at(far_end), initial);  // the heat has reached the far end
     EXPECT_LT(at(far_end), reference + heating);
     if (k > 0) {
       EXPECT_GT(at(far_end), heat.history[k - 1][static_cast<std::size_t>(far_end)]);
@@ -169,6 +175,23 @@ TEST(ThermalGapNodes, GapsAtZeroConductanceLeaveTheirGroundNodesOutAndTouchingOn
   }
   EXPECT_GT(held, 0);
   EXPECT_GT(conducted, 0);
+}
+
+TEST(ThermalGapNodes, Problem3sGroundNodesKeepTheReferenceOrTheInitialTemperature) {
+  // Case 1's 19 ground nodes under its retainer's gaps, heated from an edge of element 2 (nodes 3 and 2).
+  for (const ThermalType type : {ThermalType::steady, ThermalType::transient}) {
+    const bool steady = type == ThermalType::steady;
+    SCOPED_TRACE(steady ? "steady" : "transient");
+    GapNodes p = heated("report-problem3-case1.json", type, 3, 2);
+    if (!steady) p.model.thermal->output_times = {5.0};
+    ASSERT_EQ(p.ground.size(), 19u);
+    const Solution s = solve_with_heat(p.model);
+    ASSERT_EQ(s.status, RunStatus::converged) << s.message;
+    const std::vector<double>& T = s.thermal->T;
+    for (int n : p.ground) EXPECT_EQ(T[static_cast<std::size_t>(n)], steady ? reference : initial) << "node " << n;
+    EXPECT_EQ(T[static_cast<std::size_t>(p.loose)], steady ? reference : initial);
+    EXPECT_EQ(*std::max_element(T.begin(), T.end()), reference + heating);
+  }
 }
 
 }  // namespace
