@@ -177,7 +177,9 @@ TEST_F(SolveCommand, SteppedRunShowsStepsAndResumesMidStepToTheLastDigit) {
   EXPECT_NE(full.err.find("step/inc"), std::string::npos) << full.err;
   std::istringstream table(full.err);
   for (std::string line; std::getline(table, line);) {
-    if (line.rfind("converged", 0) != 0) EXPECT_LE(line.size(), 120U) << line;
+    if (line.rfind("converged", 0) != 0) {
+      EXPECT_LE(line.size(), 120U) << line;
+    }
   }
   const nlohmann::json result = json_of(path("full.json"));
   ASSERT_EQ(result["steps"].size(), 3U);

@@ -198,7 +198,9 @@ TEST(FrictionSurfaces, PushedBlockRisesToMuNThenSlipsAndShowsHysteresisOnTheWayB
   for (std::size_t i = 0; i + 1 < back.size(); ++i) {
     // back[i] is at push (19 - i) / 20 d, like push[18 - i].
     const double difference = transferred(*push[18 - i]) - transferred(*back[i]);
-    if (i >= 10) EXPECT_GT(difference, mu * N) << "back increment " << i + 1;
+    if (i >= 10) {
+      EXPECT_GT(difference, mu * N) << "back increment " << i + 1;
+    }
   }
   for (const std::uint8_t state : back.back()->friction.state) EXPECT_EQ(state, static_cast<std::uint8_t>(SlipState::slip));
 
