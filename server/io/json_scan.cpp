@@ -1,6 +1,8 @@
 #include "io/json_scan.hpp"
 
+#include <array>
 #include <charconv>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <system_error>
@@ -14,6 +16,36 @@ bool is_digit(char c) { return c >= '0' && c <= '9'; }
 /// What ends a scalar: whitespace or the structure after a value.
 bool is_delimiter(char c) {
   return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == ',' || c == ']' || c == '}';
+}
+
+/// Clinger's fast path: a decimal whose digits make an integer m <= 2^53 and whose power of ten e
+/// is within +-22 is m * 10^e or m / 10^-e with both operands exact, so one correctly rounded
+/// operation gives the correctly rounded value (the double strtod gives). Most numbers of a model
+/// are such (1.0, 400.0, 1.003125); false for the others, which from_chars reads.
+bool exact_decimal(const char* digits, const char* digits_end, const char* fraction, const char* fraction_end,
+                   const char* exponent, const char* end, bool negative, double& value) {
+  static constexpr std::array<double, 23> powers{1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                                 1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                                 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  if ((digits_end - digits) + (fraction_end - fraction) > 19) return false;
+  std::uint64_t m = 0;
+  for (const char* d = digits; d != digits_end; ++d) m = m * 10 + static_cast<std::uint64_t>(*d - '0');
+  for (const char* d = fraction; d != fraction_end; ++d) m = m * 10 + static_cast<std::uint64_t>(*d - '0');
+  if (m > (std::uint64_t{1} << 53)) return false;
+  long e = -(fraction_end - fraction);
+  if (exponent != end) {
+    const bool minus = *exponent == '-';
+    const char* d = exponent + ((*exponent == '-' || *exponent == '+') ? 1 : 0);
+    if (end - d > 3) return false;  // beyond the fast path's range whatever the digits
+    long x = 0;
+    for (; d != end; ++d) x = x * 10 + (*d - '0');
+    e += minus ? -x : x;
+  }
+  if (e < -22 || e > 22) return false;
+  const double magnitude = e < 0 ? static_cast<double>(m) / powers[static_cast<std::size_t>(-e)]
+                                 : static_cast<double>(m) * powers[static_cast<std::size_t>(e)];
+  value = negative ? -magnitude : magnitude;
+  return true;
 }
 
 }  // namespace
@@ -47,14 +79,20 @@ bool JsonScan::number(Number& n) {
   }
   const char* digits_end = p;
   bool integral = true;
+  const char* fraction = p;  // its digits, when there is a fraction
+  const char* fraction_end = p;
   if (p != end_ && *p == '.') {
     ++p;
     if (p == end_ || !is_digit(*p)) return false;
+    fraction = p;
     while (p != end_ && is_digit(*p)) ++p;
+    fraction_end = p;
     integral = false;
   }
+  const char* exponent = p;  // its sign and digits, when there is an exponent
   if (p != end_ && (*p == 'e' || *p == 'E')) {
     ++p;
+    exponent = p;
     if (p != end_ && (*p == '+' || *p == '-')) ++p;
     if (p == end_ || !is_digit(*p)) return false;
     while (p != end_ && is_digit(*p)) ++p;
@@ -80,10 +118,12 @@ bool JsonScan::number(Number& n) {
       n.unsigned_ = value;
     }
   } else {
-    // The span is JSON's number grammar, which from_chars reads (correctly rounded, as strtod).
     double value = 0.0;
-    const auto [end, error] = std::from_chars(begin, p, value);
-    if (error != std::errc() || end != p) return false;  // out of a double's range: reported elsewhere
+    if (!exact_decimal(digits, digits_end, fraction, fraction_end, exponent, p, negative, value)) {
+      // The span is JSON's number grammar, which from_chars reads (correctly rounded, as strtod).
+      const auto [end, error] = std::from_chars(begin, p, value);
+      if (error != std::errc() || end != p) return false;  // out of a double's range: reported elsewhere
+    }
     n.kind = Number::Kind::floating;
     n.floating = value;
   }

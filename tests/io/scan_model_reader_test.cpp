@@ -80,6 +80,16 @@ TEST(ScanModelReader, NumbersAreNlohmannsToTheLastBit) {
     std::memcpy(&x, &bits, sizeof x);
     if (std::isfinite(x)) texts.push_back(json(x).dump());
     texts.push_back(std::to_string(static_cast<std::int64_t>(random()) >> (k % 60)));
+    // Short decimals, the fast path's (Clinger's) and just beyond it: up to 20 digits, a point
+    // anywhere, exponents around +-22.
+    std::string digits = std::to_string(random() >> (random() % 64));
+    const std::size_t point = random() % (digits.size() + 1);
+    std::string decimal = (random() % 2 == 0 ? "-" : "") + (point == 0 ? "0" : digits.substr(0, point));
+    if (point < digits.size()) decimal += "." + digits.substr(point);
+    if (decimal.find('.') == std::string::npos || random() % 2 == 0) {
+      decimal += "e" + std::to_string(static_cast<int>(random() % 61) - 30);
+    }
+    texts.push_back(decimal);
   }
   for (const std::string& text : texts) {
     Number n;
