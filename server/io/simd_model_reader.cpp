@@ -287,15 +287,22 @@ class TapeWalk {
   std::optional<dom::array::iterator> skip_;  ///< tree() leaves the array that begins here empty
 };
 
+/// The document's root object, parsed by `parser` (which holds the tape); false when simdjson
+/// refuses the text or the root is not an object.
+bool parse_root(dom::parser& parser, std::string_view text, dom::object& members) {
+  if (parser.allocate(text.size(), max_json_depth) != simdjson::SUCCESS) return false;
+  // The parser copies the text into a buffer with the padding its SIMD loads read past the end.
+  dom::element root;
+  if (parser.parse(text.data(), text.size(), true).get(root) != simdjson::SUCCESS) return false;
+  return root.get(members) == simdjson::SUCCESS;
+}
+
 }  // namespace
 
 bool digest_model_text(std::string_view text, std::string& digest) {
   dom::parser parser;
-  if (parser.allocate(text.size(), max_json_depth) != simdjson::SUCCESS) return false;
-  dom::element root;
-  if (parser.parse(text.data(), text.size(), true).get(root) != simdjson::SUCCESS) return false;
   dom::object members;
-  if (root.get(members) != simdjson::SUCCESS) return false;
+  if (!parse_root(parser, text, members)) return false;
   // The first value of each section, as the walk above takes it.
   std::array<bool, section_count> present{};
   std::array<dom::element, section_count> values{};
@@ -312,12 +319,8 @@ bool digest_model_text(std::string_view text, std::string& digest) {
 
 bool read_model_text(std::string_view text, SectionReader& reader, std::string* digest) {
   dom::parser parser;
-  if (parser.allocate(text.size(), max_json_depth) != simdjson::SUCCESS) return false;
-  // The parser copies the text into a buffer with the padding its SIMD loads read past the end.
-  dom::element root;
-  if (parser.parse(text.data(), text.size(), true).get(root) != simdjson::SUCCESS) return false;
   dom::object members;
-  if (root.get(members) != simdjson::SUCCESS) return false;
+  if (!parse_root(parser, text, members)) return false;
   TapeWalk walk(reader);
   walk.read(members);
   if (digest != nullptr) *digest = walk.digest();
