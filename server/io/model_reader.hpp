@@ -23,9 +23,10 @@
 /// - a repeated key in one JSON object is an error (parse_model only: a parsed nlohmann::json has
 ///   already kept just one of the values).
 ///
-/// From text (parse_model), the model is read in one streaming pass, without a tree of the whole
-/// document (io/model_stream.hpp); read_model judges a tree held in memory. Both apply the same
-/// rules (io/section_reader.hpp) and report the same issues in the same order.
+/// From text (parse_model), the model is read without a tree of the whole document (a scan in
+/// place, io/scan_model_reader.hpp, and for text with issues the reporting path,
+/// io/simd_model_reader.hpp); read_model judges a tree held in memory. Both apply the same rules
+/// (io/section_reader.hpp) and report the same issues in the same order.
 /// - a node that no element uses is not an error here (the solver reports the model singular).
 
 #include <string>
