@@ -120,12 +120,20 @@ struct GapEdges {
   std::unordered_set<std::uint64_t> on_solid;
 
   GapEdges(const Model& model, std::span<const GapElement> list) {
+    // Most solid edges touch no gap: a flag per node spares them the hash lookup (at 10^6 unknowns
+    // the lookups were 7 % of reading the model).
+    std::vector<bool> on_gap(model.nodes.size(), false);
     for (const GapElement& g : list) {
-      for (int k = 0; k < g.node_count; ++k) ++gaps[edge_key(g.nodes[k], g.nodes[(k + 1) % g.node_count])];
+      for (int k = 0; k < g.node_count; ++k) {
+        ++gaps[edge_key(g.nodes[k], g.nodes[(k + 1) % g.node_count])];
+        if (g.nodes[k] >= 0 && static_cast<std::size_t>(g.nodes[k]) < on_gap.size()) on_gap[static_cast<std::size_t>(g.nodes[k])] = true;
+      }
     }
     for (const Element& e : model.elements) {
       for (int k = 0; k < e.node_count; ++k) {
-        const std::uint64_t key = edge_key(e.nodes[k], e.nodes[(k + 1) % e.node_count]);
+        const int a = e.nodes[k];
+        if (a < 0 || static_cast<std::size_t>(a) >= on_gap.size() || !on_gap[static_cast<std::size_t>(a)]) continue;
+        const std::uint64_t key = edge_key(a, e.nodes[(k + 1) % e.node_count]);
         if (gaps.count(key)) on_solid.insert(key);
       }
     }

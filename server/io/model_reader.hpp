@@ -23,9 +23,10 @@
 /// - a repeated key in one JSON object is an error (parse_model only: a parsed nlohmann::json has
 ///   already kept just one of the values).
 ///
-/// From text (parse_model), the model is read in one streaming pass, without a tree of the whole
-/// document (io/model_stream.hpp); read_model judges a tree held in memory. Both apply the same
-/// rules (io/section_reader.hpp) and report the same issues in the same order.
+/// From text (parse_model), the model is read without a tree of the whole document (a scan in
+/// place, io/scan_model_reader.hpp, and for text with issues the reporting path,
+/// io/simd_model_reader.hpp); read_model judges a tree held in memory. Both apply the same rules
+/// (io/section_reader.hpp) and report the same issues in the same order.
 /// - a node that no element uses is not an error here (the solver reports the model singular).
 
 #include <string>
@@ -59,6 +60,15 @@ nlohmann::json parse_document(std::string_view text);
 /// pointer) before the issues of read_model; a document nesting deeper than max_json_depth gives
 /// NestingTooDeep alone, at the place of the limit. With `digest`, also sets it to the model_digest
 /// (io/state_codec.hpp) of the document, for restart states.
+/// The model is read first by a strict scan in place (io/scan_model_reader.hpp), which accepts a
+/// valid model of the usual shape and gives up on anything else; the text is then read again by
+/// the reporting path (io/simd_model_reader.hpp), which finds and words every issue. The digest is
+/// not part of reading: it is model_text_digest(text), computed only when `digest` is given.
 Model parse_model(std::string_view text, std::string* digest = nullptr);
+
+/// model_digest (io/state_codec.hpp) of a model document's text: the fingerprint that ties restart
+/// states to it, the same bit for bit as that of the tree nlohmann's parser builds from the text.
+/// No rule is judged (parse_model judges them); ModelError when the text is not JSON.
+std::string model_text_digest(std::string_view text);
 
 }  // namespace saasgaps::io

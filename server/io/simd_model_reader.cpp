@@ -115,6 +115,15 @@ bool only_member(dom::element o, std::string_view key, dom::element& value) {
   return found == 1;
 }
 
+/// model_digest of a document whose sections are `present`, with these values on the tape.
+std::string tape_digest(const std::array<bool, section_count>& present,
+                        const std::array<dom::element, section_count>& values) {
+  return model_fingerprint(present, [&](Section s, Fingerprint& f) {
+    TapeDump dump([&](std::string_view piece) { f.add(piece); });
+    dump.value(values[static_cast<std::size_t>(s)]);
+  });
+}
+
 /// The walk over the tape.
 class TapeWalk {
  public:
@@ -161,12 +170,7 @@ class TapeWalk {
   }
 
   /// model_digest of the document, from the dumps of the sections' values on the tape.
-  [[nodiscard]] std::string digest() const {
-    return model_fingerprint(present_, [&](Section s, Fingerprint& f) {
-      TapeDump dump([&](std::string_view piece) { f.add(piece); });
-      dump.value(values_[static_cast<std::size_t>(s)]);
-    });
-  }
+  [[nodiscard]] std::string digest() const { return tape_digest(present_, values_); }
 
  private:
   void repeated(std::string pointer, std::string_view key) {
@@ -283,16 +287,40 @@ class TapeWalk {
   std::optional<dom::array::iterator> skip_;  ///< tree() leaves the array that begins here empty
 };
 
-}  // namespace
-
-bool read_model_text(std::string_view text, SectionReader& reader, std::string* digest) {
-  dom::parser parser;
+/// The document's root object, parsed by `parser` (which holds the tape); false when simdjson
+/// refuses the text or the root is not an object.
+bool parse_root(dom::parser& parser, std::string_view text, dom::object& members) {
   if (parser.allocate(text.size(), max_json_depth) != simdjson::SUCCESS) return false;
   // The parser copies the text into a buffer with the padding its SIMD loads read past the end.
   dom::element root;
   if (parser.parse(text.data(), text.size(), true).get(root) != simdjson::SUCCESS) return false;
+  return root.get(members) == simdjson::SUCCESS;
+}
+
+}  // namespace
+
+bool digest_model_text(std::string_view text, std::string& digest) {
+  dom::parser parser;
   dom::object members;
-  if (root.get(members) != simdjson::SUCCESS) return false;
+  if (!parse_root(parser, text, members)) return false;
+  // The first value of each section, as the walk above takes it.
+  std::array<bool, section_count> present{};
+  std::array<dom::element, section_count> values{};
+  for (const dom::key_value_pair member : members) {
+    const auto s = section_of(member.key);
+    if (s && !present[static_cast<std::size_t>(*s)]) {
+      present[static_cast<std::size_t>(*s)] = true;
+      values[static_cast<std::size_t>(*s)] = member.value;
+    }
+  }
+  digest = tape_digest(present, values);
+  return true;
+}
+
+bool read_model_text(std::string_view text, SectionReader& reader, std::string* digest) {
+  dom::parser parser;
+  dom::object members;
+  if (!parse_root(parser, text, members)) return false;
   TapeWalk walk(reader);
   walk.read(members);
   if (digest != nullptr) *digest = walk.digest();

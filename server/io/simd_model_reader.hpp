@@ -34,4 +34,8 @@ namespace saasgaps::io {
 /// order mark) or a document that is not an object.
 bool read_model_text(std::string_view text, SectionReader& reader, std::string* digest);
 
+/// Sets `digest` to the model_digest of the document, from the tape alone (no rule is judged).
+/// False, `digest` untouched, when the text is not within this pass (as read_model_text).
+bool digest_model_text(std::string_view text, std::string& digest);
+
 }  // namespace saasgaps::io

@@ -1,5 +1,7 @@
 #include "service/job_execution.hpp"
 
+#include <mutex>
+
 #include "analysis.hpp"
 #include "thermal_analysis.hpp"
 #include "io/history_json.hpp"
@@ -15,11 +17,27 @@ namespace saasgaps::service {
 
 namespace {
 
+/// The model's digest, computed once, when first asked for, on whichever thread asks (the commit
+/// pipeline's at the first iteration, or the run's own when it resumes from a state).
+class LazyDigest {
+ public:
+  explicit LazyDigest(const std::string& text) : text_(text) {}
+  const std::string& get() const {
+    std::call_once(once_, [this] { digest_ = io::model_text_digest(text_); });
+    return digest_;
+  }
+
+ private:
+  const std::string& text_;  // the run's input, which outlives the run
+  mutable std::once_flag once_;
+  mutable std::string digest_;
+};
+
 /// Hands every iteration to the sink, committed on the pipeline's thread while the solver goes on,
 /// and tells the solver when to stop.
 class SinkObserver final : public IterationObserver {
  public:
-  SinkObserver(RunSink& sink, const std::string& digest, const std::atomic<bool>& shutting_down,
+  SinkObserver(RunSink& sink, const LazyDigest& digest, const std::atomic<bool>& shutting_down,
                CommitPipeline& pipeline)
       : sink_(sink), digest_(digest), shutting_down_(shutting_down), pipeline_(pipeline) {}
 
@@ -29,7 +47,7 @@ class SinkObserver final : public IterationObserver {
     row_ = io::history_row_text(row);
     state_ = state;  // the solver changes `state` next; the copy reuses the buffers of the last one
     pipeline_.post([this, iteration = row.iteration] {
-      sink_.iteration(iteration, row_, io::encode_stored_state(state_, digest_));
+      sink_.iteration(iteration, row_, io::encode_stored_state(state_, digest_.get()));
     });
   }
 
@@ -45,7 +63,7 @@ class SinkObserver final : public IterationObserver {
 
  private:
   RunSink& sink_;
-  const std::string& digest_;
+  const LazyDigest& digest_;
   const std::atomic<bool>& shutting_down_;
   CommitPipeline& pipeline_;
   std::string row_;
@@ -100,7 +118,7 @@ void note_finished(JobStore& store, std::int64_t job, JobState state, const std:
 
 std::shared_ptr<const ParsedModel> parse_run_model(const std::string& text) {
   auto parsed = std::make_shared<ParsedModel>();
-  parsed->model = io::parse_model(text, &parsed->digest);
+  parsed->model = io::parse_model(text);
   return parsed;
 }
 
@@ -111,6 +129,7 @@ void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& 
   // way out: a run that throws after an iteration was posted must not leave that commit reading a
   // destroyed observer.
   std::shared_ptr<const ParsedModel> parsed;
+  const LazyDigest digest(input.model);
   std::optional<SinkObserver> observer;
   CommitPipeline pipeline;
   try {
@@ -119,9 +138,9 @@ void execute_run(const RunInput& input, RunSink& sink, const std::atomic<bool>& 
     parsed = input.parsed ? input.parsed : parse_run_model(input.model);
     const Model& model = parsed->model;
     std::optional<RestartState> state;
-    if (input.state) state = io::decode_stored_state(*input.state, parsed->digest);
+    if (input.state) state = io::decode_stored_state(*input.state, digest.get());
 
-    observer.emplace(sink, parsed->digest, shutting_down, pipeline);
+    observer.emplace(sink, digest, shutting_down, pipeline);
     const Solution solution = solve_with_heat(model, &*observer, state ? &*state : nullptr, input.settings, ordering_cache);
     // Every iteration is committed before the run's end is; a commit that failed ends the run here.
     pipeline.wait();

@@ -19,13 +19,14 @@
 
 namespace saasgaps::service {
 
-/// A model document read and checked, with its digest (which ties restart states to it).
+/// A model document read and checked. Its digest (which ties restart states to it) is not part of
+/// reading: execute_run computes it from the text when a state is first written or checked
+/// (io::model_text_digest), on the commit thread while the solve goes on.
 struct ParsedModel {
   Model model;
-  std::string digest;
 };
 
-/// Reads a model document for a run (io::parse_model with its digest).
+/// Reads a model document for a run (io::parse_model).
 std::shared_ptr<const ParsedModel> parse_run_model(const std::string& text);
 
 /// What a run starts from.

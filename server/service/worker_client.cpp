@@ -152,14 +152,14 @@ int run_worker(const WorkerOptions& options) {
     protocol::Work work = protocol::decode_work(service.send("GET", path + "/work"));
     service.log("job " + std::to_string(work.job) + ", attempt " + std::to_string(work.attempt) +
                 (work.input.state ? ": resuming" : ": starting"));
-    // Read here (execute_run takes it as read) for its digest, which the finish carries: the
-    // service refuses a result for another model. A model that does not read fails in execute_run.
+    // Read here (execute_run takes it as read); the finish carries the model's digest: the service
+    // refuses a result for another model. A model that does not read fails in execute_run.
     try {
       work.input.parsed = parse_run_model(work.input.model);
     } catch (const std::exception&) {
       work.input.parsed = nullptr;
     }
-    HttpSink sink(service, path, work.input.parsed ? work.input.parsed->digest : std::string());
+    HttpSink sink(service, path, work.input.parsed ? io::model_text_digest(work.input.model) : std::string());
     const std::atomic<bool> never{false};
     execute_run(work.input, sink, never);
     return 0;

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "service/job_client.hpp"
+#include "io/model_reader.hpp"
 #include "service/job_execution.hpp"
 #include "service/long_job_model.hpp"
 #include "service/server_process.hpp"
@@ -193,8 +194,8 @@ TEST_F(Worker, EveryWriteChecksTheLeaseAndAFinishSpendsIt) {
   EXPECT_EQ(json::parse(answer->body)["stop"], true);
 
   // A result for another model (its digest is not the job's) is refused, and nothing is stored.
-  const std::string digest = service::parse_run_model(model)->digest;
-  const std::string other = service::parse_run_model(example_text("report-problem2.json"))->digest;
+  const std::string digest = io::model_text_digest(model);
+  const std::string other = io::model_text_digest(example_text("report-problem2.json"));
   ASSERT_NE(digest, other);
   const auto finish_of = [](const std::string& result, const std::string& model_digest) {
     return cbor({{"state", "cancelled"}, {"result", result}, {"message", "stopped"}, {"model_digest", model_digest}});
