@@ -20,6 +20,7 @@ struct Pieces {
   std::condition_variable changed;  // a piece formatted, a piece written, or a stop
   std::vector<std::string> texts;
   std::vector<char> formatted;
+  std::vector<std::string> spare;  // the strings of pieces written, kept for the next ones
   std::size_t next = 0;     // the next piece to format
   std::size_t written = 0;  // pieces handed to the writer, in order
   bool stop = false;
@@ -43,8 +44,10 @@ void write_items(JsonWriter& out, std::size_t count, const std::function<void(Js
   // Every thread continues from this copy of the writer's place, never from `out`, which the calling
   // thread changes as it writes.
   const JsonWriter origin = out.continuation([](std::string_view) {}, 0);
-  const auto format = [&](std::size_t k) {
-    std::string text;
+  // text: a spare piece's string, so that its memory is reused rather than allocated and faulted
+  // in again for every piece.
+  const auto format = [&](std::size_t k, std::string text) {
+    text.clear();
     JsonWriter piece = origin.continuation(string_sink(text), k * per);
     const std::size_t end = std::min(count, (k + 1) * per);
     for (std::size_t i = k * per; i < end; ++i) item(piece, i);
@@ -58,16 +61,24 @@ void write_items(JsonWriter& out, std::size_t count, const std::function<void(Js
   // Taking a piece never runs further than `ahead` past the last one written, so that the texts
   // held stay a few megabytes whatever the array's size.
   const auto can_take = [&] { return p.next < piece_count && p.next < p.written + ahead; };
+  const auto take_spare = [&] {
+    std::string text;
+    if (!p.spare.empty()) {
+      text = std::move(p.spare.back());
+      p.spare.pop_back();
+    }
+    return text;
+  };
   const auto formatter = [&] {
     std::unique_lock lock(p.mutex);
     for (;;) {
       p.changed.wait(lock, [&] { return p.stop || p.next >= piece_count || can_take(); });
       if (p.stop || p.next >= piece_count) return;
       const std::size_t k = p.next++;
+      std::string text = take_spare();
       lock.unlock();
-      std::string text;
       try {
-        text = format(k);
+        text = format(k, std::move(text));
       } catch (...) {
         lock.lock();
         if (!p.failure) p.failure = std::current_exception();
@@ -99,17 +110,18 @@ void write_items(JsonWriter& out, std::size_t count, const std::function<void(Js
     while (p.written < piece_count && !p.failure) {
       const std::size_t k = p.written;
       if (p.formatted[k]) {
-        const std::string text = std::move(p.texts[k]);
-        p.texts[k] = std::string();
+        std::string text = std::move(p.texts[k]);
         lock.unlock();
         out.items(text, std::min(count, (k + 1) * per) - k * per);
         lock.lock();
+        p.spare.push_back(std::move(text));
         ++p.written;
         p.changed.notify_all();
       } else if (can_take()) {
         const std::size_t mine = p.next++;
+        std::string text = take_spare();
         lock.unlock();
-        std::string text = format(mine);
+        text = format(mine, std::move(text));
         lock.lock();
         p.texts[mine] = std::move(text);
         p.formatted[mine] = 1;
