@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cassert>
 
+#include "index_ranges.hpp"
+
 namespace saasgaps {
 
 Assembler::Assembler(const DofMap& dofs, std::size_t element_count, const NodesOf& nodes_of,
@@ -20,8 +22,6 @@ Assembler::Assembler(const DofMap& dofs, std::size_t element_count, const NodesO
   const std::size_t cliques = element_count + couplings.size();
   equations_.start.reserve(cliques + 1);
   equations_.members.reserve(members);
-  positions_.start.reserve(cliques + 1);
-  positions_.members.reserve(upper);
   lifted_.assign(cliques, false);
 
   std::vector<Index> local;
@@ -49,15 +49,25 @@ Assembler::Assembler(const DofMap& dofs, std::size_t element_count, const NodesO
   pattern_ = CscPattern::from_cliques(dofs.size(), equations_.size(),
                                       [this](std::size_t c) { return equations_[c]; });
 
-  for (std::size_t c = 0; c < equations_.size(); ++c) {
-    const std::span<const Index> eq = equations_[c];
-    for (std::size_t b = 0; b < eq.size(); ++b) {
-      for (std::size_t a = 0; a <= b; ++a) {
-        positions_.members.push_back(eq[a] >= 0 && eq[b] >= 0 ? pattern_.find(eq[a], eq[b]) : -1);
+  // Each clique's positions have their place known in advance, so ranges of cliques are looked up
+  // on the cores at once (index_ranges.hpp).
+  positions_.start.resize(cliques + 1);
+  for (std::size_t c = 0; c < cliques; ++c) {
+    const auto n = static_cast<Index>(equations_[c].size());
+    positions_.start[c + 1] = positions_.start[c] + n * (n + 1) / 2;
+  }
+  positions_.members.resize(upper);
+  for_each_range(cliques, [this](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t c = begin; c < end; ++c) {
+      const std::span<const Index> eq = equations_[c];
+      Index* position = positions_.members.data() + positions_.start[c];
+      for (std::size_t b = 0; b < eq.size(); ++b) {
+        for (std::size_t a = 0; a <= b; ++a) {
+          *position++ = eq[a] >= 0 && eq[b] >= 0 ? pattern_.find(eq[a], eq[b]) : -1;
+        }
       }
     }
-    positions_.start.push_back(static_cast<Index>(positions_.members.size()));
-  }
+  });
 }
 
 void Assembler::add(std::size_t clique, const ElementBlock& block, const SystemSink& sink) const {

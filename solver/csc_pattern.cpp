@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cassert>
 
+#include "index_ranges.hpp"
+
 namespace saasgaps {
 
 Index CscPattern::find(Index i, Index j) const {
@@ -34,37 +36,51 @@ CscPattern CscPattern::from_cliques(Index n, std::size_t clique_count,
     }
   }
 
-  // Column j holds every i <= j sharing a clique with j; the marker skips repeats without sorting twice.
+  // Column j holds every i <= j sharing a clique with j; the marker skips repeats without sorting
+  // twice. Columns are independent: ranges of them go to the cores (index_ranges.hpp), each with a
+  // marker of its own, which the second pass tells apart from the first by an offset of n.
   CscPattern p;
   p.n = n;
   p.colptr.assign(static_cast<std::size_t>(n) + 1, 0);
-  std::vector<Index> marker(static_cast<std::size_t>(n), -1);
-  const auto visit_column = [&](Index j, auto&& emit) {
+  const std::size_t columns = static_cast<std::size_t>(n);
+  std::vector<std::vector<Index>> markers(range_count(columns));
+  const auto visit_column = [&](std::vector<Index>& marker, Index mark, Index j, auto&& emit) {
     // The diagonal is always present, even for an index no clique holds, so that a missing
     // stiffness shows up as a zero pivot rather than as a broken pattern.
-    marker[j] = j;
+    marker[j] = mark;
     emit(j);
     for (Index h = holder_start[j]; h < holder_start[j + 1]; ++h) {
       for (Index i : cliques(static_cast<std::size_t>(holders[h]))) {
-        if (i >= 0 && i <= j && marker[i] != j) {
-          marker[i] = j;
+        if (i >= 0 && i <= j && marker[i] != mark) {
+          marker[i] = mark;
           emit(i);
         }
       }
     }
   };
-  for (Index j = 0; j < n; ++j) {
-    Index count = 0;
-    visit_column(j, [&](Index) { ++count; });
-    p.colptr[j + 1] = p.colptr[j] + count;
-  }
+  const auto marker_of = [&](unsigned range) -> std::vector<Index>& {
+    std::vector<Index>& marker = markers[range];
+    if (marker.empty()) marker.assign(columns, -1);
+    return marker;
+  };
+  for_each_range(columns, [&](std::size_t begin, std::size_t end, unsigned range) {
+    std::vector<Index>& marker = marker_of(range);
+    for (auto j = static_cast<Index>(begin); j < static_cast<Index>(end); ++j) {
+      Index count = 0;
+      visit_column(marker, j, j, [&](Index) { ++count; });
+      p.colptr[j + 1] = count;
+    }
+  });
+  for (Index j = 0; j < n; ++j) p.colptr[j + 1] += p.colptr[j];
   p.rowind.resize(static_cast<std::size_t>(p.colptr[n]));
-  std::fill(marker.begin(), marker.end(), -1);
-  for (Index j = 0; j < n; ++j) {
-    Index at = p.colptr[j];
-    visit_column(j, [&](Index i) { p.rowind[at++] = i; });
-    std::sort(p.rowind.begin() + p.colptr[j], p.rowind.begin() + p.colptr[j + 1]);
-  }
+  for_each_range(columns, [&](std::size_t begin, std::size_t end, unsigned range) {
+    std::vector<Index>& marker = marker_of(range);
+    for (auto j = static_cast<Index>(begin); j < static_cast<Index>(end); ++j) {
+      Index at = p.colptr[j];
+      visit_column(marker, n + j, j, [&](Index i) { p.rowind[at++] = i; });
+      std::sort(p.rowind.begin() + p.colptr[j], p.rowind.begin() + p.colptr[j + 1]);
+    }
+  });
   return p;
 }
 

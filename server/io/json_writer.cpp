@@ -134,6 +134,30 @@ JsonWriter::JsonWriter(Sink sink, bool pretty) : sink_(std::move(sink)), pretty_
   buffer_.reserve(buffer_limit + 256);
 }
 
+JsonWriter::JsonWriter(Sink sink, bool pretty, std::vector<Level> levels) : JsonWriter(std::move(sink), pretty) {
+  levels_ = std::move(levels);
+}
+
+JsonWriter JsonWriter::continuation(Sink sink, std::size_t before) const {
+  assert(!levels_.empty() && !levels_.back().is_object && !after_key_ && "continuation() inside an array only");
+  std::vector<Level> levels = levels_;
+  levels.back().items = before;
+  return JsonWriter(std::move(sink), pretty_, std::move(levels));
+}
+
+JsonWriter& JsonWriter::items(std::string_view text, std::size_t count) {
+  assert(!levels_.empty() && !levels_.back().is_object && !after_key_);
+  // A piece is usually larger than the buffer: it goes to the sink directly, in the sink's sizes.
+  flush();
+  for (std::size_t at = 0; at < text.size(); at += buffer_limit) {
+    const std::string_view part = text.substr(at, buffer_limit);
+    sink_(part);
+    flushed_ += part.size();
+  }
+  levels_.back().items += count;
+  return *this;
+}
+
 void JsonWriter::flush() {
   if (buffer_.empty()) return;
   sink_(buffer_);

@@ -60,6 +60,15 @@ class JsonWriter {
   /// An array of doubles.
   JsonWriter& value(const std::vector<double>& values);
 
+  /// A writer that continues this one's text from inside the array it is writing, as if `before`
+  /// items had been written into that array already: the same calls give the same text (the comma
+  /// before an item, pretty indentation) as they would give here. For writing an array's items in
+  /// pieces on other threads (io/parallel_items.hpp); put the pieces back with items().
+  [[nodiscard]] JsonWriter continuation(Sink sink, std::size_t before) const;
+  /// Appends the text a continuation() wrote for `count` items of the array being written, as is,
+  /// through the sink in pieces of at most the buffer size.
+  JsonWriter& items(std::string_view text, std::size_t count);
+
   /// Writes out what is buffered. Call once the document is complete (the destructor does not,
   /// so that a sink's failure is never swallowed).
   void flush();
@@ -91,6 +100,9 @@ class JsonWriter {
     bool is_object = false;
     std::size_t items = 0;  ///< values (arrays) or members (objects) written
   };
+
+  /// continuation()'s writer: at the given levels.
+  JsonWriter(Sink sink, bool pretty, std::vector<Level> levels);
 
   Sink sink_;
   bool pretty_ = false;

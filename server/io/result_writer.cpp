@@ -108,7 +108,7 @@ void write_contact_pair(JsonWriter& out, const ContactPairResult& pair, double f
 
 }  // namespace
 
-void write_result(JsonWriter& out, const Model& model, const Solution& s) {
+void write_result(JsonWriter& out, const Model& model, const Solution& s, const ItemPieces& pieces) {
   out.begin_object().field("analysis", analysis_name(model.analysis));
   if (model.contact) {  // models with contact surfaces only: other results stay as they were
     out.key("contact").begin_array();
@@ -122,13 +122,14 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s) {
   // exported on its own.
   // A stepped run ends in its last step's loads: nodes and elements both show those temperatures.
   const std::vector<double>& T = s.thermal ? s.thermal->T : final_loads(model).node_temperature;
+  // The two arrays that grow with the mesh are formatted on several cores (io/parallel_items.hpp).
   out.key("elements").begin_array();
-  for (std::size_t e = 0; e < s.elements.size(); ++e) {
+  write_items(out, s.elements.size(), [&](JsonWriter& item, std::size_t e) {
     const Element& el = model.elements[e];
     double mean = 0.0;  // of the node temperatures, as element_temperature does for the model's loads
     for (int a = 0; a < el.node_count; ++a) mean += T[static_cast<std::size_t>(el.nodes[a])];
-    write_element(out, model, el, s.elements[e], mean / el.node_count, s.thermal ? &s.thermal->flux[e] : nullptr);
-  }
+    write_element(item, model, el, s.elements[e], mean / el.node_count, s.thermal ? &s.thermal->flux[e] : nullptr);
+  }, pieces);
   out.end_array();
   out.key("gaps").begin_array();
   for (std::size_t g = 0; g < s.gaps.size(); ++g) write_gap(out, model, model.gaps->elements[g], s.gaps[g]);
@@ -138,7 +139,7 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s) {
   out.end_array();
   out.field("iterations", s.iterations).field("message", s.message);
   out.key("nodes").begin_array();
-  for (std::size_t n = 0; n < s.nodes.size(); ++n) write_node(out, model, s.nodes[n], n, T[n]);
+  write_items(out, s.nodes.size(), [&](JsonWriter& item, std::size_t n) { write_node(item, model, s.nodes[n], n, T[n]); }, pieces);
   out.end_array();
   out.key("reaction_sum");
   write_force(out, reaction_sum(s.reactions));

@@ -18,13 +18,16 @@
 #include <string>
 
 #include "io/json_writer.hpp"
+#include "io/parallel_items.hpp"
 #include "model.hpp"
 #include "solution.hpp"
 
 namespace saasgaps::io {
 
 /// The result of a finished run. A stopped run reports status not_converged (it can be resumed).
-void write_result(JsonWriter& out, const Model& model, const Solution& solution);
+/// The nodes and elements are formatted in pieces on several threads (io/parallel_items.hpp; the
+/// same text on one).
+void write_result(JsonWriter& out, const Model& model, const Solution& solution, const ItemPieces& pieces = {});
 
 /// The result document of a run that failed (singular model, bad restart state, ...).
 void write_failed_result(JsonWriter& out, const std::string& message);

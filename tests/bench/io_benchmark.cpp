@@ -24,7 +24,9 @@
 //                  restart states need (parse_model(text, &digest) costs read + digest)
 // The read rates are also printed as ratios of CPU rates, all measured in this one run.
 //   write, tree    the tree writer (kept in tests/io) + dump(2): what `saasgaps solve -o` wrote before
-//   write, stream  io::write_result, compact (the default) and --pretty, through a 64 KiB buffer
+//   write, stream  io::write_result, compact (the default) and --pretty, through a 64 KiB buffer,
+//                  its nodes and elements formatted on every core (at most 4; io/parallel_items.hpp),
+//                  and compact on one thread: the wall time ratio one thread / every core
 //
 // With --plots RESULT.json, the pictures of a stored result instead, each stage reading the file
 // itself as `saasgaps plot` does (the parent holds nothing of it), a 1200 x 800 PNG:
@@ -328,14 +330,20 @@ int main(int argc, char** argv) {
           out << dumped;
           return static_cast<double>(dumped.size());
         }));
-  for (const bool pretty : {false, true}) {
-    print(pretty ? "write, stream --pretty" : "write, stream (compact)", in_child([&] {
-            std::ofstream out("/dev/null", std::ios::binary);
-            io::JsonWriter writer(io::stream_sink(out), pretty);
-            io::write_result(writer, model, solution);
-            writer.flush();
-            return static_cast<double>(writer.bytes());
-          }));
-  }
+  const auto write = [&](bool pretty, unsigned threads) {
+    return in_child([&] {
+      std::ofstream out("/dev/null", std::ios::binary);
+      io::JsonWriter writer(io::stream_sink(out), pretty);
+      io::write_result(writer, model, solution, {.threads = threads});
+      writer.flush();
+      return static_cast<double>(writer.bytes());
+    });
+  };
+  const Measured one_thread = write(false, 1);
+  print("write, stream (compact), 1 thread", one_thread);
+  const Measured threads = write(false, 0);
+  print("write, stream (compact)", threads);
+  print("write, stream --pretty", write(true, 0));
+  std::printf("write wall, 1 thread / every core: %.2fx\n", one_thread.seconds / threads.seconds);
   return 0;
 }

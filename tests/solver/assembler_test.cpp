@@ -9,6 +9,7 @@
 
 #include "conduction_kernel.hpp"
 #include "dof_map.hpp"
+#include "index_ranges.hpp"
 #include "support/mesh_builder.hpp"
 
 namespace saasgaps {
@@ -108,6 +109,35 @@ TEST(Assembler, ScalarScatterEqualsTheDenseSumWithPrescribedValuesLifted) {
   }
   EXPECT_LT((sparse - K).norm(), 1e-14 * K.norm());
   EXPECT_LT((Eigen::Map<const Eigen::VectorXd>(rhs.data(), dofs.size()) - f).norm(), 1e-14 * f.norm());
+}
+
+/// Cliques are looked up on the cores in ranges (index_ranges.hpp) when there are many: on a grid of
+/// 10,000 quads with a prescribed row, every clique's positions are still those find() gives.
+TEST(Assembler, ManyCliquesSplitAmongTheCoresGetTheirPositions) {
+  Model m;
+  testing::add_grid(m, 100, 100, [](double x, double y) { return Vec2(1.0 + x, y); }, 0);
+  std::vector<int> ids;
+  std::vector<DofMap::Prescribed> fixed;
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) {
+    ids.push_back(m.nodes[n].id);
+    if (m.nodes[n].z == 0.0) fixed.push_back({static_cast<int>(n), 0, 0.5});
+  }
+  const DofMap dofs(ids, "T", fixed);
+  ASSERT_GT(range_count(m.elements.size()), 1U) << "the machine has one core: the split is not exercised";
+  const Assembler assembler(dofs, m.elements.size(), [&m](std::size_t e) { return nodes_of(m, e); });
+  for (std::size_t c = 0; c < assembler.clique_count(); ++c) {
+    const std::span<const Index> eq = assembler.equations(c);
+    const std::span<const Index> positions = assembler.positions(c);
+    ASSERT_EQ(positions.size(), eq.size() * (eq.size() + 1) / 2);
+    std::size_t k = 0;
+    for (std::size_t b = 0; b < eq.size(); ++b) {
+      for (std::size_t a = 0; a <= b; ++a, ++k) {
+        const Index expected = eq[a] >= 0 && eq[b] >= 0 ? assembler.pattern().find(eq[a], eq[b]) : -1;
+        ASSERT_EQ(positions[k], expected) << "clique " << c;
+        if (eq[a] >= 0 && eq[b] >= 0) ASSERT_GE(positions[k], 0);
+      }
+    }
+  }
 }
 
 TEST(Assembler, ExtraCouplingsOfAnyWidthEnterThePatternAndTakeValues) {

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <set>
 
+#include "index_ranges.hpp"
 #include "sparse_cholesky.hpp"
 
 namespace saasgaps {
@@ -43,6 +44,41 @@ TEST(CscPattern, HoldsExactlyTheCoupledPairsAndTheDiagonal) {
   }
   EXPECT_EQ(actual, expected);
   EXPECT_EQ(p.find(0, 1), -1);
+}
+
+/// Columns go to the cores in ranges (index_ranges.hpp) when there are many: a pattern of 30,000
+/// indices in random cliques (some skipping prescribed ones) is still exactly the pairs they couple.
+TEST(CscPattern, ManyColumnsSplitAmongTheCoresGiveTheSamePattern) {
+  constexpr Index n = 30000;
+  std::vector<std::vector<Index>> random_cliques;
+  unsigned state = 12345;
+  const auto next = [&state] { return state = state * 1103515245U + 12345U; };
+  for (int c = 0; c < 20000; ++c) {
+    std::vector<Index> clique;
+    const Index base = static_cast<Index>(next() % n);
+    for (unsigned k = 0, size = 1 + next() % 8; k < size; ++k) {
+      clique.push_back(next() % 10 == 0 ? -1 : std::min<Index>(n - 1, base + static_cast<Index>(next() % 40)));
+    }
+    random_cliques.push_back(clique);
+  }
+  ASSERT_GT(range_count(n), 1U) << "the machine has one core: the split is not exercised";
+  const CscPattern p = CscPattern::from_cliques(n, random_cliques.size(), [&](std::size_t c) {
+    return std::span<const Index>(random_cliques[c]);
+  });
+  std::vector<std::set<Index>> expected(n);
+  for (Index j = 0; j < n; ++j) expected[j].insert(j);
+  for (const auto& c : random_cliques) {
+    for (Index a : c) {
+      for (Index b : c) {
+        if (a >= 0 && b >= 0) expected[std::max(a, b)].insert(std::min(a, b));
+      }
+    }
+  }
+  ASSERT_EQ(p.colptr.size(), static_cast<std::size_t>(n) + 1);
+  for (Index j = 0; j < n; ++j) {
+    const std::vector<Index> column(p.rowind.begin() + p.colptr[j], p.rowind.begin() + p.colptr[j + 1]);
+    ASSERT_EQ(column, std::vector<Index>(expected[j].begin(), expected[j].end())) << "column " << j;
+  }
 }
 
 /// Fills the pattern's values from a dense symmetric matrix.
