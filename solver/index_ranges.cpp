@@ -1,15 +1,24 @@
 #include "index_ranges.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <future>
 #include <thread>
 #include <vector>
 
 namespace saasgaps {
 
+namespace {
+std::atomic<unsigned> thread_budget{std::clamp(std::thread::hardware_concurrency(), 1U, 4U)};
+}  // namespace
+
+unsigned parallel_threads() { return thread_budget.load(); }
+
+void set_parallel_threads(unsigned threads) { thread_budget = std::max(threads, 1U); }
+
 unsigned range_count(std::size_t n, std::size_t smallest) {
-  const unsigned cores = std::clamp(std::thread::hardware_concurrency(), 1U, 4U);
-  return static_cast<unsigned>(std::clamp<std::size_t>(n / std::max<std::size_t>(smallest, 1), 1, cores));
+  return static_cast<unsigned>(
+      std::clamp<std::size_t>(n / std::max<std::size_t>(smallest, 1), 1, parallel_threads()));
 }
 
 void for_each_range(std::size_t n, const std::function<void(std::size_t, std::size_t, unsigned)>& work, std::size_t smallest) {

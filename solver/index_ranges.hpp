@@ -15,8 +15,14 @@ namespace saasgaps {
 void for_each_range(std::size_t n, const std::function<void(std::size_t begin, std::size_t end, unsigned r)>& work,
                     std::size_t smallest = 4096);
 
-/// The ranges for_each_range uses for n indices: at most the cores (at most 4), each of at least
+/// The ranges for_each_range uses for n indices: at most parallel_threads(), each of at least
 /// `smallest` indices, at least 1.
 unsigned range_count(std::size_t n, std::size_t smallest = 4096);
+
+/// Threads one analysis may use for its own parallel passes (these ranges, the result's formatting):
+/// the cores', at most 4, until set. A server that solves several jobs side by side sets 1, so that
+/// its jobs share the cores instead of each claiming all of them.
+unsigned parallel_threads();
+void set_parallel_threads(unsigned threads);
 
 }  // namespace saasgaps

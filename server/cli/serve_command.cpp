@@ -20,6 +20,7 @@
 #include <thread>
 
 #include "cli/file_io.hpp"
+#include "index_ranges.hpp"
 #include "sparse_cholesky.hpp"
 #include "service/event_hub.hpp"
 #include "service/guarded_server.hpp"
@@ -154,8 +155,12 @@ int run_serve(const ServeOptions& options) {
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
 
-  // Jobs solved side by side share the cores: each factorization then runs its BLAS on one thread.
-  if (options.workers > 1) SparseCholesky::set_max_blas_threads(1);
+  // Jobs solved side by side share the cores: each factorization then runs its BLAS on one thread,
+  // and the setup and result passes stay on the job's own thread.
+  if (options.workers > 1) {
+    SparseCholesky::set_max_blas_threads(1);
+    set_parallel_threads(1);
+  }
 
   const bool slurm = options.executor == "slurm";
   if (slurm && options.slurm_worker_url.empty() && (options.host == "0.0.0.0" || options.host == "::")) {

@@ -1,5 +1,7 @@
 #include "io/parallel_items.hpp"
 
+#include "index_ranges.hpp"
+
 #include <algorithm>
 #include <condition_variable>
 #include <exception>
@@ -12,7 +14,6 @@ namespace saasgaps::io {
 
 namespace {
 
-unsigned default_threads() { return std::clamp(std::thread::hardware_concurrency(), 1U, 4U); }
 
 /// The pieces' texts and who does what next; guarded by `mutex`.
 struct Pieces {
@@ -34,7 +35,7 @@ void write_items(JsonWriter& out, std::size_t count, const std::function<void(Js
   const std::size_t per = std::max<std::size_t>(options.items, 1);
   const std::size_t piece_count = (count + per - 1) / per;
   const auto threads =
-      static_cast<unsigned>(std::min<std::size_t>(options.threads > 0 ? options.threads : default_threads(), piece_count));
+      static_cast<unsigned>(std::min<std::size_t>(options.threads > 0 ? options.threads : parallel_threads(), piece_count));
   if (threads <= 1) {
     for (std::size_t i = 0; i < count; ++i) item(out, i);
     return;

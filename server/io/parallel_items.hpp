@@ -18,7 +18,9 @@ namespace saasgaps::io {
 
 struct ItemPieces {
   std::size_t items = 256;  ///< items per piece; arrays of one piece are written on the calling thread
-  unsigned threads = 0;     ///< formatting threads in all, the caller's included; 0: the cores', at most 4
+  /// Formatting threads in all, the caller's included; 0: parallel_threads() (the cores', at most 4,
+  /// unless a server solving several jobs at once set 1).
+  unsigned threads = 0;
   std::size_t ahead = 16;   ///< pieces formatted and not yet written, at most (bounds the memory held)
 };
 

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <set>
+#include <thread>
 
 #include "index_ranges.hpp"
 #include "sparse_cholesky.hpp"
@@ -79,6 +80,20 @@ TEST(CscPattern, ManyColumnsSplitAmongTheCoresGiveTheSamePattern) {
     const std::vector<Index> column(p.rowind.begin() + p.colptr[j], p.rowind.begin() + p.colptr[j + 1]);
     ASSERT_EQ(column, std::vector<Index>(expected[j].begin(), expected[j].end())) << "column " << j;
   }
+}
+
+TEST(IndexRanges, OneParallelThreadKeepsEveryRangeOnTheCallersThread) {
+  // What a server with several workers sets: each job's passes stay on its own thread.
+  const unsigned before = parallel_threads();
+  set_parallel_threads(1);
+  EXPECT_EQ(range_count(1000000), 1U);
+  std::vector<std::thread::id> ran;
+  for_each_range(1000000, [&ran](std::size_t, std::size_t, unsigned) { ran.push_back(std::this_thread::get_id()); });
+  set_parallel_threads(before);
+  EXPECT_EQ(ran, std::vector<std::thread::id>{std::this_thread::get_id()});
+  set_parallel_threads(0);  // never below one
+  EXPECT_EQ(parallel_threads(), 1U);
+  set_parallel_threads(before);
 }
 
 /// Fills the pattern's values from a dense symmetric matrix.
