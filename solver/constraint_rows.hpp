@@ -101,7 +101,9 @@ class ConstraintRows {
   /// it updated to `active`. The factor held is then a function of (values, base, active) alone,
   /// whatever the solves before did: a run resumed from a saved state factorizes K_base afresh and
   /// holds the very factor the uninterrupted run held. Returns true when it factorized; falls back
-  /// to hold() when `active` is too far from `base` or an update loses definiteness.
+  /// to hold() when `active` is too far from `base` or an update loses definiteness. Costs a second
+  /// simplicial factor and a copy of the values in memory; when `values` change from call to call
+  /// every call factorizes K_base and converts it (a conversion hold() spares a set it never updates).
   bool hold_from(SparseCholesky& cholesky, std::span<const double> values, std::span<const std::uint8_t> base,
                  std::span<const std::uint8_t> active);
 
