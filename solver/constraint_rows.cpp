@@ -122,7 +122,7 @@ bool ConstraintRows::hold(SparseCholesky& cholesky, std::span<const double> valu
   const std::vector<std::uint8_t>& from = held_.empty() ? factored_ : held_;
   int distance = 0;
   for (std::size_t r = 0; r < rows_.size() && !from.empty(); ++r) distance += from[r] != active[r];
-  if (!factored_.empty() && cholesky_ == &cholesky && distance <= max_update_rank) {
+  if (!from.empty() && cholesky_ == &cholesky && distance <= max_update_rank) {
     try {
       if (held_.empty()) {
         updatable_.copy(cholesky);
@@ -137,6 +137,45 @@ bool ConstraintRows::hold(SparseCholesky& cholesky, std::span<const double> valu
   }
   factored_.clear();  // a factorization that throws holds nothing
   held_.clear();
+  factor(cholesky, values, active);
+  cholesky_ = &cholesky;
+  factored_.assign(active.begin(), active.end());
+  return true;
+}
+
+bool ConstraintRows::hold_from(SparseCholesky& cholesky, std::span<const double> values,
+                               std::span<const std::uint8_t> base, std::span<const std::uint8_t> active) {
+  assert(base.size() == rows_.size() && active.size() == rows_.size());
+  int distance = 0;
+  for (std::size_t r = 0; r < rows_.size(); ++r) distance += base[r] != active[r];
+  if (distance > max_update_rank) return hold(cholesky, values, active);
+  bool factorized = false;
+  const bool kept = !base_.empty() && std::equal(base.begin(), base.end(), base_.begin(), base_.end()) &&
+                    std::equal(values.begin(), values.end(), base_values_.begin(), base_values_.end());
+  if (!kept) {
+    base_.clear();  // a factorization that throws keeps nothing
+    factored_.clear();
+    held_.clear();
+    factor(cholesky, values, base);
+    cholesky_ = &cholesky;
+    factored_.assign(base.begin(), base.end());
+    factorized = true;
+    base_factor_.copy(cholesky);
+    base_.assign(base.begin(), base.end());
+    base_values_.assign(values.begin(), values.end());
+  }
+  try {
+    // The supernodal factor may hold another set now: only the simplicial copy is used from here.
+    updatable_.copy(base_factor_);
+    held_.assign(base.begin(), base.end());
+    update(active);
+    held_.assign(active.begin(), active.end());
+    cholesky_ = &cholesky;
+    return factorized;
+  } catch (const NotPositiveDefinite&) {
+    held_.clear();  // a downdate lost definiteness to round-off: factorize K_active afresh
+  }
+  factored_.clear();
   factor(cholesky, values, active);
   cholesky_ = &cholesky;
   factored_.assign(active.begin(), active.end());

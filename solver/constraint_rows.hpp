@@ -95,6 +95,18 @@ class ConstraintRows {
   /// when it factorized. Throws NotPositiveDefinite when K_A is singular.
   bool hold(SparseCholesky& cholesky, std::span<const double> values, std::span<const std::uint8_t> active);
 
+  /// hold() for the first set of a solve that starts from a known set `base` (within max_update_rank
+  /// rows of `active`): K_base is factorized and kept as a simplicial factor across solves while
+  /// `values` and `base` stay the same (compared bit for bit), and each call starts from a copy of
+  /// it updated to `active`. The factor held is then a function of (values, base, active) alone,
+  /// whatever the solves before did: a run resumed from a saved state factorizes K_base afresh and
+  /// holds the very factor the uninterrupted run held. Returns true when it factorized; falls back
+  /// to hold() when `active` is too far from `base` or an update loses definiteness. Costs a second
+  /// simplicial factor and a copy of the values in memory; when `values` change from call to call
+  /// every call factorizes K_base and converts it (a conversion hold() spares a set it never updates).
+  bool hold_from(SparseCholesky& cholesky, std::span<const double> values, std::span<const std::uint8_t> base,
+                 std::span<const std::uint8_t> active);
+
   /// Equilibrium refinement of a settled set. K_A is stiffer than K by the penalty, so the round-off
   /// of a solve with it, about eps rho |u|, is an out-of-balance force rho / k_r times that of a
   /// solve with K (1e-8 of the load on the report's problem 3, enough to show in the support
@@ -148,6 +160,10 @@ class ConstraintRows {
   std::vector<std::uint8_t> factored_, held_;
   UpdatableFactor updatable_;
   UpdateColumns columns_;
+  // hold_from's factor of K_base (base_: its set, empty when none; base_values_: the K it is of).
+  UpdatableFactor base_factor_;
+  std::vector<std::uint8_t> base_;
+  std::vector<double> base_values_;
 };
 
 }  // namespace saasgaps

@@ -85,8 +85,9 @@ FrictionReport FrictionalContact::solve(SparseCholesky& cholesky, std::span<cons
   std::vector<std::uint8_t> points(n, open);
   std::vector<std::int8_t> direction(n, 0);
   std::vector<double> force(2 * n, 0.0);
-  if (state.state.size() == n && state.normal_force.size() == n && state.tangential_force.size() == n &&
-      state.direction.size() == n) {
+  const bool warm = state.state.size() == n && state.normal_force.size() == n &&
+                    state.tangential_force.size() == n && state.direction.size() == n;
+  if (warm) {
     points = state.state;
     direction = state.direction;
     for (std::size_t i = 0; i < n; ++i) {
@@ -191,16 +192,44 @@ FrictionReport FrictionalContact::solve(SparseCholesky& cholesky, std::span<cons
       }
     }
   };
-  // A set that will change whatever the last digits: a point violates it by a thousand times the
-  // multipliers' residual. Its remaining iterations would be wasted: on to the next set.
+  // A set that will change whatever the last digits: a point violates it by a hundred times the
+  // error of this iterate. Its remaining iterations would be wasted: on to the next set. The error
+  // (length): the equality rows' residual and how far the slip loads will move with the normal
+  // forces just updated. Not the multipliers' residual, which also counts the slip loads' last
+  // move: at a point that has just started to slip that is its jump from the sticking force, a
+  // change this solve has taken in whole (counted, it would cost every set a second solve).
   bool early = false;
-  const ConstraintRows::Decided decided = [&](double residual) {
+  const ConstraintRows::Decided decided = [&](double) {
     double scale = length;
     for (double x : u) scale = std::max(scale, std::abs(x));
+    double residual = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (points[i] == open || !usable(i)) continue;
+      const std::size_t t = tangential_row(i);
+      residual = std::max(residual, std::abs(rows_.value(normal_row(i), u)));
+      if (points[i] == stick) residual = std::max(residual, std::abs(rows_.value(t, u)));
+      if (points[i] == slip) {
+        const double load = -mu_[i] * force[normal_row(i)] * direction[i];
+        residual = std::max(residual, std::abs(load - force[t]) / rows_.stiffness(t));
+      }
+    }
     step(std::max(10.0 * residual, ConstraintRows::round_off * scale));
-    early = worst_violation > 1.0e3 * std::max(residual, ConstraintRows::round_off * scale);
+    early = worst_violation > 1.0e2 * std::max(residual, ConstraintRows::round_off * scale);
     return early;
   };
+  // A warm start's first set is held from the set where every touching point sticks (base): its
+  // factor is kept from one solve to the next while K and the touching points stay the same, so an
+  // increment that only moves the stick-slip boundary factorizes nothing (a downdate by the
+  // slipping points' rows instead). The base is a function of the state alone, so that a resumed
+  // run holds the same factor as the uninterrupted one.
+  std::vector<std::uint8_t> base;
+  if (warm) {
+    base.assign(2 * n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      base[normal_row(i)] = points[i] != open;
+      base[tangential_row(i)] = points[i] != open && mu_[i] > 0.0;
+    }
+  }
   for (int iteration = 1;; ++iteration) {
     seen.push_back(key_of(points, direction));
     int slipping = 0;
@@ -210,7 +239,9 @@ FrictionReport FrictionalContact::solve(SparseCholesky& cholesky, std::span<cons
       slipping += points[i] == slip && mu_[i] > 0.0;
     }
     try {
-      report.factorizations += rows_.hold(cholesky, values, active) ? 1 : 0;
+      const bool factorized =
+          iteration == 1 && warm ? rows_.hold_from(cholesky, values, base, active) : rows_.hold(cholesky, values, active);
+      report.factorizations += factorized ? 1 : 0;
     } catch (const NotPositiveDefinite&) {
       if (slipping == 0) throw;
       std::ostringstream text;
@@ -233,8 +264,9 @@ FrictionReport FrictionalContact::solve(SparseCholesky& cholesky, std::span<cons
            << " slipping, mu times the coupling of normal and tangential compliance may exceed 1)";
       throw SolverError(text.str());
     }
-    // Noise level of the rows: what the multiplier iterations could not remove.
-    step(std::max(10.0 * worst, ConstraintRows::round_off * scale));
+    // Noise level of the rows: what the multiplier iterations could not remove. (Stopped early, the
+    // set's change is the one `decided` found.)
+    if (!early) step(std::max(10.0 * worst, ConstraintRows::round_off * scale));
     if (changes == 0) {
       // K u = f + C^T lambda to the round-off of K, the slip forces as given loads.
       std::vector<std::uint8_t> slip_rows(2 * n, 0);

@@ -27,8 +27,10 @@
 ///   stick -> slip, s = -sign(lambda_t)            where |lambda_t| - mu lambda_n > tol k_t,
 ///   slip  -> stick                                where s v < -tol (it moves against its slip),
 /// until nothing changes; a set seen before changes only its worst point. A set's multiplier
-/// iterations stop early once a point violates it by 1000 times their residual (only the last set
-/// needs round-off). mu = 0 is exactly
+/// iterations stop early once a point violates it by 100 times their residual (the forces' error in
+/// length units is about that residual; only the last set needs round-off). A warm start's first set
+/// is held from the factor of "every touching point sticks", kept across solves while K and the
+/// touching points are unchanged (ConstraintRows::hold_from). mu = 0 is exactly
 /// ExactContact's algorithm (no tangential row is ever active, every slip force is zero).
 
 #include <cstdint>

@@ -6,6 +6,7 @@
 #include "thread_environment.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <cassert>
 #include <stdexcept>
 #include <string>
@@ -51,6 +52,41 @@ void UpdatableFactor::copy(const SparseCholesky& factored) {
   const auto* perm = static_cast<const Index*>(m.L->Perm);
   m.inverse.resize(static_cast<std::size_t>(n));
   for (Index k = 0; k < n; ++k) m.inverse[perm[k]] = k;
+}
+
+void UpdatableFactor::copy(const UpdatableFactor& other) {
+  assert(other.impl_->L != nullptr && "copy of an UpdatableFactor without a factor");
+  Impl& m = *impl_;
+  const cholmod_factor& from = *other.impl_->L;
+  cholmod_factor* to = m.L;
+  // Into the arrays already there when they have the sizes (the usual case: a copy per solve of a
+  // factor whose updates added no entries); allocating afresh costs page faults on every page, about
+  // as much again as the copy.
+  if (to != nullptr && !to->is_super && !from.is_super && to->n == from.n && to->nzmax == from.nzmax &&
+      to->xtype == from.xtype && to->is_ll == from.is_ll) {
+    const std::size_t n = from.n;
+    std::memcpy(to->Perm, from.Perm, n * sizeof(Index));
+    std::memcpy(to->ColCount, from.ColCount, n * sizeof(Index));
+    std::memcpy(to->p, from.p, (n + 1) * sizeof(Index));
+    std::memcpy(to->i, from.i, from.nzmax * sizeof(Index));
+    std::memcpy(to->x, from.x, from.nzmax * sizeof(double));
+    std::memcpy(to->nz, from.nz, n * sizeof(Index));
+    std::memcpy(to->next, from.next, (n + 2) * sizeof(Index));
+    std::memcpy(to->prev, from.prev, (n + 2) * sizeof(Index));
+    if (to->IPerm != nullptr) {  // the inverse permutation a solve may have made: of the new Perm
+      auto* inverse = static_cast<Index*>(to->IPerm);
+      const auto* perm = static_cast<const Index*>(to->Perm);
+      for (std::size_t k = 0; k < n; ++k) inverse[perm[k]] = static_cast<Index>(k);
+    }
+    to->minor = from.minor;
+    to->ordering = from.ordering;
+    to->is_monotonic = from.is_monotonic;
+  } else {
+    cholmod_l_free_factor(&m.L, &m.common);
+    m.L = cholmod_l_copy_factor(other.impl_->L, &m.common);
+    if (m.L == nullptr) m.fail("copy_factor");
+  }
+  m.inverse = other.impl_->inverse;
 }
 
 void UpdatableFactor::update(const UpdateColumns& columns, bool add) {

@@ -44,6 +44,9 @@ class UpdatableFactor {
 
   /// Copies the last factorization of `factored` (which must have one) as simplicial LDL'.
   void copy(const SparseCholesky& factored);
+  /// Copies another UpdatableFactor's factor as it stands (which must have one): a copy of the
+  /// simplicial arrays, far cheaper than the conversion copy(SparseCholesky) makes.
+  void copy(const UpdatableFactor& other);
 
   /// L D L' + W W' (add) or L D L' - W W' (downdate). Throws NotPositiveDefinite when a downdate
   /// loses definiteness (then the factor must be copied afresh).

@@ -163,15 +163,20 @@ TEST(FrictionalContact, PushedBlockRisesToMuNThenSlipsEverywhereAndUnloadingShow
   const Blocks b = blocks(8, 2, false);
   const std::vector<Increment> run_ = run(b, mu, there_and_back(20, 20));
   const std::size_t points = b.pairs.pairs.size();
-  // The cost (docs/contact.md, "Friction"): one factorization per increment; 1 to 3 solves when
-  // every point sticks or every point slips from the start, at most 15 (3 active sets) otherwise.
+  // The cost (docs/contact.md, "Friction"): one factorization in the press and one in the first
+  // push (the factor of "every touching point sticks", kept from then on while the same points
+  // touch); 1 to 3 solves when every point sticks or every point slips from the start, at most 15
+  // (3 active sets) otherwise.
+  int factorizations = 0;
   for (const Increment& inc : run_) {
-    EXPECT_EQ(inc.report.factorizations, 1) << "push " << inc.push;
+    EXPECT_LE(inc.report.factorizations, 1) << "push " << inc.push;
+    factorizations += inc.report.factorizations;
     EXPECT_LE(inc.report.active_set_iterations, 3) << "push " << inc.push;
     const bool uniform = inc.report.active_set_iterations == 1 &&
                          (inc.report.sticking == static_cast<int>(points) || inc.report.slipping == static_cast<int>(points));
     EXPECT_LE(inc.report.multiplier_iterations, uniform ? 3 : 15) << "push " << inc.push;
   }
+  EXPECT_EQ(factorizations, 2);
 
   // Pressed: everything sticks, the normal force is N, no shear.
   EXPECT_NEAR(run_[0].normal, press, 1e-9 * press);
@@ -386,8 +391,10 @@ TEST(FrictionalContact, CattaneoMindlinStickZoneHalfWidthWithinOneElementPlusFiv
       EXPECT_NEAR(c_measured / a, c_theory / a, spacing / a + 0.05 * c_theory / a)
           << "increment " << k << " Q / (mu P) = " << Q / (mu * Pk) << " side " << side;
     }
-    // The cost (docs/contact.md, "Friction"): one factorization per increment, a few active sets.
-    EXPECT_EQ(inc.report.factorizations, 1) << "increment " << k;
+    // The cost (docs/contact.md, "Friction"): a factorization in the press and in the first shear
+    // increment, none after (the same points touch: the factor of all of them sticking is kept),
+    // a few active sets.
+    EXPECT_EQ(inc.report.factorizations, k <= 1 ? 1 : 0) << "increment " << k;
     EXPECT_LE(inc.report.active_set_iterations, 5) << "increment " << k;
     EXPECT_LE(inc.report.multiplier_iterations, 10) << "increment " << k;
   }
