@@ -125,7 +125,7 @@ bool ConstraintRows::hold(SparseCholesky& cholesky, std::span<const double> valu
   if (!factored_.empty() && cholesky_ == &cholesky && distance <= max_update_rank) {
     try {
       if (held_.empty()) {
-        updatable_.copy(cholesky);
+        updatable_.convert(cholesky);
         held_ = factored_;
       }
       update(active);

@@ -13,7 +13,7 @@
 ///   K_A u = f + p(lambda) + C_A^T (lambda - rho g0),     lambda_r <- lambda_r - rho_r g_r(u),
 /// each iteration one pair of triangular solves. After each update K u = f + p + C_A^T lambda holds
 /// exactly; g_A is what is left. A change of A by at most max_update_rank rows is a rank-k update
-/// and downdate of a simplicial copy of the factor (updatable_factor.hpp), not a factorization.
+/// and downdate of the factor converted to simplicial form (updatable_factor.hpp), not a factorization.
 
 #include <cstdint>
 #include <functional>
@@ -142,8 +142,9 @@ class ConstraintRows {
   std::vector<Index> diagonal_;   // position of K_jj
   std::vector<double> values_;    // K_A
   std::vector<double> b_;         // right-hand side of K_A u = b
-  // The supernodal factorization holds K_F (F = factored_); small changes from it go to a simplicial
-  // copy by rank-k updates and downdates (held_: the copy's set, empty when there is no copy).
+  // The supernodal factorization holds K_F (F = factored_); small changes from it convert it to
+  // simplicial form in place and go to that by rank-k updates and downdates (held_: the simplicial
+  // factor's set, empty while the supernodal one is in use).
   SparseCholesky* cholesky_ = nullptr;
   std::vector<std::uint8_t> factored_, held_;
   UpdatableFactor updatable_;
