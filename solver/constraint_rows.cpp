@@ -147,15 +147,10 @@ void ConstraintRows::refine_equilibrium(std::span<const double> values, std::spa
                                         std::span<const std::uint8_t> active, std::span<double> force,
                                         std::span<double> u, std::span<const std::uint8_t> loaded) {
   assert(cholesky_ != nullptr && "hold() before refine_equilibrium()");
-  // r = f + C_L^T force - K u - C_A^T rho g_A(u), K symmetric from its upper triangle: the last
-  // term makes the correction a multiplier step as well (K_A (u + du) = f + C_A^T (force - rho g0)).
+  // r = f + C_L^T force - K u, K symmetric from its upper triangle.
   std::copy(rhs.begin(), rhs.end(), b_.begin());
   for (std::size_t r = 0; r < rows_.size(); ++r) {
-    if (active[r]) {
-      add_load(r, force[r] - rows_[r].rho * value(r, u), b_);
-    } else if (!loaded.empty() && loaded[r]) {
-      add_load(r, force[r], b_);
-    }
+    if (active[r] || (!loaded.empty() && loaded[r])) add_load(r, force[r], b_);
   }
   for (Index j = 0; j < pattern_.n; ++j) {
     for (Index k = pattern_.colptr[j]; k < pattern_.colptr[j + 1]; ++k) {
@@ -171,18 +166,12 @@ void ConstraintRows::refine_equilibrium(std::span<const double> values, std::spa
     updatable_.solve(b_, du);
   }
   for (std::size_t j = 0; j < u.size(); ++j) u[j] += du[j];
-  // K (u + du) = f + C_L^T force - C_A^T rho (g_A(u) + C_A du): the new forces, in equilibrium.
   for (std::size_t r = 0; r < rows_.size(); ++r) {
-    if (active[r]) force[r] -= rows_[r].rho * value(r, u);
+    if (!active[r]) continue;
+    double c_du = 0.0;
+    for (const Entry& e : entries(r)) c_du += e.coefficient * du[e.equation];
+    force[r] -= rows_[r].rho * c_du;
   }
-}
-
-double ConstraintRows::residual(std::span<const std::uint8_t> active, std::span<const double> u) const {
-  double worst = 0.0;
-  for (std::size_t r = 0; r < rows_.size(); ++r) {
-    if (active[r]) worst = std::max(worst, std::abs(value(r, u)));
-  }
-  return worst;
 }
 
 double ConstraintRows::scale(double length, std::span<const double> u) {

@@ -95,20 +95,18 @@ class ConstraintRows {
   /// when it factorized. Throws NotPositiveDefinite when K_A is singular.
   bool hold(SparseCholesky& cholesky, std::span<const double> values, std::span<const std::uint8_t> active);
 
-  /// Equilibrium refinement of a settled set, which is also its last multiplier step. K_A is stiffer
-  /// than K by the penalty, so the round-off of a solve with it, about eps rho |u|, is an
-  /// out-of-balance force rho / k_r times that of a solve with K (1e-8 of the load on the report's
-  /// problem 3, enough to show in the support reactions). Corrected once on the held K_A:
-  /// r = f + C_L^T force - K u - C_A^T rho g_A(u) (L = the active rows and the `loaded` ones, whose
-  /// force is a given load such as a slip force), K_A du = r, u += du, force_A -= rho g_A(u); then
-  /// K u = f + C_L^T force holds to the round-off of K alone, and g_A has shrunk as by a multiplier
-  /// iteration (about 1e-4 of what it was). values: K on the pattern.
+  /// Equilibrium refinement of a settled set. K_A is stiffer than K by the penalty, so the round-off
+  /// of a solve with it, about eps rho |u|, is an out-of-balance force rho / k_r times that of a
+  /// solve with K (1e-8 of the load on the report's problem 3, enough to show in the support
+  /// reactions). Corrected once on the held K_A: r = f + C_L^T force - K u (no penalty in it; L = the
+  /// active rows and the `loaded` ones, whose force is a given load such as a slip force),
+  /// K_A du = r, u += du, force_A -= rho C_A du; then K u = f + C_L^T force holds to the round-off
+  /// of K alone. values: K on the pattern. (It cannot double as a multiplier step: the forces would
+  /// then take rho times the round-off of g_A(u), eps rho |u|, which this correction removes.)
   void refine_equilibrium(std::span<const double> values, std::span<const double> rhs,
                           std::span<const std::uint8_t> active, std::span<double> force, std::span<double> u,
                           std::span<const std::uint8_t> loaded = {});
 
-  /// max |g_r(u)| over the rows of `active` (length units).
-  [[nodiscard]] double residual(std::span<const std::uint8_t> active, std::span<const double> u) const;
   /// The length scale residuals are measured against: max(length, max |u|).
   [[nodiscard]] static double scale(double length, std::span<const double> u);
 

@@ -55,10 +55,6 @@ class ExactContact {
   /// Largest constraint residual accepted when the multiplier iterations stagnate before round-off
   /// (ConstraintRows: the penalties, the update rank and the round-off level).
   static constexpr double accepted_residual = 1.0e-8;
-  /// A set that no pair violates, with a residual at most this (of the length scale), is finished by
-  /// its equilibrium refinement, a multiplier step: each gains about four digits (the penalty), so
-  /// the step reaches round-off (ConstraintRows::round_off); when it does not, the iterations go on.
-  static constexpr double settling_residual = 1.0e-8;
 
   ExactContact(const Model& model, const DofMap& dofs, const CscPattern& pattern, ContactPairs pairs);
 
