@@ -125,7 +125,7 @@ bool ConstraintRows::hold(SparseCholesky& cholesky, std::span<const double> valu
   if (!from.empty() && cholesky_ == &cholesky && distance <= max_update_rank) {
     try {
       if (held_.empty()) {
-        updatable_.copy(cholesky);
+        updatable_.convert(cholesky);
         held_ = factored_;
       }
       update(active);
@@ -158,15 +158,17 @@ bool ConstraintRows::hold_from(SparseCholesky& cholesky, std::span<const double>
     held_.clear();
     factor(cholesky, values, base);
     cholesky_ = &cholesky;
-    factored_.assign(base.begin(), base.end());
     factorized = true;
-    base_factor_.copy(cholesky);
+    // Converted in place, the supernodal factor is used up; the kept K_base is a copy in memory of
+    // its own, which later factorizations of `cholesky` cannot overwrite.
+    updatable_.convert(cholesky);
+    base_factor_.copy(updatable_);
     base_.assign(base.begin(), base.end());
     base_values_.assign(values.begin(), values.end());
+  } else {
+    updatable_.copy(base_factor_);
   }
   try {
-    // The supernodal factor may hold another set now: only the simplicial copy is used from here.
-    updatable_.copy(base_factor_);
     held_.assign(base.begin(), base.end());
     update(active);
     held_.assign(active.begin(), active.end());
@@ -175,7 +177,6 @@ bool ConstraintRows::hold_from(SparseCholesky& cholesky, std::span<const double>
   } catch (const NotPositiveDefinite&) {
     held_.clear();  // a downdate lost definiteness to round-off: factorize K_active afresh
   }
-  factored_.clear();
   factor(cholesky, values, active);
   cholesky_ = &cholesky;
   factored_.assign(active.begin(), active.end());
@@ -213,6 +214,12 @@ void ConstraintRows::refine_equilibrium(std::span<const double> values, std::spa
   }
 }
 
+double ConstraintRows::scale(double length, std::span<const double> u) {
+  double scale = length;
+  for (const double x : u) scale = std::max(scale, std::abs(x));
+  return scale;
+}
+
 double ConstraintRows::multipliers(std::span<const double> rhs, std::span<const std::uint8_t> active,
                                    std::span<double> force, std::span<double> u, double length, int& iterations,
                                    const DependentLoad& dependent, const Decided& decided) {
@@ -243,9 +250,7 @@ double ConstraintRows::multipliers(std::span<const double> rhs, std::span<const 
       worst = std::max(worst, std::abs(g));
     }
     if (!std::isfinite(worst)) throw SolverError("the contact solve produced non-finite displacements");
-    double scale = length;
-    for (double x : u) scale = std::max(scale, std::abs(x));
-    if (worst <= round_off * scale) break;
+    if (worst <= round_off * scale(length, u)) break;
     if (decided && decided(worst)) break;
     // Below round-off nothing more can be gained: stop when two steps in a row fail to halve it.
     stalled = worst > 0.5 * previous ? stalled + 1 : 0;

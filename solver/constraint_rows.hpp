@@ -13,7 +13,7 @@
 ///   K_A u = f + p(lambda) + C_A^T (lambda - rho g0),     lambda_r <- lambda_r - rho_r g_r(u),
 /// each iteration one pair of triangular solves. After each update K u = f + p + C_A^T lambda holds
 /// exactly; g_A is what is left. A change of A by at most max_update_rank rows is a rank-k update
-/// and downdate of a simplicial copy of the factor (updatable_factor.hpp), not a factorization.
+/// and downdate of the factor converted to simplicial form (updatable_factor.hpp), not a factorization.
 
 #include <cstdint>
 #include <functional>
@@ -113,10 +113,14 @@ class ConstraintRows {
   /// reactions). Corrected once on the held K_A: r = f + C_L^T force - K u (no penalty in it; L = the
   /// active rows and the `loaded` ones, whose force is a given load such as a slip force),
   /// K_A du = r, u += du, force_A -= rho C_A du; then K u = f + C_L^T force holds to the round-off
-  /// of K alone. values: K on the pattern.
+  /// of K alone. values: K on the pattern. (It cannot double as a multiplier step: the forces would
+  /// then take rho times the round-off of g_A(u), eps rho |u|, which this correction removes.)
   void refine_equilibrium(std::span<const double> values, std::span<const double> rhs,
                           std::span<const std::uint8_t> active, std::span<double> force, std::span<double> u,
                           std::span<const std::uint8_t> loaded = {});
+
+  /// The length scale residuals are measured against: max(length, max |u|).
+  [[nodiscard]] static double scale(double length, std::span<const double> u);
 
   /// After a multiplier iteration, with its residual: true to stop there (an active-set solver that
   /// already knows the set will change, so that more digits of this set's answer would be wasted).
@@ -154,8 +158,9 @@ class ConstraintRows {
   std::vector<Index> diagonal_;   // position of K_jj
   std::vector<double> values_;    // K_A
   std::vector<double> b_;         // right-hand side of K_A u = b
-  // The supernodal factorization holds K_F (F = factored_); small changes from it go to a simplicial
-  // copy by rank-k updates and downdates (held_: the copy's set, empty when there is no copy).
+  // The supernodal factorization holds K_F (F = factored_); small changes from it convert it to
+  // simplicial form in place and go to that by rank-k updates and downdates (held_: the simplicial
+  // factor's set, empty while the supernodal one is in use).
   SparseCholesky* cholesky_ = nullptr;
   std::vector<std::uint8_t> factored_, held_;
   UpdatableFactor updatable_;

@@ -12,7 +12,9 @@
 /// each iteration one pair of triangular solves; the penalty only speeds the multipliers up, the
 /// converged answer has g_A = 0 to round-off whatever rho is. Then
 ///   A <- { i : lambda_i > tol_lambda_i }  U  { i not in A : g_i < -tol_g }
-/// until A repeats; an active set seen before (a cycle) changes only its worst pair. The first A is
+/// until A repeats; an active set seen before (a cycle) changes only its worst pair. Only the set
+/// that settles is solved to round-off: a set that some pair violates by a thousand times a multiplier
+/// step's residual stops there (docs/contact.md, section 3). The first A is
 /// the last solve's, or the pairs whose initial gap is within 1 % of the smallest, or, with an
 /// interference of contact surfaces (some g0 < 0), every pair whose initial gap is at most the
 /// largest interference -min g0 (contact_start).

@@ -21,6 +21,8 @@ namespace saasgaps {
 
 namespace {
 
+std::atomic<std::uint64_t> next_analysis_id{1};
+
 std::atomic<int> max_blas_threads{static_cast<int>(std::max(1U, std::thread::hardware_concurrency()))};
 
 /// Factorizations this big gain from parallel BLAS; smaller ones lose to thread overhead.
@@ -42,6 +44,8 @@ struct SparseCholesky::Impl {
   double ordering_seconds = 0.0;
   double flops = 0.0;         // of one numeric factorization, from the analysis
   double factor_entries = 0.0;
+  const std::uint64_t analysis_id = next_analysis_id++;
+  bool lent = false;  // the values were handed to UpdatableFactor::convert since the last factorization
 
   Impl(const CscPattern& p, std::span<const Index> groups, const OrderingCache* cache, FillOrdering fill)
       : pattern(p) {
@@ -304,6 +308,7 @@ void SparseCholesky::factorize(std::span<const double> values) {
   m.reference.resize(static_cast<size_t>(m.pattern.n));
   for (Index j = 0; j < m.pattern.n; ++j) m.reference[j] = std::abs(values[m.diagonal[j]]);
   configure_solver_threads();  // this thread may not be the one that made the analysis
+  m.lent = false;  // overwritten below either way
   // Parallel BLAS for this factorization only: outside it the workers would spin beside us.
   const BlasThreads threads(m.flops >= parallel_blas_flops ? max_blas_threads.load() : 1);
   Index worst = -1;
@@ -313,6 +318,7 @@ void SparseCholesky::factorize(std::span<const double> values) {
 }
 
 void SparseCholesky::solve(std::span<const double> b, std::span<double> x) {
+  assert(!impl_->lent && "the factor was converted in place to simplicial form: factorize() again first");
   configure_solver_threads();
   cholmod_solve_into(impl_->L, b, x, impl_->solve_work, impl_->common);
 }
@@ -322,6 +328,11 @@ double SparseCholesky::factor_nonzeros() const { return impl_->factor_entries; }
 double SparseCholesky::factor_flops() const { return impl_->flops; }
 const char* SparseCholesky::ordering() const { return impl_->ordering_name; }
 const cholmod_factor_struct* SparseCholesky::factor() const { return impl_->L; }
+cholmod_factor_struct* SparseCholesky::factor_for_conversion() {
+  impl_->lent = true;
+  return impl_->L;
+}
+std::uint64_t SparseCholesky::analysis_id() const { return impl_->analysis_id; }
 bool SparseCholesky::ordering_from_cache() const { return impl_->ordering_cached; }
 bool SparseCholesky::analysis_from_cache() const { return impl_->analysis_cached; }
 double SparseCholesky::ordering_seconds() const { return impl_->ordering_seconds; }

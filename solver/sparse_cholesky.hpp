@@ -4,6 +4,7 @@
 /// per pattern; factorize() only repeats the numeric part in the same factor object, which after
 /// the first call allocates nothing. solve() reuses its workspace too.
 
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -61,7 +62,7 @@ class SparseCholesky {
   /// Throws NotPositiveDefinite naming the failing columns.
   void factorize(std::span<const double> values);
 
-  /// x = A^-1 b with the last factorization.
+  /// x = A^-1 b with the last factorization. Not while the factor is lent (factor_for_conversion).
   void solve(std::span<const double> b, std::span<double> x);
 
   [[nodiscard]] Index size() const;
@@ -74,8 +75,16 @@ class SparseCholesky {
   [[nodiscard]] bool analysis_from_cache() const;
   [[nodiscard]] double ordering_seconds() const;  ///< computing (or loading) the ordering, or the whole analysis
 
-  /// The last factorization, read-only, for UpdatableFactor (updatable_factor.hpp) to copy.
+  /// The last factorization, read-only.
   [[nodiscard]] const cholmod_factor_struct* factor() const;
+  /// The last factorization (supernodal LL'), lent to UpdatableFactor::convert, which overwrites its
+  /// values with the simplicial LDL' form in the same memory instead of copying them. Until the next
+  /// factorize() the values are no longer this factorization's: solve() must not be called. The
+  /// symbolic analysis is untouched, so the next factorize() is supernodal again.
+  [[nodiscard]] cholmod_factor_struct* factor_for_conversion();
+  /// A number no other analysis in this process has: what UpdatableFactor keys the simplicial
+  /// pattern it derives from this analysis by.
+  [[nodiscard]] std::uint64_t analysis_id() const;
 
   /// Most BLAS threads a factorization may use (default: the cores). Factorizations under about
   /// 10 Gflop run on one: below that the threads cost more than they give (measured on 2 cores).

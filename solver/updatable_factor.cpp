@@ -2,6 +2,7 @@
 
 #include <cholmod.h>
 
+#include "cholmod_memory.hpp"
 #include "cholmod_solve.hpp"
 #include "thread_environment.hpp"
 
@@ -15,7 +16,12 @@ namespace saasgaps {
 
 struct UpdatableFactor::Impl {
   cholmod_common common{};
+  // Simplicial LDL': its pattern arrays (p, i, nz, next, prev, Perm, ColCount) are its own; its
+  // values x are the lent supernodal factor's memory after convert(), never freed here, and its own
+  // after copy().
   cholmod_factor* L = nullptr;
+  bool owns_values = false;
+  std::uint64_t analysis = 0;  // SparseCholesky::analysis_id the pattern was derived from
   CholmodSolveWorkspace work;
   std::vector<Index> inverse;  // permuted position of each original row
   std::vector<Index> colptr, rowind;
@@ -29,29 +35,121 @@ struct UpdatableFactor::Impl {
     common.print = 0;
   }
   ~Impl() {
-    cholmod_l_free_factor(&L, &common);
+    release();
     work.release(common);
     cholmod_l_finish(&common);
   }
   void fail(const char* what) const {
     throw std::runtime_error(std::string("CHOLMOD ") + what + " failed (status " + std::to_string(common.status) + ")");
   }
+  void release() {
+    if (L == nullptr) return;
+    if (!owns_values) L->x = nullptr;  // lent, not ours
+    cholmod_l_free_factor(&L, &common);
+    owns_values = false;
+    analysis = 0;
+  }
+
+  /// The packed simplicial pattern of supernodal S: column j of supernode s holds the rows of s from
+  /// j down (its diagonal block's lower triangle and the rows below the block), as
+  /// cholmod_change_factor lays it out; the columns in natural order.
+  void derive_pattern(const cholmod_factor& S, std::uint64_t id) {
+    release();
+    const auto n = static_cast<Index>(S.n);
+    const auto* super = static_cast<const Index*>(S.super);
+    const auto* pi = static_cast<const Index*>(S.pi);
+    const auto* ls = static_cast<const Index*>(S.s);
+    Index entries = 0;
+    for (std::size_t s = 0; s < S.nsuper; ++s) {
+      const Index columns = super[s + 1] - super[s], rows = pi[s + 1] - pi[s];
+      entries += columns * (columns + 1) / 2 + columns * (rows - columns);
+    }
+    L = cholmod_l_allocate_factor(S.n, &common);
+    if (L == nullptr) fail("allocate_factor");
+    const auto allocate = [this](std::size_t count) {
+      void* block = cholmod_l_malloc(count, sizeof(Index), &common);
+      if (block == nullptr) fail("malloc");
+      return static_cast<Index*>(block);
+    };
+    auto* p = allocate(S.n + 1);
+    L->p = p;
+    auto* nz = allocate(S.n);
+    L->nz = nz;
+    auto* next = allocate(S.n + 2);
+    L->next = next;
+    auto* prev = allocate(S.n + 2);
+    L->prev = prev;
+    auto* li = allocate(static_cast<std::size_t>(entries));
+    L->i = li;
+    prefault_cholmod_block(li);  // its pages faulted in at once rather than trapped one by one
+    L->nzmax = static_cast<std::size_t>(entries);
+    L->ordering = S.ordering;
+    std::copy_n(static_cast<const Index*>(S.Perm), n, static_cast<Index*>(L->Perm));
+    std::copy_n(static_cast<const Index*>(S.ColCount), n, static_cast<Index*>(L->ColCount));
+    Index k = 0;
+    for (std::size_t s = 0; s < S.nsuper; ++s) {
+      const Index rows = pi[s + 1] - pi[s];
+      for (Index j = super[s]; j < super[s + 1]; ++j) {
+        p[j] = k;
+        for (Index row = j - super[s]; row < rows; ++row) li[k++] = ls[pi[s] + row];
+        nz[j] = k - p[j];
+      }
+    }
+    p[n] = k;
+    assert(k == entries);
+    // The doubly linked list of columns in natural order (head n + 1, tail n), as CHOLMOD builds it.
+    next[n + 1] = 0;
+    prev[n + 1] = -1;
+    next[n] = -1;
+    prev[n] = n - 1;
+    for (Index j = 0; j < n; ++j) {
+      next[j] = j + 1;
+      prev[j] = j - 1;
+    }
+    prev[0] = n + 1;
+    L->is_monotonic = true;
+    L->is_ll = false;
+    L->is_super = false;
+    analysis = id;
+    inverse.resize(static_cast<std::size_t>(n));
+    for (Index j = 0; j < n; ++j) inverse[static_cast<const Index*>(L->Perm)[j]] = j;
+  }
 };
 
 UpdatableFactor::UpdatableFactor() : impl_(std::make_unique<Impl>()) {}
 UpdatableFactor::~UpdatableFactor() = default;
 
-void UpdatableFactor::copy(const SparseCholesky& factored) {
+void UpdatableFactor::convert(SparseCholesky& factored) {
   Impl& m = *impl_;
-  cholmod_l_free_factor(&m.L, &m.common);
-  m.L = cholmod_l_copy_factor(const_cast<cholmod_factor*>(factored.factor()), &m.common);
-  if (m.L == nullptr) m.fail("copy_factor");
-  // Simplicial LDL', packed and monotonic: the form cholmod_updown works on.
-  if (!cholmod_l_change_factor(CHOLMOD_REAL, false, false, true, true, m.L, &m.common)) m.fail("change_factor");
-  const auto n = static_cast<Index>(m.L->n);
-  const auto* perm = static_cast<const Index*>(m.L->Perm);
-  m.inverse.resize(static_cast<std::size_t>(n));
-  for (Index k = 0; k < n; ++k) m.inverse[perm[k]] = k;
+  const std::uint64_t id = factored.analysis_id();
+  cholmod_factor& S = *factored.factor_for_conversion();
+  assert(S.is_super && S.is_ll && S.xtype == CHOLMOD_REAL && S.minor == S.n && "a successful supernodal LL'");
+  // A factor whose values are its own (a copy) is rebuilt around the lent ones.
+  if (m.L == nullptr || m.analysis != id || m.owns_values) m.derive_pattern(S, id);
+  m.L->x = S.x;
+  m.L->xtype = CHOLMOD_REAL;
+  m.L->dtype = CHOLMOD_DOUBLE;
+  m.L->minor = S.n;
+  // Column by column in order, into the same array: column j's packed start is at most where its
+  // diagonal sits in the supernode (the packed form skips the diagonal blocks' upper triangles), so
+  // every entry moves down or stays, after it was read. The arithmetic of cholmod_change_factor's
+  // LL' -> LDL' conversion.
+  auto* x = static_cast<double*>(S.x);
+  const auto* super = static_cast<const Index*>(S.super);
+  const auto* pi = static_cast<const Index*>(S.pi);
+  const auto* px = static_cast<const Index*>(S.px);
+  Index k = 0;
+  for (std::size_t s = 0; s < S.nsuper; ++s) {
+    const Index rows = pi[s + 1] - pi[s];
+    for (Index jj = 0; jj < super[s + 1] - super[s]; ++jj) {
+      const Index diagonal = px[s] + jj + jj * rows;
+      const double ljj = x[diagonal];
+      assert(ljj > 0.0 && k <= diagonal);
+      x[k++] = ljj * ljj;
+      for (Index q = diagonal + 1; q < px[s] + (jj + 1) * rows; ++q) x[k++] = x[q] / ljj;
+    }
+  }
+  assert(k == static_cast<Index>(m.L->nzmax));
 }
 
 void UpdatableFactor::copy(const UpdatableFactor& other) {
@@ -62,8 +160,8 @@ void UpdatableFactor::copy(const UpdatableFactor& other) {
   // Into the arrays already there when they have the sizes (the usual case: a copy per solve of a
   // factor whose updates added no entries); allocating afresh costs page faults on every page, about
   // as much again as the copy.
-  if (to != nullptr && !to->is_super && !from.is_super && to->n == from.n && to->nzmax == from.nzmax &&
-      to->xtype == from.xtype && to->is_ll == from.is_ll) {
+  if (to != nullptr && m.owns_values && !to->is_super && !from.is_super && to->n == from.n &&
+      to->nzmax == from.nzmax && to->xtype == from.xtype && to->is_ll == from.is_ll) {
     const std::size_t n = from.n;
     std::memcpy(to->Perm, from.Perm, n * sizeof(Index));
     std::memcpy(to->ColCount, from.ColCount, n * sizeof(Index));
@@ -82,10 +180,12 @@ void UpdatableFactor::copy(const UpdatableFactor& other) {
     to->ordering = from.ordering;
     to->is_monotonic = from.is_monotonic;
   } else {
-    cholmod_l_free_factor(&m.L, &m.common);
+    m.release();
     m.L = cholmod_l_copy_factor(other.impl_->L, &m.common);
     if (m.L == nullptr) m.fail("copy_factor");
+    m.owns_values = true;
   }
+  m.analysis = other.impl_->analysis;
   m.inverse = other.impl_->inverse;
 }
 
@@ -119,7 +219,9 @@ void UpdatableFactor::update(const UpdateColumns& columns, bool add) {
     m.pivots.resize(m.L->n);
     for (std::size_t j = 0; j < m.L->n; ++j) m.pivots[j] = pivot(j);
   }
+  [[maybe_unused]] const void* const values_before = m.L->x;
   if (!cholmod_l_updown(add, &W, m.L, &m.common)) m.fail("updown");
+  assert(m.L->x == values_before && "L's pattern holds the update: no column was reallocated");
   if (m.common.status == CHOLMOD_NOT_POSDEF) {
     throw NotPositiveDefinite("a downdate lost positive definiteness", {});
   }

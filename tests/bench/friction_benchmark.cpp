@@ -132,21 +132,24 @@ int main(int argc, char** argv) {
               static_cast<long long>(system.dofs().size()), points, system.cholesky().factor_nonzeros());
   std::printf("%-44s %10.3f s\n", "numeric Cholesky factorization (CHOLMOD)", factorize_s);
   std::printf("%-44s %10.3f s\n", "solve", solve_s);
-  // What a rank-k-updated active set pays instead: the simplicial copy of the factor (once per
-  // base set: ConstraintRows::hold_from keeps it while K and the touching points are unchanged),
-  // the copy of that copy each increment starts from, and the solves on it.
+  // What a rank-k-updated active set pays instead: the factor's conversion to simplicial form in
+  // place (once per base set: ConstraintRows::hold_from keeps a copy of it while K and the touching
+  // points are unchanged; the conversion consumes the factorization, so each run factorizes first),
+  // the copy of the kept factor each increment starts from, and the solves on it.
   UpdatableFactor updatable;
   double copy_s = 1e300, simplicial_s = 1e300;
   for (int r = 0; r < 3; ++r) {
-    copy_s = std::min(copy_s, timed([&] { updatable.copy(system.cholesky()); }));
+    system.cholesky().factorize(baseline);
+    copy_s = std::min(copy_s, timed([&] { updatable.convert(system.cholesky()); }));
     simplicial_s = std::min(simplicial_s, timed([&] { updatable.solve(f0, u); }));
   }
   UpdatableFactor working;
   working.copy(updatable);  // first touch of its memory, not timed
   double recopy_s = 1e300;
   for (int r = 0; r < 3; ++r) recopy_s = std::min(recopy_s, timed([&] { working.copy(updatable); }));
-  std::printf("%-44s %10.3f s\n", "simplicial copy of the factor (for updates)", copy_s);
-  std::printf("%-44s %10.3f s\n", "copy of that copy (each increment)", recopy_s);
+  system.cholesky().factorize(baseline);  // supernodal again for what follows
+  std::printf("%-44s %10.3f s\n", "simplicial conversion of the factor (for updates)", copy_s);
+  std::printf("%-44s %10.3f s\n", "copy of the kept factor (each increment)", recopy_s);
   std::printf("%-44s %10.3f s\n", "simplicial solve", simplicial_s);
 
   // The unsymmetric alternative: UMFPACK's symbolic and numeric LU of the same matrix.
