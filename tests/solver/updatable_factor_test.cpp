@@ -143,5 +143,52 @@ TEST(UpdatableFactor, UpdatesTheConvertedFactorAndTheCholeskyFactorizesSupernoda
   EXPECT_LT(largest_difference(y, z), 1e-12 * *std::max_element(y.begin(), y.end()));
 }
 
+TEST(UpdatableFactor, ACopyOfAConvertedFactorIsItsOwnAndOutlivesTheNextFactorization) {
+  const Grid grid(40, 0.01);
+  const std::vector<double> b = load(grid.n());
+  SparseCholesky cholesky(grid.pattern);
+  cholesky.factorize(grid.values);
+  std::vector<double> expected(b.size()), x(b.size());
+
+  UpdatableFactor converted, kept, working;
+  converted.convert(cholesky);
+  converted.solve(b, expected);  // the simplicial factor's digits, which its copies must keep
+  kept.copy(converted);     // what ConstraintRows::hold_from keeps across solves
+  working.copy(converted);  // memory of its own, then (below) a copy into it
+  // The supernodal factorization's memory, which `converted` lends, is overwritten: the copies are not.
+  std::vector<double> other = grid.values;
+  for (Index j = 0; j < grid.n(); ++j) other[grid.pattern.find(j, j)] += 3.0;
+  cholesky.factorize(other);
+  kept.solve(b, x);
+  EXPECT_EQ(x, expected);
+  UpdateColumns w;
+  w.add(820, 30.0);
+  w.add(821, -30.0);
+  w.end_column();
+  working.update(w, true);
+  working.copy(kept);  // into the arrays it owns: the update is gone, the kept factor unchanged
+  working.solve(b, x);
+  EXPECT_EQ(x, expected);
+  kept.solve(b, x);
+  EXPECT_EQ(x, expected);
+
+  // Converting into a factor that owns its values gives them up for the lent ones.
+  working.convert(cholesky);
+  std::vector<double> stiffer(b.size());
+  working.solve(b, x);
+  cholesky.factorize(other);
+  cholesky.solve(b, stiffer);
+  EXPECT_LT(largest_difference(x, stiffer), 1e-12 * *std::max_element(stiffer.begin(), stiffer.end()));
+
+  // And a copy into a factor whose values are lent never writes the SparseCholesky's memory, which
+  // holds a live factorization again.
+  working.copy(kept);
+  working.solve(b, x);
+  EXPECT_EQ(x, expected);
+  std::vector<double> again(b.size());
+  cholesky.solve(b, again);
+  EXPECT_EQ(again, stiffer);
+}
+
 }  // namespace
 }  // namespace saasgaps
