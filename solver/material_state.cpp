@@ -44,7 +44,7 @@ SolidMaterials::SolidMaterials(const Model& model) : model_(model) {
 
 MaterialState SolidMaterials::initial() const {
   return {std::vector<double>(model_.elements.size(), 1.0),
-          std::vector<DirectionChoice>(model_.elements.size(), all_tension)};
+          std::vector<DirectionChoice>(model_.elements.size(), all_tension), {}, {}};
 }
 
 ElasticConstants SolidMaterials::constants(std::size_t e, DirectionChoice choice) const {

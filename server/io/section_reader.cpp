@@ -325,8 +325,8 @@ void SectionReader::read_gaps(const Obj& root) {
   if (const json* schedule = array_field(g, "tensile_schedule", 1)) {
     for (std::size_t i = 0; i < schedule->size(); ++i) {
       const std::string name = "tensile_schedule[" + std::to_string(i) + "]";
-      if (const auto modulus = number((*schedule)[i], pointer_append(g.at("tensile_schedule"), i), name, positive)) {
-        s.tensile_schedule.push_back(*modulus);
+      if (const auto value = number((*schedule)[i], pointer_append(g.at("tensile_schedule"), i), name, positive)) {
+        s.tensile_schedule.push_back(*value);
       }
     }
   }

@@ -86,7 +86,7 @@ TEST(WorkerProtocol, DeepBodiesAreRefusedAtTheirPointer) {
   // The JSON text of a row or a result is stored and served: it is held to the same limit.
   const std::string deep_text = std::string(100000, '[') + std::string(100000, ']');
   EXPECT_THROW(protocol::decode_iteration(protocol::encode_iteration(1, deep_text, {})), io::NestingTooDeep);
-  EXPECT_THROW(protocol::decode_finish(protocol::encode_finish({JobState::converged, deep_text, {}, {}})),
+  EXPECT_THROW(protocol::decode_finish(protocol::encode_finish({JobState::converged, deep_text, {}, {}, {}})),
                io::NestingTooDeep);
   const std::string at_limit = std::string(64, '[') + std::string(64, ']');
   EXPECT_EQ(protocol::decode_iteration(protocol::encode_iteration(1, at_limit, {})).row, at_limit);

@@ -134,7 +134,9 @@ TEST(Assembler, ManyCliquesSplitAmongTheCoresGetTheirPositions) {
       for (std::size_t a = 0; a <= b; ++a, ++k) {
         const Index expected = eq[a] >= 0 && eq[b] >= 0 ? assembler.pattern().find(eq[a], eq[b]) : -1;
         ASSERT_EQ(positions[k], expected) << "clique " << c;
-        if (eq[a] >= 0 && eq[b] >= 0) ASSERT_GE(positions[k], 0);
+        if (eq[a] >= 0 && eq[b] >= 0) {
+          ASSERT_GE(positions[k], 0);
+        }
       }
     }
   }

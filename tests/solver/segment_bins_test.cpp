@@ -81,7 +81,9 @@ TEST(SegmentBins, LinesFindEverySegmentTheyMeetOnARandomChain) {
         const auto side = [&](const Vec2& y) { return n.x() * (y - x).y() - n.y() * (y - x).x(); };
         crossed = side(segments[s][0]) * side(segments[s][1]) < 0.0;
       }
-      if (crossed) EXPECT_TRUE(std::binary_search(found.begin(), found.end(), s)) << "trial " << trial << ", segment " << s;
+      if (crossed) {
+        EXPECT_TRUE(std::binary_search(found.begin(), found.end(), s)) << "trial " << trial << ", segment " << s;
+      }
     }
   }
 }

@@ -19,16 +19,16 @@ double contact_pressure(double closure) {
 }
 
 double plane_strain_interference_pressure(const RingPair& k, double interference) {
-  const double b2 = k.b * k.b;
-  const double inner = (1.0 + k.nu_in) * k.b * ((1.0 - 2.0 * k.nu_in) * b2 + k.a * k.a) / (k.E_in * (b2 - k.a * k.a));
-  const double outer = (1.0 + k.nu_out) * k.b * ((1.0 - 2.0 * k.nu_out) * b2 + k.c * k.c) / (k.E_out * (k.c * k.c - b2));
+  const double bb = k.b * k.b;
+  const double inner = (1.0 + k.nu_in) * k.b * ((1.0 - 2.0 * k.nu_in) * bb + k.a * k.a) / (k.E_in * (bb - k.a * k.a));
+  const double outer = (1.0 + k.nu_out) * k.b * ((1.0 - 2.0 * k.nu_out) * bb + k.c * k.c) / (k.E_out * (k.c * k.c - bb));
   return interference / (inner + outer);
 }
 
 double plane_stress_interference_pressure(const RingPair& k, double interference) {
-  const double b2 = k.b * k.b;
-  const double inner = k.b * ((1.0 - k.nu_in) * b2 + (1.0 + k.nu_in) * k.a * k.a) / (k.E_in * (b2 - k.a * k.a));
-  const double outer = k.b * ((1.0 - k.nu_out) * b2 + (1.0 + k.nu_out) * k.c * k.c) / (k.E_out * (k.c * k.c - b2));
+  const double bb = k.b * k.b;
+  const double inner = k.b * ((1.0 - k.nu_in) * bb + (1.0 + k.nu_in) * k.a * k.a) / (k.E_in * (bb - k.a * k.a));
+  const double outer = k.b * ((1.0 - k.nu_out) * bb + (1.0 + k.nu_out) * k.c * k.c) / (k.E_out * (k.c * k.c - bb));
   return interference / (inner + outer);
 }
 

@@ -103,7 +103,9 @@ TEST_P(ReactionEquilibrium, ReactionsBalanceTheAppliedLoads) {
     // A temperature change alone: the supports hold the body, and their forces cancel.
     ASSERT_GT(reactions.magnitude, 0.0) << "a restrained thermal expansion needs the supports";
     EXPECT_NEAR(reactions.sum.y(), 0.0, 1e-9 * reactions.magnitude);
-    if (!axisymmetric) EXPECT_NEAR(reactions.sum.x(), 0.0, 1e-9 * reactions.magnitude);
+    if (!axisymmetric) {
+      EXPECT_NEAR(reactions.sum.x(), 0.0, 1e-9 * reactions.magnitude);
+    }
     return;
   }
   const Vec2 balance = reactions.sum + loads.sum;
@@ -114,8 +116,8 @@ TEST_P(ReactionEquilibrium, ReactionsBalanceTheAppliedLoads) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ReactionEquilibrium, ::testing::ValuesIn(runs()),
-                         [](const ::testing::TestParamInfo<ExampleRun>& info) {
-                           std::string name = fs::path(info.param.file).stem().string() + (info.param.exact ? "_method_exact" : "");
+                         [](const ::testing::TestParamInfo<ExampleRun>& run) {
+                           std::string name = fs::path(run.param.file).stem().string() + (run.param.exact ? "_method_exact" : "");
                            std::replace(name.begin(), name.end(), '-', '_');
                            return name;
                          });
