@@ -94,7 +94,9 @@ TEST(ImportedHeatShield, TemperaturesComeFromTheConductionSolve) {
   EXPECT_LT(*high, 3000.0);
   for (std::size_t n = 0; n < T.size(); ++n) {
     // The retainer's bore is held at 2000 degF; it is the only node set at r = 1.7.
-    if (model.nodes[n].r == 1.7) EXPECT_EQ(T[n], 2000.0) << "node " << model.nodes[n].id;
+    if (model.nodes[n].r == 1.7) {
+      EXPECT_EQ(T[n], 2000.0) << "node " << model.nodes[n].id;
+    }
   }
 }
 

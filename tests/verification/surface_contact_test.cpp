@@ -123,7 +123,9 @@ TEST(SurfaceContact, PatchTestThroughSolve) {
     EXPECT_NEAR(force.x(), 0.0, 1e-10 * load);
     const Vec2 reactions = reaction_sum(s.reactions);
     EXPECT_NEAR(reactions.y(), load, 1e-10 * load);
-    if (c.analysis != AnalysisType::axisymmetric) EXPECT_NEAR(reactions.x(), 0.0, 1e-10 * load);
+    if (c.analysis != AnalysisType::axisymmetric) {
+      EXPECT_NEAR(reactions.x(), 0.0, 1e-10 * load);
+    }
   }
 }
 
