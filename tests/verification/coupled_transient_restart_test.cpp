@@ -58,17 +58,7 @@ TEST(CoupledTransientRestart, StoppedAnywhereResumesToTheLastDigit) {
     ASSERT_TRUE(state.position.has_value());
     steps_stopped_in.insert(state.position->step);
 
-    for (const std::string_view codec : testing::state_codecs) {
-      SCOPED_TRACE(codec);
-      const RestartState from = testing::through_codec(codec, state, digest);
-      Recorder again;
-      const Solution resumed = solve_with_heat(model, &again, &from);
-      testing::expect_identical(resumed, uninterrupted);
-      testing::expect_same_thermal(resumed, uninterrupted);
-      testing::expect_same_rows(again.thermal, all.thermal);
-      ASSERT_EQ(again.rows.size(), all.rows.size() - static_cast<std::size_t>(k));
-      for (std::size_t i = 0; i < again.rows.size(); ++i) EXPECT_TRUE(again.rows[i].same_numbers(all.rows[k + i]));
-    }
+    testing::expect_resumes_to_the_last_digit(model, state, digest, uninterrupted, all, k);
   }
   EXPECT_GE(steps_stopped_in.size(), 3u);  // resumed in several load steps, not only the first
 }

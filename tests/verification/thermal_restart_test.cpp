@@ -75,18 +75,7 @@ TEST_P(TransientRestart, StoppedBetweenOutputTimesResumesToTheLastDigit) {
     EXPECT_EQ(state.version, restart_version(with_temperature_steps(model, *uninterrupted.thermal)));
     if (state.position->step > 1) stopped_inside_a_later_step = true;
 
-    for (const std::string_view codec : testing::state_codecs) {
-      SCOPED_TRACE(codec);
-      const RestartState from = testing::through_codec(codec, state, digest);
-      Recorder again;
-      const Solution resumed = solve_with_heat(model, &again, &from);
-      testing::expect_identical(resumed, uninterrupted);
-      testing::expect_same_thermal(resumed, uninterrupted);
-      testing::expect_same_rows(again.thermal, all.thermal);
-      // The resumed run reports only the iterations after k, equal to the uninterrupted run's.
-      ASSERT_EQ(again.rows.size(), all.rows.size() - static_cast<std::size_t>(k));
-      for (std::size_t i = 0; i < again.rows.size(); ++i) EXPECT_TRUE(again.rows[i].same_numbers(all.rows[k + i]));
-    }
+    testing::expect_resumes_to_the_last_digit(model, state, digest, uninterrupted, all, k);
   }
   EXPECT_TRUE(stopped_inside_a_later_step);
 }
