@@ -164,7 +164,7 @@ class ConstraintRows {
   SparseCholesky* cholesky_ = nullptr;
   std::vector<std::uint8_t> factored_, held_;
   UpdatableFactor updatable_;
-  UpdateColumns columns_;
+  SparseColumns columns_;
   // hold_from's factor of K_base (base_: its set, empty when none; base_values_: the K it is of).
   UpdatableFactor base_factor_;
   std::vector<std::uint8_t> base_;

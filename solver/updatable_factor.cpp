@@ -189,7 +189,7 @@ void UpdatableFactor::copy(const UpdatableFactor& other) {
   m.inverse = other.impl_->inverse;
 }
 
-void UpdatableFactor::update(const UpdateColumns& columns, bool add) {
+void UpdatableFactor::update(const SparseColumns& columns, bool add) {
   if (columns.empty()) return;
   Impl& m = *impl_;
   // W with its rows permuted like L (updown wants P W), sorted within each column.

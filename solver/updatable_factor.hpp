@@ -12,30 +12,9 @@
 
 #include "csc_pattern.hpp"
 #include "sparse_cholesky.hpp"
+#include "sparse_columns.hpp"
 
 namespace saasgaps {
-
-/// The columns w of W, each with any number of entries (row, value), rows in the original
-/// (unpermuted) numbering; stored like CSC: column c holds entries start[c] .. start[c + 1] - 1.
-struct UpdateColumns {
-  std::vector<Index> start{0};
-  std::vector<Index> row;
-  std::vector<double> value;
-
-  void clear() {
-    start.assign(1, 0);
-    row.clear();
-    value.clear();
-  }
-  /// Adds an entry to the column being built; end_column() closes it.
-  void add(Index r, double v) {
-    row.push_back(r);
-    value.push_back(v);
-  }
-  void end_column() { start.push_back(static_cast<Index>(row.size())); }
-  [[nodiscard]] std::size_t size() const { return start.size() - 1; }
-  [[nodiscard]] bool empty() const { return size() == 0; }
-};
 
 class UpdatableFactor {
  public:
@@ -58,7 +37,7 @@ class UpdatableFactor {
   /// loses definiteness (then the matrix must be factorized afresh). Every column of W must have its
   /// rows coupled pairwise in the analysed pattern (the rows of a constraint: ConstraintRows), so
   /// that L's pattern holds the updated factor's and nothing is reallocated.
-  void update(const UpdateColumns& columns, bool add);
+  void update(const SparseColumns& columns, bool add);
 
   /// x = (L D L')^-1 b.
   void solve(std::span<const double> b, std::span<double> x);

@@ -12,36 +12,12 @@
 
 #include "sparse_cholesky.hpp"
 #include "updatable_factor.hpp"
+#include "support/laplacian_grid.hpp"
 
 namespace saasgaps {
 namespace {
 
-/// The 5-point Laplacian of a side x side grid plus `shift` on the diagonal: symmetric positive
-/// definite, with supernodes of several columns under nested dissection.
-struct Grid {
-  CscPattern pattern;
-  std::vector<double> values;
-
-  Grid(Index side, double shift) {
-    const Index n = side * side;
-    std::vector<std::vector<Index>> cliques;
-    for (Index y = 0; y < side; ++y) {
-      for (Index x = 0; x < side; ++x) {
-        const Index k = y * side + x;
-        if (x + 1 < side) cliques.push_back({k, k + 1});
-        if (y + 1 < side) cliques.push_back({k, k + side});
-      }
-    }
-    pattern = CscPattern::from_cliques(n, cliques.size(), [&](std::size_t c) { return std::span<const Index>(cliques[c]); });
-    values.assign(static_cast<std::size_t>(pattern.nnz()), 0.0);
-    for (Index j = 0; j < n; ++j) {
-      for (Index p = pattern.colptr[j]; p < pattern.colptr[j + 1]; ++p) {
-        values[p] = pattern.rowind[p] == j ? 4.0 + shift : -1.0;
-      }
-    }
-  }
-  [[nodiscard]] Index n() const { return pattern.n; }
-};
+using testing::Grid;
 
 std::vector<double> load(Index n) {
   std::vector<double> b(static_cast<std::size_t>(n));
@@ -109,7 +85,7 @@ TEST(UpdatableFactor, UpdatesTheConvertedFactorAndTheCholeskyFactorizesSupernoda
   std::vector<double> expected(b.size()), x(b.size());
   reference.solve(b, expected);
 
-  UpdateColumns w;
+  SparseColumns w;
   w.add(i, wi);
   w.add(j, wj);
   w.end_column();
@@ -161,7 +137,7 @@ TEST(UpdatableFactor, ACopyOfAConvertedFactorIsItsOwnAndOutlivesTheNextFactoriza
   cholesky.factorize(other);
   kept.solve(b, x);
   EXPECT_EQ(x, expected);
-  UpdateColumns w;
+  SparseColumns w;
   w.add(820, 30.0);
   w.add(821, -30.0);
   w.end_column();
