@@ -2,6 +2,8 @@
 
 #include <cholmod.h>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <atomic>
 #include <cassert>
@@ -46,6 +48,10 @@ struct SparseCholesky::Impl {
   double factor_entries = 0.0;
   const std::uint64_t analysis_id = next_analysis_id++;
   bool lent = false;  // the values were handed to UpdatableFactor::convert since the last factorization
+  // The elimination tree of the supernodes, for inverse_form; derived on first use (the analysis
+  // never changes): the permuted position of each original row, the supernode of each permuted
+  // column, each supernode's parent (-1 at a root).
+  std::vector<Index> position, supernode_of, parent;
 
   Impl(const CscPattern& p, std::span<const Index> groups, const OrderingCache* cache, FillOrdering fill)
       : pattern(p) {
@@ -321,6 +327,79 @@ void SparseCholesky::solve(std::span<const double> b, std::span<double> x) {
   assert(!impl_->lent && "the factor was converted in place to simplicial form: factorize() again first");
   configure_solver_threads();
   cholmod_solve_into(impl_->L, b, x, impl_->solve_work, impl_->common);
+}
+
+std::vector<double> SparseCholesky::inverse_form(const SparseColumns& columns) {
+  Impl& m = *impl_;
+  assert(!m.lent && "the factor was converted in place to simplicial form: factorize() again first");
+  const cholmod_factor& F = *m.L;
+  assert(F.is_super && F.is_ll && F.xtype == CHOLMOD_REAL);
+  const auto* super = static_cast<const Index*>(F.super);
+  const auto* pi = static_cast<const Index*>(F.pi);
+  const auto* px = static_cast<const Index*>(F.px);
+  const auto* rows = static_cast<const Index*>(F.s);
+  const auto* x = static_cast<const double*>(F.x);
+  const auto n = static_cast<Index>(F.n);
+  const auto supernodes = static_cast<Index>(F.nsuper);
+  if (m.parent.empty()) {
+    const auto* perm = static_cast<const Index*>(F.Perm);
+    m.position.resize(static_cast<std::size_t>(n));
+    m.supernode_of.resize(static_cast<std::size_t>(n));
+    m.parent.assign(static_cast<std::size_t>(supernodes), -1);
+    for (Index k = 0; k < n; ++k) m.position[perm[k]] = k;
+    for (Index s = 0; s < supernodes; ++s) {
+      for (Index j = super[s]; j < super[s + 1]; ++j) m.supernode_of[j] = s;
+    }
+    // A supernode's parent holds its first row below the diagonal block.
+    for (Index s = 0; s < supernodes; ++s) {
+      const Index width = super[s + 1] - super[s];
+      if (pi[s + 1] - pi[s] > width) m.parent[s] = m.supernode_of[rows[pi[s] + width]];
+    }
+  }
+  // The reach: every supernode on a path from a column's row to its root, and where its columns sit
+  // in the compact rows of Z (supernodes in their order, which is topological: a parent comes after
+  // its children).
+  std::vector<Index> offset(static_cast<std::size_t>(supernodes), -1);
+  for (const Index r : columns.row) {
+    for (Index s = m.supernode_of[m.position[r]]; s >= 0 && offset[s] < 0; s = m.parent[s]) offset[s] = 0;
+  }
+  std::vector<Index> reach;
+  Index height = 0;
+  for (Index s = 0; s < supernodes; ++s) {
+    if (offset[s] < 0) continue;
+    reach.push_back(s);
+    offset[s] = height;
+    height += super[s + 1] - super[s];
+  }
+  const auto compact = [&](Index k) {
+    const Index s = m.supernode_of[k];
+    return offset[s] + k - super[s];
+  };
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>;
+  // Z row by row: a supernode's rows below its block take their update as whole rows.
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  using ConstBlock = Eigen::Map<const Matrix, 0, Eigen::OuterStride<>>;
+  const auto width = static_cast<Index>(columns.size());
+  Rows z = Rows::Zero(height, width);
+  for (Index c = 0; c < width; ++c) {
+    for (Index k = columns.start[c]; k < columns.start[c + 1]; ++k) z(compact(m.position[columns.row[k]]), c) += columns.value[k];
+  }
+  // Supernodal forward solve over the reach: the block's columns by its triangle, then its rows
+  // below (which all lie in ancestors, so in the reach) take their update.
+  Rows below;
+  for (const Index s : reach) {
+    const Index cols = super[s + 1] - super[s], height_s = pi[s + 1] - pi[s];
+    const ConstBlock l(x + px[s], height_s, cols, Eigen::OuterStride<>(height_s));
+    auto block = z.middleRows(offset[s], cols);
+    l.topRows(cols).triangularView<Eigen::Lower>().solveInPlace(block);
+    if (height_s == cols) continue;
+    below.noalias() = l.bottomRows(height_s - cols) * block;
+    for (Index i = 0; i < height_s - cols; ++i) z.row(compact(rows[pi[s] + cols + i])) -= below.row(i);
+  }
+  Matrix form = Matrix::Zero(width, width);
+  form.selfadjointView<Eigen::Lower>().rankUpdate(z.transpose());
+  form.triangularView<Eigen::StrictlyUpper>() = form.transpose();
+  return {form.data(), form.data() + form.size()};
 }
 
 Index SparseCholesky::size() const { return impl_->pattern.n; }
