@@ -183,6 +183,82 @@ bool ConstraintRows::hold_from(SparseCholesky& cholesky, std::span<const double>
   return true;
 }
 
+std::span<const std::size_t> ConstraintRows::neighbours(std::size_t r) {
+  if (neighbour_start_.size() != rows_.size() + 1) {
+    // (unknown, row) for every entry, sorted: the rows of each constrained unknown. Then for every
+    // pattern entry (i, j) between two constrained unknowns (column j of the upper triangle holds
+    // its i <= j), rows(i) x rows(j) are neighbours.
+    std::vector<std::pair<Index, std::size_t>> by_unknown;
+    for (std::size_t row = 0; row < rows_.size(); ++row) {
+      for (const Entry& e : entries(row)) by_unknown.emplace_back(e.equation, row);
+    }
+    std::sort(by_unknown.begin(), by_unknown.end());
+    const auto rows_of = [&](Index unknown) {
+      const auto first = std::lower_bound(by_unknown.begin(), by_unknown.end(), std::pair<Index, std::size_t>(unknown, 0));
+      auto last = first;
+      while (last != by_unknown.end() && last->first == unknown) ++last;
+      return std::span<const std::pair<Index, std::size_t>>(first, last);
+    };
+    std::vector<std::pair<std::size_t, std::size_t>> links;
+    for (auto k = by_unknown.begin(); k != by_unknown.end();) {
+      const Index j = k->first;
+      const auto at_j = rows_of(j);
+      k += static_cast<std::ptrdiff_t>(at_j.size());
+      for (Index p = pattern_.colptr[j]; p < pattern_.colptr[j + 1]; ++p) {
+        for (const auto& a : rows_of(pattern_.rowind[p])) {
+          for (const auto& b : at_j) {
+            if (a.second == b.second) continue;
+            links.emplace_back(a.second, b.second);
+            links.emplace_back(b.second, a.second);
+          }
+        }
+      }
+    }
+    std::sort(links.begin(), links.end());
+    links.erase(std::unique(links.begin(), links.end()), links.end());
+    neighbour_start_.assign(rows_.size() + 1, 0);
+    neighbours_.clear();
+    for (const auto& [a, b] : links) {
+      ++neighbour_start_[a + 1];
+      neighbours_.push_back(b);
+    }
+    for (std::size_t row = 0; row < rows_.size(); ++row) neighbour_start_[row + 1] += neighbour_start_[row];
+  }
+  return std::span<const std::size_t>(neighbours_).subspan(neighbour_start_[r], neighbour_start_[r + 1] - neighbour_start_[r]);
+}
+
+bool ConstraintRows::factorized(std::span<const std::uint8_t> active) const {
+  return cholesky_ != nullptr && held_.empty() &&
+         std::equal(active.begin(), active.end(), factored_.begin(), factored_.end());
+}
+
+bool ConstraintRows::condense(std::span<const std::size_t> window, std::span<const std::uint8_t> active,
+                              std::span<const double> force, std::span<const double> u, Eigen::MatrixXd& s,
+                              Eigen::VectorXd& q) {
+  assert(factorized(active) && "condense() works on the supernodal factorization of the active set");
+  const auto w = static_cast<Eigen::Index>(window.size());
+  columns_.clear();
+  for (const std::size_t r : window) {
+    for (const Entry& e : entries(r)) columns_.add(e.equation, e.coefficient);
+    columns_.end_column();
+  }
+  const std::vector<double> form = cholesky_->inverse_form(columns_);
+  const Eigen::Map<const Eigen::MatrixXd> t(form.data(), w, w);
+  Eigen::VectorXd penalty(w), gap(w), y0(w);
+  for (Eigen::Index i = 0; i < w; ++i) {
+    const std::size_t r = window[static_cast<std::size_t>(i)];
+    penalty[i] = active[r] ? rows_[r].rho : 0.0;
+    gap[i] = value(r, u);
+    y0[i] = force[r] + penalty[i] * gap[i];
+  }
+  const Eigen::MatrixXd m = Eigen::MatrixXd::Identity(w, w) - t * penalty.asDiagonal();
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(m);
+  s = lu.solve(t);
+  s = 0.5 * (s + s.transpose()).eval();
+  q = lu.solve(gap - t * y0);
+  return s.allFinite() && q.allFinite();
+}
+
 void ConstraintRows::refine_equilibrium(std::span<const double> values, std::span<const double> rhs,
                                         std::span<const std::uint8_t> active, std::span<double> force,
                                         std::span<double> u, std::span<const std::uint8_t> loaded) {

@@ -20,6 +20,8 @@
 #include <span>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "csc_pattern.hpp"
 #include "dof_map.hpp"
 #include "sparse_cholesky.hpp"
@@ -107,6 +109,28 @@ class ConstraintRows {
   bool hold_from(SparseCholesky& cholesky, std::span<const double> values, std::span<const std::uint8_t> base,
                  std::span<const std::uint8_t> active);
 
+  /// Rows whose unknowns are coupled in K's pattern to some unknown of row r (through a node they
+  /// share or an element both touch): r's neighbours along its surface. Derived on first use, for
+  /// the rows added until then.
+  [[nodiscard]] std::span<const std::size_t> neighbours(std::size_t r);
+
+  /// True when the factorization held is the supernodal one of K_A for A = active (the last hold()
+  /// factorized it): what condense() works on.
+  [[nodiscard]] bool factorized(std::span<const std::uint8_t> active) const;
+
+  /// The rows of `window` condensed onto their multipliers, every other row held as it stands:
+  ///   g_W = q + S lambda_W   (lengths),   S = C_W K_O^-1 C_W',
+  /// K_O = K plus the penalties of the active rows outside the window, whose forces stay as they
+  /// are. Needs factorized(active), and u and force as a multiplier step on that factorization left
+  /// them. From T = C_W K_A^-1 C_W' (SparseCholesky::inverse_form), P = diag(rho_r) over the window's
+  /// active rows (0 on the others) and the forces y0 = force + P g(u) that u was solved with:
+  ///   g_W = g(u) + T (y - y0),   lambda_W = y - P g_W   =>   S = (I - T P)^-1 T,  q = (I - T P)^-1 (g(u) - T y0)
+  /// (S = (T^-1 - P)^-1: symmetric). Exact for the window's rows up to the penalty's 1/penalty_factor
+  /// on the rows outside, which is what a guess of the next active set needs. Returns false when S
+  /// or q is not finite.
+  bool condense(std::span<const std::size_t> window, std::span<const std::uint8_t> active,
+                std::span<const double> force, std::span<const double> u, Eigen::MatrixXd& s, Eigen::VectorXd& q);
+
   /// Equilibrium refinement of a settled set. K_A is stiffer than K by the penalty, so the round-off
   /// of a solve with it, about eps rho |u|, is an out-of-balance force rho / k_r times that of a
   /// solve with K (1e-8 of the load on the report's problem 3, enough to show in the support
@@ -165,6 +189,8 @@ class ConstraintRows {
   std::vector<std::uint8_t> factored_, held_;
   UpdatableFactor updatable_;
   SparseColumns columns_;
+  // neighbours(): row r's are neighbours_[neighbour_start_[r] .. neighbour_start_[r + 1]).
+  std::vector<std::size_t> neighbour_start_, neighbours_;
   // hold_from's factor of K_base (base_: its set, empty when none; base_values_: the K it is of).
   UpdatableFactor base_factor_;
   std::vector<std::uint8_t> base_;

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <queue>
 #include <sstream>
 #include <string_view>
 
+#include "condensed_lcp.hpp"
 #include "errors.hpp"
 #include "plural.hpp"
 
@@ -88,15 +90,21 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
   // iterations would be wasted (each one a solve). The set that settles is iterated to round-off as
   // before: no pair violates it.
   bool early = false, stopped_early = false;
+  int first_step = 0;  // report.multiplier_iterations when the current set began
+  const auto set_steps = [&] { return report.multiplier_iterations - first_step; };
   const ConstraintRows::Decided decided = [&](double residual) {
     const double noise = std::max(residual, ConstraintRows::round_off * ConstraintRows::scale(length, u));
     step(10.0 * noise);
-    early = worst_violation > 1.0e3 * noise;
+    // A set that predict() will look ahead from takes a second step first: the first step's forces
+    // are the penalty method's, within 1/penalty_factor, and the condensed problem would inherit
+    // that error in every row outside its window (misjudging rows that press that little).
+    early = worst_violation > 1.0e3 * noise && (set_steps() > 1 || !rows_.factorized(active));
     stopped_early = stopped_early || early;
     return early;
   };
   for (int iteration = 1;; ++iteration) {
     seen.push_back(key_of(active));
+    first_step = report.multiplier_iterations;
     // A factorization, or a rank-k update of the last one for a small change (ConstraintRows::hold).
     if (rows_.hold(cholesky, values, active)) ++report.factorizations;
     report.active_set_iterations = iteration;
@@ -140,8 +148,16 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
            << model_.nodes[pairs_.pairs[worst_pair].node[1]].id;
       throw SolverError(text.str());
     }
+    const auto was_seen = [&](const std::vector<std::uint8_t>& set) {
+      return std::find(seen.begin(), seen.end(), key_of(set)) != seen.end();
+    };
+    if (rows_.factorized(active)) {
+      const double noise = std::max(10.0 * worst, ConstraintRows::round_off * ConstraintRows::scale(length, u));
+      std::vector<std::uint8_t> guess = predict(active, force, u, g, changes, noise);
+      if (!guess.empty() && guess != active && !was_seen(guess)) next = std::move(guess);
+    }
     // A set seen before would cycle: change only the worst pair, which always makes progress.
-    if (std::find(seen.begin(), seen.end(), key_of(next)) != seen.end()) {
+    if (was_seen(next)) {
       next = active;
       next[worst_pair] = active[worst_pair] ? 0 : 1;
     }
@@ -150,6 +166,81 @@ ContactReport ExactContact::solve(SparseCholesky& cholesky, std::span<const doub
       if (!active[i]) force[i] = 0.0;
     }
   }
+}
+
+std::vector<std::uint8_t> ExactContact::predict(const std::vector<std::uint8_t>& active, std::span<const double> force,
+                                                std::span<const double> u, std::span<const double> g, int changes,
+                                                double tolerance) {
+  // The window: the rows that violate the set; the first rings of their neighbours whatever
+  // their margins (beside a released row its load arrives at once); then grown into the
+  // neighbours of smallest margin first, the rows nearest to changing, which is where the boundary
+  // moves (not into rows that press hard); and if the rows have no neighbours (gap pairs of
+  // unconnected parts), the rows of smallest margin.
+  const std::size_t wanted = std::clamp(window_per_change * static_cast<std::size_t>(changes), min_window, max_window);
+  std::vector<std::uint8_t> in_window(rows_.size(), 0);
+  std::vector<std::size_t> window;
+  std::vector<double> margin(rows_.size());
+  for (std::size_t i = 0; i < rows_.size(); ++i) {
+    if (rows_.empty(i)) continue;
+    margin[i] = active[i] ? force[i] / rows_.stiffness(i) : g[i];
+    if (-margin[i] > tolerance && window.size() < max_window) {  // violates the set
+      window.push_back(i);
+      in_window[i] = 1;
+    }
+  }
+  for (std::size_t first = 0, rings = 0; rings < whole_rings; ++rings) {
+    const std::size_t last = window.size();
+    for (std::size_t k = first; k < last; ++k) {
+      for (const std::size_t j : rows_.neighbours(window[k])) {
+        if (in_window[j] || rows_.empty(j) || window.size() >= max_window) continue;
+        in_window[j] = 1;
+        window.push_back(j);
+      }
+    }
+    first = last;
+  }
+  const auto larger_margin = [&](std::size_t a, std::size_t b) { return margin[a] > margin[b]; };
+  std::priority_queue<std::size_t, std::vector<std::size_t>, decltype(larger_margin)> candidates(larger_margin);
+  const auto offer_neighbours = [&](std::size_t r) {
+    for (const std::size_t j : rows_.neighbours(r)) {
+      if (in_window[j] || rows_.empty(j)) continue;
+      in_window[j] = 1;  // offered once
+      candidates.push(j);
+    }
+  };
+  for (std::size_t k = 0, taken = window.size(); k < taken; ++k) offer_neighbours(window[k]);
+  while (window.size() < wanted && !candidates.empty()) {
+    const std::size_t r = candidates.top();
+    candidates.pop();
+    window.push_back(r);
+    offer_neighbours(r);
+  }
+  for (; !candidates.empty(); candidates.pop()) in_window[candidates.top()] = 0;  // offered, not taken
+  if (window.size() < wanted) {
+    std::vector<std::size_t> rest;
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+      if (!in_window[i] && !rows_.empty(i)) rest.push_back(i);
+    }
+    const std::size_t more = std::min(rest.size(), wanted - window.size());
+    std::partial_sort(rest.begin(), rest.begin() + static_cast<std::ptrdiff_t>(more), rest.end(),
+                      [&](std::size_t a, std::size_t b) { return margin[a] < margin[b]; });
+    window.insert(window.end(), rest.begin(), rest.begin() + static_cast<std::ptrdiff_t>(more));
+  }
+  std::sort(window.begin(), window.end());
+  Eigen::MatrixXd s;
+  Eigen::VectorXd q;
+  if (!rows_.condense(window, active, force, u, s, q)) return {};
+  std::vector<std::uint8_t> start(window.size());
+  std::vector<double> stiffness(window.size());
+  for (std::size_t k = 0; k < window.size(); ++k) {
+    start[k] = active[window[k]];
+    stiffness[k] = rows_.stiffness(window[k]);
+  }
+  const LcpSolution lcp = solve_condensed_lcp(s, q, std::move(start), stiffness, tolerance);
+  if (!lcp.settled) return {};
+  std::vector<std::uint8_t> next = active;
+  for (std::size_t k = 0; k < window.size(); ++k) next[window[k]] = lcp.active[k];
+  return next;
 }
 
 void ExactContact::add_nodal_forces(const ContactState& state, std::span<double> forces) const {

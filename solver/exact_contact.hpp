@@ -19,6 +19,13 @@
 /// interference of contact surfaces (some g0 < 0), every pair whose initial gap is at most the
 /// largest interference -min g0 (contact_start).
 ///
+/// Looking ahead: the PDAS step moves the contact boundary only as far as one solve shows it (an
+/// eccentric fit: by 40, 13, 6, 3, 1 and 1 rows, a set each). Whenever the set is held by a fresh
+/// supernodal factorization (the first set of a cold start), the rows near the boundary are
+/// condensed onto their multipliers through forward solves over their reach in the factor
+/// (ConstraintRows::condense) and their small complementarity problem is solved exactly
+/// (condensed_lcp.hpp): its answer is the next set, which the solver then checks as any other.
+///
 /// Equilibrium refinement (ConstraintRows::refine_equilibrium): the settled set's answer is corrected
 /// once so that K u = f + C^T lambda holds to the round-off of K alone, not of K_A.
 
@@ -74,6 +81,20 @@ class ExactContact {
                       ContactState& state, std::span<double> u);
 
  private:
+  /// Rows condensed by predict(): this many per row that violates the set, within these bounds.
+  static constexpr std::size_t window_per_change = 3, min_window = 64, max_window = 256;
+  /// Rings of neighbours round the violating rows that the window takes whatever their margins.
+  static constexpr std::size_t whole_rings = 2;
+
+  /// The next active set as the condensed problem of the rows nearest to changing sees it
+  /// (ConstraintRows::condense, solve_condensed_lcp): the rows that violate `active` and those
+  /// whose margin (lambda_i / k_i when pressing, g_i when open) is smallest, window_per_change
+  /// times as many in all; the other rows keep their state. Needs rows_.factorized(active).
+  /// Empty when the condensed problem has no answer.
+  std::vector<std::uint8_t> predict(const std::vector<std::uint8_t>& active, std::span<const double> force,
+                                    std::span<const double> u, std::span<const double> g, int changes,
+                                    double tolerance);
+
   const Model& model_;
   ContactPairs pairs_;
   ConstraintRows rows_;  // row i: pair i's gap function
