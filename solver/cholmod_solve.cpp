@@ -14,7 +14,7 @@ void CholmodSolveWorkspace::release(cholmod_common& common) {
 }
 
 void cholmod_solve_into(cholmod_factor* L, std::span<const double> b, std::span<double> x,
-                        CholmodSolveWorkspace& work, cholmod_common& common) {
+                        CholmodSolveWorkspace& work, cholmod_common& common, int system) {
   const std::size_t n = L->n;
   assert(b.size() == n && x.size() == n);
   cholmod_dense B{};
@@ -25,7 +25,7 @@ void cholmod_solve_into(cholmod_factor* L, std::span<const double> b, std::span<
   B.x = const_cast<double*>(b.data());
   B.xtype = CHOLMOD_REAL;
   B.dtype = CHOLMOD_DOUBLE;
-  if (!cholmod_l_solve2(CHOLMOD_A, L, &B, nullptr, &work.X, nullptr, &work.Y, &work.E, &common)) {
+  if (!cholmod_l_solve2(system, L, &B, nullptr, &work.X, nullptr, &work.Y, &work.E, &common)) {
     throw std::runtime_error("CHOLMOD solve failed (status " + std::to_string(common.status) + ")");
   }
   const auto* result = static_cast<const double*>(work.X->x);

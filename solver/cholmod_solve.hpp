@@ -18,8 +18,10 @@ struct CholmodSolveWorkspace {
 };
 
 /// Solves with factor L into x; throws std::runtime_error when CHOLMOD fails.
+/// system: CHOLMOD_A (x = A^-1 b), or a part of it (CHOLMOD_L, CHOLMOD_Lt: the triangular solves
+/// alone, in the factor's permuted order).
 void cholmod_solve_into(cholmod_factor* L, std::span<const double> b, std::span<double> x,
-                        CholmodSolveWorkspace& work, cholmod_common& common);
+                        CholmodSolveWorkspace& work, cholmod_common& common, int system = CHOLMOD_A);
 
 /// A cholmod_sparse that views (does not copy) sorted, packed CSC arrays with 64-bit indices:
 /// colptr[ncol + 1], rowind[nnz] and, unless xtype is CHOLMOD_PATTERN, values[nnz]. stype 1: the

@@ -88,6 +88,7 @@ void ConstraintRows::set_penalties(std::span<const double> values) {
   }
   factored_.clear();
   held_.clear();
+  corrected_.clear();
   cholesky_ = nullptr;
 }
 
@@ -99,6 +100,8 @@ void ConstraintRows::factor(SparseCholesky& cholesky, std::span<const double> va
     const Row& row = rows_[r];
     for (std::size_t k = row.first_product; k < row.last_product; ++k) values_[positions_[k]] += row.rho * products_[k];
   }
+  corrected_.clear();
+  converted_ = false;
   cholesky.factorize(values_);
 }
 
@@ -115,9 +118,46 @@ void ConstraintRows::update(std::span<const std::uint8_t> active) {
   }
 }
 
+bool ConstraintRows::correct(std::span<const std::uint8_t> active) {
+  columns_.clear();
+  std::vector<double> penalties;
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    if (factored_[r] == active[r]) continue;
+    for (const Entry& e : entries(r)) columns_.add(e.equation, e.coefficient);
+    columns_.end_column();
+    penalties.push_back(active[r] ? rows_[r].rho : -rows_[r].rho);
+  }
+  correction_.set(*cholesky_, columns_, penalties);
+  if (correction_.loss() > max_correction_loss) return false;
+  corrected_.assign(active.begin(), active.end());
+  return true;
+}
+
+void ConstraintRows::solve_held(std::span<const double> b, std::span<double> x) {
+  if (!corrected_.empty()) {
+    correction_.solve(b, x);
+  } else if (held_.empty()) {
+    cholesky_->solve(b, x);
+  } else {
+    updatable_.solve(b, x);
+  }
+}
+
 bool ConstraintRows::hold(SparseCholesky& cholesky, std::span<const double> values,
                           std::span<const std::uint8_t> active) {
   assert(active.size() == rows_.size());
+  // While the supernodal factorization of K_F is intact, a set near F is solved on it through a
+  // correction (set_correction.hpp): supernodal solves, no conversion, no update.
+  if (cholesky_ == &cholesky && !factored_.empty() && !converted_) {
+    std::size_t from_factored = 0;
+    for (std::size_t r = 0; r < rows_.size(); ++r) from_factored += factored_[r] != active[r];
+    if (from_factored == 0) {
+      corrected_.clear();
+      return false;
+    }
+    if (from_factored <= max_correction_rank && correct(active)) return false;
+  }
+  corrected_.clear();
   // The step's rank: rows that change from the set the factor (or its updated copy) holds.
   const std::vector<std::uint8_t>& from = held_.empty() ? factored_ : held_;
   int distance = 0;
@@ -126,6 +166,7 @@ bool ConstraintRows::hold(SparseCholesky& cholesky, std::span<const double> valu
     try {
       if (held_.empty()) {
         updatable_.convert(cholesky);
+        converted_ = true;
         held_ = factored_;
       }
       update(active);
@@ -162,12 +203,14 @@ bool ConstraintRows::hold_from(SparseCholesky& cholesky, std::span<const double>
     // Converted in place, the supernodal factor is used up; the kept K_base is a copy in memory of
     // its own, which later factorizations of `cholesky` cannot overwrite.
     updatable_.convert(cholesky);
+    converted_ = true;
     base_factor_.copy(updatable_);
     base_.assign(base.begin(), base.end());
     base_values_.assign(values.begin(), values.end());
   } else {
     updatable_.copy(base_factor_);
   }
+  corrected_.clear();
   try {
     held_.assign(base.begin(), base.end());
     update(active);
@@ -228,7 +271,7 @@ std::span<const std::size_t> ConstraintRows::neighbours(std::size_t r) {
 }
 
 bool ConstraintRows::factorized(std::span<const std::uint8_t> active) const {
-  return cholesky_ != nullptr && held_.empty() &&
+  return cholesky_ != nullptr && held_.empty() && corrected_.empty() && !converted_ &&
          std::equal(active.begin(), active.end(), factored_.begin(), factored_.end());
 }
 
@@ -276,11 +319,7 @@ void ConstraintRows::refine_equilibrium(std::span<const double> values, std::spa
     }
   }
   std::vector<double> du(u.size());
-  if (held_.empty()) {
-    cholesky_->solve(b_, du);
-  } else {
-    updatable_.solve(b_, du);
-  }
+  solve_held(b_, du);
   for (std::size_t j = 0; j < u.size(); ++j) u[j] += du[j];
   for (std::size_t r = 0; r < rows_.size(); ++r) {
     if (!active[r]) continue;
@@ -310,11 +349,7 @@ double ConstraintRows::multipliers(std::span<const double> rhs, std::span<const 
       if (active[r]) add_load(r, force[r] - rows_[r].rho * rows_[r].g0, b_);
     }
     const double moved = dependent ? dependent(force, b_) : 0.0;
-    if (held_.empty()) {
-      cholesky_->solve(b_, u);
-    } else {
-      updatable_.solve(b_, u);
-    }
+    solve_held(b_, u);
     ++iterations;
     // lambda <- lambda - rho g(u). With the new lambda, K u = f + p + C_A^T lambda holds exactly: u is
     // in equilibrium with the updated forces, and g_A is what is left to remove.

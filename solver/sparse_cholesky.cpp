@@ -52,6 +52,7 @@ struct SparseCholesky::Impl {
   // never changes): the permuted position of each original row, the supernode of each permuted
   // column, each supernode's parent (-1 at a root).
   std::vector<Index> position, supernode_of, parent;
+  std::vector<double> permuted;  // forward() and backward(): a vector in the factor's order
 
   Impl(const CscPattern& p, std::span<const Index> groups, const OrderingCache* cache, FillOrdering fill)
       : pattern(p) {
@@ -329,7 +330,7 @@ void SparseCholesky::solve(std::span<const double> b, std::span<double> x) {
   cholmod_solve_into(impl_->L, b, x, impl_->solve_work, impl_->common);
 }
 
-std::vector<double> SparseCholesky::inverse_form(const SparseColumns& columns) {
+SparseCholesky::Reach SparseCholesky::forward_columns(const SparseColumns& columns) {
   Impl& m = *impl_;
   assert(!m.lent && "the factor was converted in place to simplicial form: factorize() again first");
   const cholmod_factor& F = *m.L;
@@ -363,43 +364,73 @@ std::vector<double> SparseCholesky::inverse_form(const SparseColumns& columns) {
   for (const Index r : columns.row) {
     for (Index s = m.supernode_of[m.position[r]]; s >= 0 && offset[s] < 0; s = m.parent[s]) offset[s] = 0;
   }
-  std::vector<Index> reach;
-  Index height = 0;
+  Reach reach;
+  std::vector<Index> order;
   for (Index s = 0; s < supernodes; ++s) {
     if (offset[s] < 0) continue;
-    reach.push_back(s);
-    offset[s] = height;
-    height += super[s + 1] - super[s];
+    order.push_back(s);
+    offset[s] = static_cast<Index>(reach.positions.size());
+    for (Index j = super[s]; j < super[s + 1]; ++j) reach.positions.push_back(j);
   }
   const auto compact = [&](Index k) {
     const Index s = m.supernode_of[k];
     return offset[s] + k - super[s];
   };
   using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>;
-  // Z row by row: a supernode's rows below its block take their update as whole rows.
-  using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   using ConstBlock = Eigen::Map<const Matrix, 0, Eigen::OuterStride<>>;
   const auto width = static_cast<Index>(columns.size());
-  Rows z = Rows::Zero(height, width);
+  // Z row by row: a supernode's rows below its block take their update as whole rows.
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  reach.columns = width;
+  reach.z.assign(reach.positions.size() * static_cast<std::size_t>(width), 0.0);
+  Eigen::Map<Rows> z(reach.z.data(), static_cast<Index>(reach.positions.size()), width);
   for (Index c = 0; c < width; ++c) {
     for (Index k = columns.start[c]; k < columns.start[c + 1]; ++k) z(compact(m.position[columns.row[k]]), c) += columns.value[k];
   }
   // Supernodal forward solve over the reach: the block's columns by its triangle, then its rows
-  // below (which all lie in ancestors, so in the reach) take their update.
+  // below (which all lie in ancestors, so in the reach) take their update, as whole rows of Z.
   Rows below;
-  for (const Index s : reach) {
-    const Index cols = super[s + 1] - super[s], height_s = pi[s + 1] - pi[s];
-    const ConstBlock l(x + px[s], height_s, cols, Eigen::OuterStride<>(height_s));
+  for (const Index s : order) {
+    const Index cols = super[s + 1] - super[s], height = pi[s + 1] - pi[s];
+    const ConstBlock l(x + px[s], height, cols, Eigen::OuterStride<>(height));
     auto block = z.middleRows(offset[s], cols);
     l.topRows(cols).triangularView<Eigen::Lower>().solveInPlace(block);
-    if (height_s == cols) continue;
-    below.noalias() = l.bottomRows(height_s - cols) * block;
-    for (Index i = 0; i < height_s - cols; ++i) z.row(compact(rows[pi[s] + cols + i])) -= below.row(i);
+    if (height == cols) continue;
+    below.noalias() = l.bottomRows(height - cols) * block;
+    for (Index i = 0; i < height - cols; ++i) z.row(compact(rows[pi[s] + cols + i])) -= below.row(i);
   }
-  Matrix form = Matrix::Zero(width, width);
+  return reach;
+}
+
+std::vector<double> SparseCholesky::inverse_form(const SparseColumns& columns) {
+  const Reach reach = forward_columns(columns);
+  const auto width = static_cast<Index>(columns.size());
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  const Eigen::Map<const Rows> z(reach.z.data(), static_cast<Index>(reach.positions.size()), width);
+  Eigen::MatrixXd form = Eigen::MatrixXd::Zero(width, width);
   form.selfadjointView<Eigen::Lower>().rankUpdate(z.transpose());
   form.triangularView<Eigen::StrictlyUpper>() = form.transpose();
   return {form.data(), form.data() + form.size()};
+}
+
+void SparseCholesky::forward(std::span<const double> b, std::span<double> y) {
+  Impl& m = *impl_;
+  assert(!m.lent && "the factor was converted in place to simplicial form: factorize() again first");
+  const auto* perm = static_cast<const Index*>(m.L->Perm);
+  m.permuted.resize(b.size());
+  for (std::size_t k = 0; k < b.size(); ++k) m.permuted[k] = b[perm[k]];
+  configure_solver_threads();
+  cholmod_solve_into(m.L, m.permuted, y, m.solve_work, m.common, CHOLMOD_L);
+}
+
+void SparseCholesky::backward(std::span<const double> y, std::span<double> x) {
+  Impl& m = *impl_;
+  assert(!m.lent && "the factor was converted in place to simplicial form: factorize() again first");
+  const auto* perm = static_cast<const Index*>(m.L->Perm);
+  m.permuted.resize(y.size());
+  configure_solver_threads();
+  cholmod_solve_into(m.L, y, m.permuted, m.solve_work, m.common, CHOLMOD_Lt);
+  for (std::size_t k = 0; k < x.size(); ++k) x[perm[k]] = m.permuted[k];
 }
 
 Index SparseCholesky::size() const { return impl_->pattern.n; }

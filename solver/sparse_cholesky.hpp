@@ -66,14 +66,24 @@ class SparseCholesky {
   /// x = A^-1 b with the last factorization. Not while the factor is lent (factor_for_conversion).
   void solve(std::span<const double> b, std::span<double> x);
 
-  /// C A^-1 C' for a few sparse columns C' (rows in the original numbering) with the last
-  /// factorization, as a dense m x m matrix, column-major (m = columns.size()): Z = L^-1 P C' by
-  /// forward solves over the columns' reach in the elimination tree alone (the supernodes on the
-  /// paths from their rows to the root; every other entry of Z is zero), then C A^-1 C' = Z'Z.
-  /// For m columns whose reach holds a share f of L about 2 m f nnz(L) + m^2 |reach| flops, in
-  /// dense blocks: a window of adjacent contact rows (f a few per cent) costs a small fraction of m
-  /// solves. Not while the factor is lent (factor_for_conversion).
+  /// Z = L^-1 P C' for a few sparse columns C' (rows in the original numbering) with the last
+  /// factorization, over the columns' reach in the elimination tree alone (the supernodes on the
+  /// paths from their rows to the root; every other row of Z is zero): supernodal forward solves in
+  /// dense blocks. For m columns whose reach holds a share f of L about 2 m f nnz(L) flops: a window
+  /// of adjacent contact rows (f a few per cent) costs a small fraction of m solves.
+  /// Not while the factor is lent (factor_for_conversion).
+  struct Reach {
+    std::vector<Index> positions;  ///< the permuted position (row of L) of each row of z
+    Index columns = 0;             ///< m
+    std::vector<double> z;         ///< positions.size() x m, row after row
+  };
+  [[nodiscard]] Reach forward_columns(const SparseColumns& columns);
+  /// C A^-1 C' = Z'Z (forward_columns) as a dense m x m matrix, column-major.
   [[nodiscard]] std::vector<double> inverse_form(const SparseColumns& columns);
+  /// The two halves of solve(): y = L^-1 P b, in the factor's (permuted) order; x = P' L^-T y.
+  /// Between them a caller may change y (SetCorrection adds Z y_D on a reach).
+  void forward(std::span<const double> b, std::span<double> y);
+  void backward(std::span<const double> y, std::span<double> x);
   [[nodiscard]] Index size() const;
   [[nodiscard]] double factor_nonzeros() const;  ///< nnz(L)
   [[nodiscard]] double factor_flops() const;     ///< floating-point operations of one factorization

@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
   std::printf("%-52s %10.3f\n", "numeric factorization", factorize_s);
   std::printf("%-52s %10.3f\n", "solve", solve_s);
   std::printf("%-52s %10.3f\n", "contact solve (cold start)", contact_s);
-  std::printf("  active sets %d (factorizations %d, the others rank-k updates), multiplier solves %d, rows in contact %d, "
+  std::printf("  active sets %d (factorizations %d, the others solved on a factorization held: corrected or updated), multiplier solves %d, rows in contact %d, "
               "complementarity %.2e\n",
               report.active_set_iterations, report.factorizations, report.multiplier_iterations, report.pairs_in_contact,
               report.complementarity);
