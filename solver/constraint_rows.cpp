@@ -111,11 +111,15 @@ void ConstraintRows::update(std::span<const std::uint8_t> active) {
     for (std::size_t r = 0; r < rows_.size(); ++r) {
       if (held_[r] == active[r] || static_cast<bool>(active[r]) != add) continue;
       // rho_r c_r c_r^T = w w^T with w = sqrt(rho_r) c_r.
-      for (const Entry& e : entries(r)) columns_.add(e.equation, std::sqrt(rows_[r].rho) * e.coefficient);
-      columns_.end_column();
+      add_column(r, std::sqrt(rows_[r].rho));
     }
     updatable_.update(columns_, add);
   }
+}
+
+void ConstraintRows::add_column(std::size_t r, double scale) {
+  for (const Entry& e : entries(r)) columns_.add(e.equation, scale * e.coefficient);
+  columns_.end_column();
 }
 
 bool ConstraintRows::correct(std::span<const std::uint8_t> active) {
@@ -123,8 +127,7 @@ bool ConstraintRows::correct(std::span<const std::uint8_t> active) {
   std::vector<double> penalties;
   for (std::size_t r = 0; r < rows_.size(); ++r) {
     if (factored_[r] == active[r]) continue;
-    for (const Entry& e : entries(r)) columns_.add(e.equation, e.coefficient);
-    columns_.end_column();
+    add_column(r, 1.0);
     penalties.push_back(active[r] ? rows_[r].rho : -rows_[r].rho);
   }
   correction_.set(*cholesky_, columns_, penalties);
@@ -282,8 +285,7 @@ bool ConstraintRows::condense(std::span<const std::size_t> window, std::span<con
   const auto w = static_cast<Eigen::Index>(window.size());
   columns_.clear();
   for (const std::size_t r : window) {
-    for (const Entry& e : entries(r)) columns_.add(e.equation, e.coefficient);
-    columns_.end_column();
+    add_column(r, 1.0);
   }
   const std::vector<double> form = cholesky_->inverse_form(columns_);
   const Eigen::Map<const Eigen::MatrixXd> t(form.data(), w, w);

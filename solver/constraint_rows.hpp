@@ -182,6 +182,8 @@ class ConstraintRows {
     double rho = 0.0;
   };
   void factor(SparseCholesky& cholesky, std::span<const double> values, std::span<const std::uint8_t> active);
+  /// Appends scale c_r to columns_ as a column.
+  void add_column(std::size_t r, double scale);
   /// Makes correction_ solve K_active on the supernodal factorization of K_factored_; false (and
   /// nothing held) when it would lose more than max_correction_loss.
   bool correct(std::span<const std::uint8_t> active);

@@ -16,9 +16,8 @@ void SetCorrection::set(SparseCholesky& cholesky, const SparseColumns& rows, std
   reach_ = cholesky.forward_columns(rows);
   const auto d = static_cast<Eigen::Index>(rows.size());
   penalty_ = Eigen::Map<const Eigen::VectorXd>(signed_penalties.data(), d);
-  Eigen::MatrixXd t = Eigen::MatrixXd::Zero(d, d);
-  t.selfadjointView<Eigen::Lower>().rankUpdate(z().transpose());
-  t.triangularView<Eigen::StrictlyUpper>() = t.transpose();
+  const std::vector<double> gram = reach_.gram();
+  const Eigen::Map<const Eigen::MatrixXd> t(gram.data(), d, d);
   const Eigen::MatrixXd m = Eigen::MatrixXd::Identity(d, d) + penalty_.asDiagonal() * t;
   // m_rr = 1 + s_r rho_r T_rr is the ratio of row r's flexibility with and without the change:
   // about 1 + rho_r f_r for a row added (f_r its flexibility without the penalty), 1 / (1 + rho_r f_r)

@@ -402,15 +402,17 @@ SparseCholesky::Reach SparseCholesky::forward_columns(const SparseColumns& colum
   return reach;
 }
 
-std::vector<double> SparseCholesky::inverse_form(const SparseColumns& columns) {
-  const Reach reach = forward_columns(columns);
-  const auto width = static_cast<Index>(columns.size());
+std::vector<double> SparseCholesky::Reach::gram() const {
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  const Eigen::Map<const Rows> z(reach.z.data(), static_cast<Index>(reach.positions.size()), width);
-  Eigen::MatrixXd form = Eigen::MatrixXd::Zero(width, width);
-  form.selfadjointView<Eigen::Lower>().rankUpdate(z.transpose());
+  const Eigen::Map<const Rows> rows(z.data(), static_cast<Index>(positions.size()), columns);
+  Eigen::MatrixXd form = Eigen::MatrixXd::Zero(columns, columns);
+  form.selfadjointView<Eigen::Lower>().rankUpdate(rows.transpose());
   form.triangularView<Eigen::StrictlyUpper>() = form.transpose();
   return {form.data(), form.data() + form.size()};
+}
+
+std::vector<double> SparseCholesky::inverse_form(const SparseColumns& columns) {
+  return forward_columns(columns).gram();
 }
 
 void SparseCholesky::forward(std::span<const double> b, std::span<double> y) {

@@ -76,9 +76,11 @@ class SparseCholesky {
     std::vector<Index> positions;  ///< the permuted position (row of L) of each row of z
     Index columns = 0;             ///< m
     std::vector<double> z;         ///< positions.size() x m, row after row
+    /// Z'Z as a dense m x m matrix, column-major.
+    [[nodiscard]] std::vector<double> gram() const;
   };
   [[nodiscard]] Reach forward_columns(const SparseColumns& columns);
-  /// C A^-1 C' = Z'Z (forward_columns) as a dense m x m matrix, column-major.
+  /// C A^-1 C' = forward_columns(columns).gram(): a dense m x m matrix, column-major.
   [[nodiscard]] std::vector<double> inverse_form(const SparseColumns& columns);
   /// The two halves of solve(): y = L^-1 P b, in the factor's (permuted) order; x = P' L^-T y.
   /// Between them a caller may change y (SetCorrection adds Z y_D on a reach).
