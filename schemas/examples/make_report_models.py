@@ -3,7 +3,7 @@
 
     python3 schemas/examples/make_report_models.py   # rewrites schemas/examples/report-*.json
 
-Models A and B are decoded from Fig. 3 and the text (see ../shared/spec/algorithm.md section 5):
+Models A and B are decoded from Fig. 3 and the text (docs/verification.md says how they compare with the report):
 
 Model A: body elements 1-9 are 1 x 1 in squares side by side (R 0..9, Z 0..1); gap elements 11-19,
 0.009 in wide, under them down to wall nodes 25-34; gap elements 10 and 20, 0.009 in wide, at the

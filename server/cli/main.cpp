@@ -1,26 +1,26 @@
 /// saasgaps: thermal stress analysis of plane and axisymmetric bodies in contact across gaps.
 /// Subcommands: solve, validate, import, serve, worker, plot, export-vtu, and the client of a
-/// service: submit, jobs, status, watch, cancel, resume, fetch (cli/client_commands.hpp). Exit codes (cli/usage.hpp,
+/// service: submit, jobs, status, watch, cancel, resume, fetch (cli/client/client_commands.hpp). Exit codes (cli/common/usage.hpp,
 /// docs/cli.md): 0 converged or valid, 3 not converged, 2 bad model, 1 any other failure, 64 a usage
-/// error. Usage errors and exceptions become exit codes in cli/usage.cpp only.
+/// error. Usage errors and exceptions become exit codes in cli/common/usage.cpp only.
 
 #include <CLI/CLI.hpp>
 
 #include <optional>
 
-#include "cli/client_commands.hpp"
-#include "cli/export_vtu_command.hpp"
-#include "cli/import_command.hpp"
-#include "cli/plot_command.hpp"
-#include "cli/read_card_options.hpp"
-#include "cli/serve_command.hpp"
-#include "cli/solve_command.hpp"
-#include "cli/usage.hpp"
-#include "cli/validate_command.hpp"
-#include "cli/worker_command.hpp"
-#include "io/run_limits.hpp"
-#include "plot/canvas.hpp"
-#include "plot/color_map.hpp"
+#include "cli/client/client_commands.hpp"
+#include "cli/commands/export_vtu_command.hpp"
+#include "cli/commands/import_command.hpp"
+#include "cli/commands/plot_command.hpp"
+#include "cli/commands/serve_command.hpp"
+#include "cli/commands/solve_command.hpp"
+#include "cli/commands/validate_command.hpp"
+#include "cli/commands/worker_command.hpp"
+#include "cli/common/read_card_options.hpp"
+#include "cli/common/usage.hpp"
+#include "io/sections/run_limits.hpp"
+#include "plot/draw/canvas.hpp"
+#include "plot/draw/color_map.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"SAASGAPS: thermal stress analysis of plane and axisymmetric bodies in contact across gaps", "saasgaps"};

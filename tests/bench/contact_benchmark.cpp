@@ -18,12 +18,12 @@
 #include <cstdio>
 #include <vector>
 
-#include "analysis.hpp"
-#include "contact_pairs.hpp"
-#include "dof_map.hpp"
-#include "exact_contact.hpp"
-#include "sparse_cholesky.hpp"
-#include "stiffness_system.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "solver/assembly/dof_map.hpp"
+#include "solver/assembly/stiffness_system.hpp"
+#include "solver/contact/exact_contact.hpp"
+#include "solver/gaps/contact_pairs.hpp"
+#include "solver/lac/sparse_cholesky.hpp"
 #include "support/ring_fit.hpp"
 
 #include "stopwatch.hpp"

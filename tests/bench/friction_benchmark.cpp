@@ -20,8 +20,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "frictional_contact.hpp"
-#include "updatable_factor.hpp"
+#include "solver/contact/frictional_contact.hpp"
+#include "solver/lac/updatable_factor.hpp"
 #include "support/friction_models.hpp"
 
 #include "stopwatch.hpp"

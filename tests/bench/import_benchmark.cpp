@@ -17,10 +17,10 @@
 #include <fstream>
 #include <string>
 
-#include "analysis.hpp"
-#include "io/assembly_reader.hpp"
-#include "io/gmsh_mesh.hpp"
-#include "io/model_reader.hpp"
+#include "io/import/assembly_reader.hpp"
+#include "io/mesher/gmsh_mesh.hpp"
+#include "io/model/model_reader.hpp"
+#include "solver/analysis/analysis.hpp"
 
 #include "stopwatch.hpp"
 

@@ -15,17 +15,17 @@
 // Stages (reading only: the restart digest is not part of reading, and is timed apart):
 //   read, tree     parse_document (a tree of the whole text) + read_model: the tree reader the
 //                  model-reader tests take as their reference
-//   read, SAX      the nlohmann SAX pass (io/model_stream.hpp): what parse_model did before
+//   read, SAX      the nlohmann SAX pass (io/model/model_stream.hpp): what parse_model did before
 //                  simdjson, and still does for text simdjson refuses
-//   read, tape     simdjson's tape walked (io/simd_model_reader.hpp): what parse_model did before
+//   read, tape     simdjson's tape walked (io/model/simd_model_reader.hpp): what parse_model did before
 //                  the scan, and still does for text the scan gives up on (the reporting path)
-//   read, scan     parse_model(text): the strict scan in place (io/scan_model_reader.hpp)
+//   read, scan     parse_model(text): the strict scan in place (io/model/scan_model_reader.hpp)
 //   digest         model_text_digest(text): the restart digest, from simdjson's tape, which
 //                  restart states need (parse_model(text, &digest) costs read + digest)
 // The read rates are also printed as ratios of CPU rates, all measured in this one run.
 //   write, tree    the tree writer (kept in tests/io) + dump(2): what `saasgaps solve -o` wrote before
 //   write, stream  io::write_result, compact (the default) and --pretty, through a 64 KiB buffer,
-//                  its nodes and elements formatted on every core (at most 4; io/parallel_items.hpp),
+//                  its nodes and elements formatted on every core (at most 4; io/json/parallel_items.hpp),
 //                  and compact on one thread: the wall time ratio one thread / every core
 //
 // With --plots RESULT.json, the pictures of a stored result instead, each stage reading the file
@@ -57,17 +57,17 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/json_subset.hpp"
-#include "io/json_writer.hpp"
-#include "io/model_reader.hpp"
-#include "io/model_stream.hpp"
-#include "io/simd_model_reader.hpp"
-#include "io/result_arrays.hpp"
-#include "io/result_tree_reference.hpp"
-#include "io/result_writer.hpp"
-#include "io/state_codec.hpp"
-#include "plot/plot_request.hpp"
-#include "service/sqlite.hpp"
+#include "io/json/json_subset.hpp"
+#include "io/json/json_writer.hpp"
+#include "io/model/model_reader.hpp"
+#include "io/model/model_stream.hpp"
+#include "io/model/simd_model_reader.hpp"
+#include "io/restart/state_codec.hpp"
+#include "io/results/result_arrays.hpp"
+#include "io/results/result_tree_reference.hpp"
+#include "io/results/result_writer.hpp"
+#include "plot/pictures/plot_request.hpp"
+#include "service/store/sqlite.hpp"
 
 using namespace saasgaps;
 

@@ -25,10 +25,10 @@
 #include <numeric>
 #include <vector>
 
-#include "dof_map.hpp"
-#include "io/model_reader.hpp"
-#include "cholmod_solve.hpp"
-#include "stiffness_system.hpp"
+#include "io/model/model_reader.hpp"
+#include "solver/assembly/dof_map.hpp"
+#include "solver/assembly/stiffness_system.hpp"
+#include "solver/lac/cholmod_solve.hpp"
 
 using namespace saasgaps;
 

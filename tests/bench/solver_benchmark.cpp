@@ -28,14 +28,14 @@
 #include <string>
 #include <vector>
 
-#include "analysis.hpp"
-#include "cholmod_memory.hpp"
-#include "dof_map.hpp"
-#include "element_data.hpp"
-#include "gap_closure.hpp"
-#include "material_state.hpp"
-#include "sparse_cholesky.hpp"
-#include "stiffness_system.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "solver/analysis/solid_materials.hpp"
+#include "solver/assembly/dof_map.hpp"
+#include "solver/assembly/element_data.hpp"
+#include "solver/assembly/stiffness_system.hpp"
+#include "solver/gaps/gap_closure.hpp"
+#include "solver/lac/cholmod_memory.hpp"
+#include "solver/lac/sparse_cholesky.hpp"
 #include "support/mesh_builder.hpp"
 
 #include "stopwatch.hpp"

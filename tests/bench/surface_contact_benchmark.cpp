@@ -27,12 +27,12 @@
 #include <cstdio>
 #include <vector>
 
-#include "dof_map.hpp"
-#include "exact_contact.hpp"
-#include "mortar_method.hpp"
-#include "material_state.hpp"
-#include "sparse_cholesky.hpp"
-#include "stiffness_system.hpp"
+#include "solver/analysis/solid_materials.hpp"
+#include "solver/assembly/dof_map.hpp"
+#include "solver/assembly/stiffness_system.hpp"
+#include "solver/contact/exact_contact.hpp"
+#include "solver/lac/sparse_cholesky.hpp"
+#include "solver/mortar/mortar_method.hpp"
 #include "support/shrink_fit_rings.hpp"
 
 #include "peak_memory.hpp"

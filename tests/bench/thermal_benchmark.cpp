@@ -28,13 +28,13 @@
 #include <optional>
 #include <vector>
 
-#include "dof_map.hpp"
-#include "material_state.hpp"
-#include "sparse_cholesky.hpp"
-#include "stiffness_system.hpp"
+#include "solver/analysis/solid_materials.hpp"
+#include "solver/assembly/dof_map.hpp"
+#include "solver/assembly/stiffness_system.hpp"
+#include "solver/lac/sparse_cholesky.hpp"
+#include "solver/thermal/thermal_analysis.hpp"
+#include "solver/thermal/thermal_system.hpp"
 #include "support/mesh_builder.hpp"
-#include "thermal_analysis.hpp"
-#include "thermal_system.hpp"
 
 #include "peak_memory.hpp"
 #include "stopwatch.hpp"

@@ -21,14 +21,14 @@
 #include <fstream>
 #include <thread>
 
-#include "analysis.hpp"
-#include "io/history_json.hpp"
-#include "io/model_reader.hpp"
-#include "io/stored_state.hpp"
-#include "service/http_api.hpp"
-#include "service/job_store.hpp"
+#include "io/model/model_reader.hpp"
+#include "io/restart/stored_state.hpp"
+#include "io/results/history_json.hpp"
+#include "service/http/http_api.hpp"
 #include "service/long_job_model.hpp"
-#include "service/worker_protocol.hpp"
+#include "service/store/job_store.hpp"
+#include "service/workers/worker_protocol.hpp"
+#include "solver/analysis/analysis.hpp"
 
 #include "stopwatch.hpp"
 

@@ -1,4 +1,4 @@
-// The progress table (cli/progress_table.hpp) on hand-made rows: the friction columns of a run with
+// The progress table (cli/common/progress_table.hpp) on hand-made rows: the friction columns of a run with
 // friction, nothing new for a frictionless run, the 120-column limit with every column a run can
 // show, and the live line of `saasgaps watch`.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/progress_table.hpp"
+#include "cli/common/progress_table.hpp"
 
 namespace saasgaps::cli {
 namespace {

@@ -1,4 +1,4 @@
-// The saasgaps command line as a user drives it: exit codes of service.md, the iteration table on
+// The saasgaps command line as a user drives it: exit codes of docs/cli.md, the iteration table on
 // stderr, and a run stopped and resumed through --state-out / --resume files.
 #include "command_fixture.hpp"
 
@@ -311,7 +311,7 @@ TEST_F(SolveCommand, TransientHeatRunShowsItsThermalRowsAndResumesMidWayToTheLas
 namespace {
 
 /// The same heating with conducting gaps: each interval's conductances come from the stress step
-/// before it (solver/transient_coupling.hpp), and a resume mid-way recomputes them.
+/// before it (solver/thermal/transient_coupling.hpp), and a resume mid-way recomputes them.
 TEST_F(SolveCommand, TransientHeatRunWithConductingGapsResumesMidWayToTheLastDigit) {
   nlohmann::json document = saasgaps::testing::transient_heating("ring-shrink-fit-plane-strain.json", {.hot = 400.0});
   document["gaps"]["conductance"] = {{"closed", 20.0}, {"gas_conductivity", 0.0005}};

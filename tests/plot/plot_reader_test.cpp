@@ -1,5 +1,5 @@
 // Every plot of every example result, drawn from the tree of the whole document (the reference)
-// and from the typed arrays of the stored-result reader (io/result_arrays.hpp), which `saasgaps
+// and from the typed arrays of the stored-result reader (io/results/result_arrays.hpp), which `saasgaps
 // plot` and the service's plot routes use: the same PNG bytes and the same CSV tables, or the same
 // error. The VTU export likewise against the tree writer it replaced (vtu_tree_reference). Also
 // `saasgaps plot`'s file against the reference.
@@ -15,9 +15,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/result_arrays.hpp"
-#include "io/vtu_writer.hpp"
-#include "plot/plot_request.hpp"
+#include "io/results/result_arrays.hpp"
+#include "io/results/vtu_writer.hpp"
+#include "plot/pictures/plot_request.hpp"
 #include "plot/vtu_tree_reference.hpp"
 #include "support/captured_command.hpp"
 

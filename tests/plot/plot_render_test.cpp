@@ -17,9 +17,9 @@
 #include <sstream>
 #include <string>
 
-#include "io/result_arrays.hpp"
-#include "plot/field.hpp"
-#include "plot/plot_request.hpp"
+#include "io/results/result_arrays.hpp"
+#include "plot/pictures/plot_request.hpp"
+#include "plot/result/field.hpp"
 #include "support/lame_rings.hpp"
 
 namespace saasgaps::plot {

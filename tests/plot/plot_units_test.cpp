@@ -13,17 +13,17 @@
 #include <utility>
 #include <nlohmann/json.hpp>
 
-#include "plot/band_levels.hpp"
-#include "plot/band_raster.hpp"
-#include "plot/color_map.hpp"
-#include "plot/contour_plot.hpp"
-#include "plot/contour_bands.hpp"
-#include "plot/field.hpp"
-#include "plot/nice_scale.hpp"
-#include "plot/number_format.hpp"
-#include "plot/point_locator.hpp"
-#include "plot/plot_request.hpp"
-#include "plot/result_mesh.hpp"
+#include "plot/draw/band_levels.hpp"
+#include "plot/draw/band_raster.hpp"
+#include "plot/draw/color_map.hpp"
+#include "plot/draw/contour_bands.hpp"
+#include "plot/draw/nice_scale.hpp"
+#include "plot/draw/number_format.hpp"
+#include "plot/pictures/contour_plot.hpp"
+#include "plot/pictures/plot_request.hpp"
+#include "plot/result/field.hpp"
+#include "plot/result/point_locator.hpp"
+#include "plot/result/result_mesh.hpp"
 
 namespace saasgaps::plot {
 namespace {
@@ -723,7 +723,6 @@ TEST(SurfaceContactPlot, ClosureAndContactPlotsOfSurfacesOnlyAreDrawnNotRefused)
   EXPECT_NE(render_table(both, request).find("pair,point,x"), std::string::npos);
 }
 
-
 /// Contact pairs with friction, hand-made: pair 1 (block / base, mu 0.25) along z = 1 from r = 0 to
 /// 4: two points stick (shear inside 0.25 p), two slip (shear on +0.25 p and on -0.25 p), the last
 /// is open; pair 2 (cap / rim) is frictionless; pair 3 (pin / hole, mu 0.5) sticks then slips.
@@ -991,7 +990,6 @@ TEST(BandRaster, RasterAndPathContoursAgreeAwayFromTheBandEdges) {
   EXPECT_GT(coloured, 20000U) << "the mesh covers a good part of the picture";
   EXPECT_LT(static_cast<double>(differ), 0.05 * static_cast<double>(coloured)) << differ << " of " << coloured;
 }
-
 
 /// A plane-stress grid of nx x ny unit squares with effective = x + y at each element, plus
 /// `triangles` extra triangular elements along its bottom edge.

@@ -1,9 +1,9 @@
 // The VTU writer as it was before the stored-result reader (issue 23): a tree of the result,
 // each cell read from its JSON. Kept as the reference the typed writer is compared with
-// (plot_reader_test), as tests/io/result_tree_reference.cpp keeps the tree result writer.
+// (plot_reader_test), as tests/io/results/result_tree_reference.cpp keeps the tree result writer.
 #include "plot/vtu_tree_reference.hpp"
 
-#include "io/vtu_writer.hpp"
+#include "io/results/vtu_writer.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -82,7 +82,7 @@ Mesh read_mesh(const json& result) {
   return m;
 }
 
-/// The contact point arrays (io/vtu_writer.hpp names them): every point of every pair of result
+/// The contact point arrays (io/results/vtu_writer.hpp names them): every point of every pair of result
 /// `contact` written onto the node at its (r, z), a side-A node's reference position, found by a
 /// scan of the nodes (the first node there); a node on side A of two pairs keeps the later pair's.
 /// Nodes no point lands on hold 0, state -1 and pair 0.

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/vtu_encoding.hpp"
+#include "io/results/vtu_encoding.hpp"
 
 namespace saasgaps::io::reference {
 

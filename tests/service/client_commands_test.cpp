@@ -1,7 +1,7 @@
 // The command-line client against a real server, as a user types it: `saasgaps submit` then
 // `saasgaps watch` through a whole run, `status`, `jobs` and `fetch`; a model the server refuses;
 // a long job cancelled with `saasgaps cancel` and continued with `saasgaps resume` (new READ card),
-// with the token from SAASGAPS_TOKEN. Exit codes are solve's (cli/client_commands.hpp).
+// with the token from SAASGAPS_TOKEN. Exit codes are solve's (cli/client/client_commands.hpp).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -9,10 +9,10 @@
 #include <sys/wait.h>
 
 #include "service/job_client.hpp"
-#include "support/captured_command.hpp"
 #include "service/long_job_model.hpp"
 #include "service/server_process.hpp"
 #include "service/service_fixture.hpp"
+#include "support/captured_command.hpp"
 #include "support/transient_heating.hpp"
 
 namespace saasgaps::testing {
@@ -21,7 +21,6 @@ namespace {
 using nlohmann::json;
 
 #define EXPECT_CONTAINS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
-
 
 class ClientCommands : public ServiceFixture {
  protected:

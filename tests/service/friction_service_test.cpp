@@ -34,7 +34,7 @@ void run_sql(const std::filesystem::path& file, const std::string& sql, const st
   sqlite3_close(db);
 }
 
-/// A history row of a run with friction, as io/history_json.cpp writes it.
+/// A history row of a run with friction, as io/results/history_json.cpp writes it.
 json friction_row(int iteration) {
   return {{"active_set_iterations", 2}, {"attempt", 1}, {"average_closure", 100.0}, {"bimodulus_changes", 0},
           {"closed_gaps", 0}, {"complementarity", 1e-16}, {"contact_pairs", 5}, {"extrapolated", false},

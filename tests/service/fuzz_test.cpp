@@ -7,8 +7,8 @@
 #include <random>
 
 #include "service/raw_http.hpp"
-#include "support/json_mutation.hpp"
 #include "service/service_fixture.hpp"
+#include "support/json_mutation.hpp"
 
 namespace saasgaps::testing {
 namespace {

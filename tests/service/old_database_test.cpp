@@ -11,14 +11,14 @@
 #include <filesystem>
 #include <thread>
 
-#include "analysis.hpp"
-#include "io/history_json.hpp"
-#include "io/result_writer.hpp"
-#include "io/state_codec.hpp"
-#include "io/stored_state.hpp"
-#include "service/event_hub.hpp"
-#include "service/job_runner.hpp"
-#include "service/job_store.hpp"
+#include "io/restart/state_codec.hpp"
+#include "io/restart/stored_state.hpp"
+#include "io/results/history_json.hpp"
+#include "io/results/result_writer.hpp"
+#include "service/runs/job_runner.hpp"
+#include "service/store/event_hub.hpp"
+#include "service/store/job_store.hpp"
+#include "solver/analysis/analysis.hpp"
 #include "support/examples.hpp"
 
 namespace saasgaps {

@@ -12,10 +12,10 @@
 #include <fstream>
 #include <thread>
 
+#include "io/model/model_reader.hpp"
 #include "service/job_client.hpp"
-#include "io/model_reader.hpp"
-#include "service/job_execution.hpp"
 #include "service/long_job_model.hpp"
+#include "service/runs/job_execution.hpp"
 #include "service/server_process.hpp"
 
 namespace saasgaps::testing {

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model.hpp"
+#include "solver/model/model.hpp"
 
 namespace saasgaps::testing {
 

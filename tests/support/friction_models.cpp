@@ -4,9 +4,9 @@
 #include <cassert>
 #include <cmath>
 
-#include "assembler.hpp"
-#include "material_state.hpp"
-#include "stiffness_system.hpp"
+#include "solver/analysis/solid_materials.hpp"
+#include "solver/assembly/assembler.hpp"
+#include "solver/assembly/stiffness_system.hpp"
 #include "support/mesh_builder.hpp"
 
 namespace saasgaps::testing {

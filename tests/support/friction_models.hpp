@@ -7,11 +7,11 @@
 #include <span>
 #include <vector>
 
-#include "contact_pairs.hpp"
-#include "csc_pattern.hpp"
-#include "dof_map.hpp"
-#include "model.hpp"
-#include "sparse_cholesky.hpp"
+#include "solver/assembly/dof_map.hpp"
+#include "solver/gaps/contact_pairs.hpp"
+#include "solver/lac/csc_pattern.hpp"
+#include "solver/lac/sparse_cholesky.hpp"
+#include "solver/model/model.hpp"
 
 namespace saasgaps::testing {
 

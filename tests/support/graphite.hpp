@@ -2,7 +2,7 @@
 /// The orthotropic graphite of the kernel tests: moduli, Poisson ratios and expansions all
 /// different, so that a law rotated off its axes couples every component.
 
-#include "material.hpp"
+#include "solver/materials/material.hpp"
 
 namespace saasgaps::testing {
 

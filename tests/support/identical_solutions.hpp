@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "solution.hpp"
+#include "solver/state/solution.hpp"
 
 namespace saasgaps::testing {
 

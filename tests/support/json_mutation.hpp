@@ -1,7 +1,7 @@
 #pragma once
 /// Random mutations of JSON documents with a fixed seed, for the fuzz tests: the service's
 /// (tests/service/fuzz_test.cpp) and the model reader's agreement with the tree reader
-/// (tests/io/model_reader_test.cpp).
+/// (tests/io/model/model_reader_test.cpp).
 
 #include <random>
 #include <vector>

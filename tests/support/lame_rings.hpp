@@ -8,8 +8,8 @@
 ///   u_outer(a2) = (1 + nu)/E [(1 - 2 nu) A_o a2 + B_o / a2],  A_o = p a2^2/(b2^2 - a2^2), B_o = A_o b2^2,
 /// (plane strain: u = (1 + nu)/E [(1 - 2 nu) A r + B / r] for sigma_r = A - B/r^2).
 
-#include "model.hpp"
-#include "solution.hpp"
+#include "solver/model/model.hpp"
+#include "solver/state/solution.hpp"
 
 namespace saasgaps::testing::lame_rings {
 

@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include "csc_pattern.hpp"
+#include "solver/lac/csc_pattern.hpp"
 
 namespace saasgaps::testing {
 

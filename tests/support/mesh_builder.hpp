@@ -4,8 +4,8 @@
 #include <functional>
 #include <vector>
 
-#include "model.hpp"
-#include "voigt.hpp"
+#include "solver/base/voigt.hpp"
+#include "solver/model/model.hpp"
 
 namespace saasgaps::testing {
 

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "gap_closure.hpp"
-#include "material_state.hpp"
 #include "mesh_builder.hpp"
-#include "stiffness_system.hpp"
+#include "solver/analysis/solid_materials.hpp"
+#include "solver/assembly/stiffness_system.hpp"
+#include "solver/gaps/gap_closure.hpp"
 
 namespace saasgaps::testing {
 

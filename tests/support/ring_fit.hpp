@@ -5,9 +5,9 @@
 
 #include <functional>
 
-#include "model.hpp"
+#include "solver/base/voigt.hpp"
+#include "solver/model/model.hpp"
 #include "support/lame_rings.hpp"
-#include "voigt.hpp"
 
 namespace saasgaps {
 class StiffnessSystem;

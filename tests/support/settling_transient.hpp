@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "model.hpp"
-#include "thermal_analysis.hpp"
+#include "solver/model/model.hpp"
+#include "solver/thermal/thermal_analysis.hpp"
 
 namespace saasgaps::testing {
 

@@ -22,7 +22,7 @@
 
 #include <array>
 
-#include "model.hpp"
+#include "solver/model/model.hpp"
 
 namespace saasgaps::testing::shrink_fit_rings {
 

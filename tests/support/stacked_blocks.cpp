@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "element_kernel.hpp"
+#include "solver/fe/element_kernel.hpp"
 
 namespace saasgaps::testing {
 

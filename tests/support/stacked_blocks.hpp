@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-#include "model.hpp"
+#include "solver/model/model.hpp"
 #include "support/mesh_builder.hpp"
 
 namespace saasgaps::testing {

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "analysis.hpp"
+#include "solver/analysis/analysis.hpp"
 
 namespace saasgaps::testing {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <string_view>
 
-#include "io/state_codec.hpp"
-#include "io/stored_state.hpp"
-#include "restart_state.hpp"
+#include "io/restart/state_codec.hpp"
+#include "io/restart/stored_state.hpp"
+#include "solver/state/restart_state.hpp"
 
 namespace saasgaps::testing {
 

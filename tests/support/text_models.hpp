@@ -1,6 +1,6 @@
 #pragma once
-/// Model documents as text for the tests that hold the text readers (io/model_reader.hpp) to the
-/// tree reader (tests/io/model_reader_test.cpp, tests/io/scan_model_reader_test.cpp): the example
+/// Model documents as text for the tests that hold the text readers (io/model/model_reader.hpp) to the
+/// tree reader (tests/io/model/model_reader_test.cpp, tests/io/model/scan_model_reader_test.cpp): the example
 /// files, their text, and two Models read from the same document compared value for value.
 /// SAASGAPS_EXAMPLES_DIR is defined for every test program (tests/CMakeLists.txt).
 
@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include "model.hpp"
+#include "solver/model/model.hpp"
 
 namespace saasgaps::testing {
 

@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "solution.hpp"
+#include "solver/state/solution.hpp"
+#include "solver/state/thermal_record.hpp"
+#include "solver/thermal/thermal_analysis.hpp"
 #include "support/identical_solutions.hpp"
 #include "support/state_recorder.hpp"
 #include "support/state_round_trip.hpp"
-#include "thermal_analysis.hpp"
-#include "thermal_record.hpp"
 
 namespace saasgaps::testing {
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "analysis.hpp"
+#include "solver/analysis/analysis.hpp"
 #include "support/mesh_builder.hpp"
 
 namespace saasgaps {

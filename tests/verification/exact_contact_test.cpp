@@ -13,16 +13,16 @@
 #include <numbers>
 #include <set>
 
-#include "analysis.hpp"
-#include "contact_pairs.hpp"
-#include "dof_map.hpp"
-#include "errors.hpp"
-#include "exact_contact.hpp"
-#include "material_state.hpp"
-#include "mortar_method.hpp"
-#include "io/model_reader.hpp"
-#include "sparse_cholesky.hpp"
-#include "stiffness_system.hpp"
+#include "io/model/model_reader.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "solver/analysis/solid_materials.hpp"
+#include "solver/assembly/dof_map.hpp"
+#include "solver/assembly/stiffness_system.hpp"
+#include "solver/base/errors.hpp"
+#include "solver/contact/exact_contact.hpp"
+#include "solver/gaps/contact_pairs.hpp"
+#include "solver/lac/sparse_cholesky.hpp"
+#include "solver/mortar/mortar_method.hpp"
 #include "support/examples.hpp"
 #include "support/hertz_line_contact.hpp"
 #include "support/mesh_builder.hpp"
@@ -358,7 +358,7 @@ TEST(ExactInput, APartLoadWhoseFloorSpringsCarryMoreThanOnePercentNamesTheFloorA
 }  // namespace
 }  // namespace saasgaps
 
-// ---- Looking ahead from a factorized set (solver/exact_contact.hpp, docs/contact.md section 3).
+// ---- Looking ahead from a factorized set (solver/contact/exact_contact.hpp, docs/contact.md section 3).
 
 namespace saasgaps {
 namespace {

@@ -20,7 +20,7 @@
 
 #include <cmath>
 
-#include "analysis.hpp"
+#include "solver/analysis/analysis.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/quoted_figure.hpp"
 #include "support/ring_fit.hpp"

@@ -26,9 +26,9 @@
 #include <map>
 #include <sstream>
 
-#include "analysis.hpp"
-#include "io/model_reader.hpp"
-#include "thermal_analysis.hpp"
+#include "io/model/model_reader.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "solver/thermal/thermal_analysis.hpp"
 #include "support/examples.hpp"
 
 namespace saasgaps {

@@ -1,5 +1,5 @@
 // Coulomb friction on contact surfaces (contact.pairs[].friction) through the full solve(): the
-// mortar rows with their tangential rows solved by FrictionalContact (solver/mortar_method.hpp,
+// mortar rows with their tangential rows solved by FrictionalContact (solver/mortar/mortar_method.hpp,
 // docs/contact.md section 9), increment by increment through load steps.
 //
 // - A block pressed onto a base by N, then pushed sideways by a prescribed displacement in 20
@@ -24,10 +24,10 @@
 #include <cstdio>
 #include <numbers>
 
-#include "analysis.hpp"
-#include "element_kernel.hpp"
-#include "errors.hpp"
-#include "io/state_codec.hpp"
+#include "io/restart/state_codec.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "solver/base/errors.hpp"
+#include "solver/fe/element_kernel.hpp"
 #include "support/examples.hpp"
 #include "support/hertz_line_contact.hpp"
 #include "support/identical_solutions.hpp"
@@ -393,7 +393,7 @@ TEST(FrictionSurfaces, TheFrictionBlockExampleSlidesAtMuNBothWays) {
 }
 
 // Disabled until the solver adds the friction force to the pair's resultant: contact_pair_results
-// (solver/mortar_method.cpp) sums only the normal multipliers times the rows' coefficients into
+// (solver/mortar/mortar_method.cpp) sums only the normal multipliers times the rows' coefficients into
 // ContactPairResult::force, not the tangential forces (FrictionState::tangential_force), so the
 // example's result reads force {fr 0, fz 1000} where side B's force on the sliding block is
 // (+-300, 1000). Enable it with that fix.

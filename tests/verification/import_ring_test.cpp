@@ -13,9 +13,9 @@
 #include <fstream>
 #include <set>
 
-#include "analysis.hpp"
-#include "io/assembly_reader.hpp"
-#include "io/model_reader.hpp"
+#include "io/import/assembly_reader.hpp"
+#include "io/model/model_reader.hpp"
+#include "solver/analysis/analysis.hpp"
 #include "support/lame_rings.hpp"
 
 namespace saasgaps {

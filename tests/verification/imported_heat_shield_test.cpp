@@ -10,12 +10,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/assembly_reader.hpp"
-#include "io/model_reader.hpp"
+#include "io/import/assembly_reader.hpp"
+#include "io/model/model_reader.hpp"
+#include "solver/assembly/stiffness_system.hpp"
+#include "solver/thermal/thermal_analysis.hpp"
 #include "support/examples.hpp"
-#include "stiffness_system.hpp"
 #include "support/quoted_figure.hpp"
-#include "thermal_analysis.hpp"
 
 namespace saasgaps {
 namespace {

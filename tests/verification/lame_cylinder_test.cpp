@@ -9,7 +9,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "analysis.hpp"
+#include "solver/analysis/analysis.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/quoted_figure.hpp"
 

@@ -1,4 +1,4 @@
-// Load steps (model.steps): the analysis runs increment by increment (solver/load_schedule.hpp).
+// Load steps (model.steps): the analysis runs increment by increment (solver/model/load_schedule.hpp).
 //  - a frictionless exact-contact ring fit split into 4 proportional increments ends where the
 //    one-increment run ends (1e-8 of the largest displacement), and a step of one increment is the
 //    model without steps to the last digit;
@@ -11,15 +11,15 @@
 #include <algorithm>
 #include <cmath>
 
-#include "analysis.hpp"
-#include "errors.hpp"
-#include "io/history_json.hpp"
-#include "io/state_codec.hpp"
+#include "io/restart/state_codec.hpp"
+#include "io/results/history_json.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "solver/base/errors.hpp"
 #include "support/identical_solutions.hpp"
-#include "support/state_recorder.hpp"
-#include "support/state_round_trip.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/ring_fit.hpp"
+#include "support/state_recorder.hpp"
+#include "support/state_round_trip.hpp"
 
 namespace saasgaps {
 namespace {
@@ -197,7 +197,7 @@ TEST(LoadSteps, PlasticBarShowsLoadUnloadReloadInItsHistory) {
   EXPECT_GT(load_iterations, 1);
   EXPECT_EQ(unload_last_iterations, 1);
   // The reloaded bar ends where the first loading ended: reloading retraces the elastic unloading
-  // line up to the peak (solver/plastic_history.hpp).
+  // line up to the peak (solver/materials/plastic_history.hpp).
   const Solution once = [&] {
     Bar c = bar(true);
     c.model.steps = {pull(c, "load", 2, d)};

@@ -12,10 +12,10 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "element_data.hpp"
-#include "element_kernel.hpp"
-#include "material.hpp"
-#include "mortar_coupling.hpp"
+#include "solver/assembly/element_data.hpp"
+#include "solver/fe/element_kernel.hpp"
+#include "solver/materials/material.hpp"
+#include "solver/mortar/mortar_coupling.hpp"
 #include "support/stacked_blocks.hpp"
 
 namespace saasgaps {

@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "analysis.hpp"
-#include "errors.hpp"
-#include "io/model_reader.hpp"
+#include "io/model/model_reader.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "solver/base/errors.hpp"
 #include "support/examples.hpp"
 
 namespace saasgaps {
@@ -65,7 +65,7 @@ TEST(NoEquilibrium, AGapLeftOpenOnAHeldBodyIsNoFailure) {
       EXPECT_EQ(g.state, GapState::open) << method << ": gap " << g.id;
     }
   }
-  // A floor of 1 psi carries 4.7 % of it: within the classic method's 10 % (algorithm.md, section 4).
+  // A floor of 1 psi carries 4.7 % of it: within the classic method's 10 % (docs/algorithm.md, section 4).
   nlohmann::json doc = pulled_off("classic");
   doc["constraints"].push_back({{"node", 2}, {"z", 0.0}});
   doc["constraints"].push_back({{"node", 11}, {"z", 0.0}});

@@ -9,14 +9,14 @@
 #include <numeric>
 #include <random>
 
-#include "analysis.hpp"
-#include "dof_map.hpp"
-#include "ordering_cache.hpp"
-#include "sparse_cholesky.hpp"
-#include "stiffness_system.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "solver/assembly/dof_map.hpp"
+#include "solver/assembly/stiffness_system.hpp"
+#include "solver/lac/ordering_cache.hpp"
+#include "solver/lac/sparse_cholesky.hpp"
+#include "solver/lac/symbolic_cache.hpp"
 #include "support/examples.hpp"
 #include "support/identical_solutions.hpp"
-#include "symbolic_cache.hpp"
 
 namespace saasgaps {
 namespace {

@@ -1,4 +1,4 @@
-// Elastic unloading of yielded elements across load steps (solver/plastic_history.hpp), on a bar in
+// Elastic unloading of yielded elements across load steps (solver/materials/plastic_history.hpp), on a bar in
 // plane stress under a uniform end load, where the bilinear curve gives everything in closed form:
 //  - loaded past yield to sigma_max, it reaches eps_max = eps_y + (sigma_max - sigma_y) / (PEMR E);
 //  - unloaded to zero load it keeps the permanent strain eps_max - sigma_max / E, along slope E;
@@ -12,14 +12,14 @@
 #include <cmath>
 #include <numbers>
 
-#include "analysis.hpp"
-#include "element_data.hpp"
-#include "errors.hpp"
-#include "io/state_codec.hpp"
+#include "io/restart/state_codec.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "solver/assembly/element_data.hpp"
+#include "solver/base/errors.hpp"
 #include "support/identical_solutions.hpp"
+#include "support/mesh_builder.hpp"
 #include "support/state_recorder.hpp"
 #include "support/state_round_trip.hpp"
-#include "support/mesh_builder.hpp"
 
 namespace saasgaps {
 namespace {

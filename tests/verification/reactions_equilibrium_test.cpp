@@ -1,4 +1,4 @@
-// Global equilibrium of the support reactions (solver/reactions.hpp) on every example model of
+// Global equilibrium of the support reactions (solver/analysis/reactions.hpp) on every example model of
 // schemas/examples, as given and, when it has classic gaps, with "gaps.method": "exact": the
 // reactions and the applied loads (nodal forces, edge tractions, body forces) sum to zero within
 // 1e-9 of the loads, along r and z in plane analyses and along z in axisymmetric ones (radial loads
@@ -12,13 +12,13 @@
 #include <filesystem>
 #include <set>
 
-#include "analysis.hpp"
-#include "element_data.hpp"
-#include "io/model_reader.hpp"
-#include "io/result_writer.hpp"
-#include "material_state.hpp"
-#include "stiffness_system.hpp"
-#include "thermal_analysis.hpp"
+#include "io/model/model_reader.hpp"
+#include "io/results/result_writer.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "solver/analysis/solid_materials.hpp"
+#include "solver/assembly/element_data.hpp"
+#include "solver/assembly/stiffness_system.hpp"
+#include "solver/thermal/thermal_analysis.hpp"
 #include "support/examples.hpp"
 
 namespace saasgaps {

@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-#include "analysis.hpp"
+#include "solver/analysis/analysis.hpp"
 #include "support/by_id.hpp"
 #include "support/examples.hpp"
 #include "support/quoted_figure.hpp"

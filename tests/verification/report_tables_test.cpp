@@ -6,9 +6,10 @@
 // the assertion. (Our own values, as the README quotes them, are pinned in report_figures_test.cpp.)
 #include <gtest/gtest.h>
 
-#include <algorithm>
+#include <cmath>
 
-#include "analysis.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "support/by_id.hpp"
 #include "support/examples.hpp"
 
 namespace saasgaps {
@@ -16,28 +17,18 @@ namespace {
 
 using testing::example_model;
 
-const WatchedGap& watched_gap(const IterationRecord& row, int id) {
-  const auto it = std::find_if(row.watch_gaps.begin(), row.watch_gaps.end(), [id](const auto& g) { return g.id == id; });
-  EXPECT_NE(it, row.watch_gaps.end()) << "gap " << id << " not watched";
-  return *it;
-}
+// A missing id throws (support/by_id.hpp): the test fails naming it, never reads past the end.
+const WatchedGap& watched_gap(const IterationRecord& row, int id) { return testing::by_id(row.watch_gaps, id); }
 
 const WatchedElement& watched_element(const IterationRecord& row, int id) {
-  const auto it =
-      std::find_if(row.watch_elements.begin(), row.watch_elements.end(), [id](const auto& e) { return e.id == id; });
-  EXPECT_NE(it, row.watch_elements.end()) << "element " << id << " not watched";
-  return *it;
+  return testing::by_id(row.watch_elements, id);
 }
 
 double relative(double actual, double expected) { return std::abs(actual - expected) / std::abs(expected); }
 
-const NodeResult& node(const Solution& s, int id) {
-  return *std::find_if(s.nodes.begin(), s.nodes.end(), [id](const NodeResult& n) { return n.id == id; });
-}
+const NodeResult& node(const Solution& s, int id) { return testing::by_id(s.nodes, id); }
 
-const ElementResult& element(const Solution& s, int id) {
-  return *std::find_if(s.elements.begin(), s.elements.end(), [id](const ElementResult& e) { return e.id == id; });
-}
+const ElementResult& element(const Solution& s, int id) { return testing::by_id(s.elements, id); }
 
 TEST(ReportTableI, UniformLoadOnAnUnrestrainedBodyIterationByIteration) {
   const Solution s = solve(example_model("report-problem1.json"));

@@ -3,10 +3,10 @@
 // number equal to the uninterrupted run's.
 #include <gtest/gtest.h>
 
-#include "analysis.hpp"
-#include "errors.hpp"
-#include "io/state_codec.hpp"
-#include "io/stored_state.hpp"
+#include "io/restart/state_codec.hpp"
+#include "io/restart/stored_state.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "solver/base/errors.hpp"
 #include "support/examples.hpp"
 #include "support/identical_solutions.hpp"
 #include "support/state_recorder.hpp"

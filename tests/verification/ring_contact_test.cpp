@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "analysis.hpp"
+#include "solver/analysis/analysis.hpp"
 #include "support/lame_rings.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/quoted_figure.hpp"

@@ -17,16 +17,16 @@
 #include <cmath>
 #include <numbers>
 
-#include "analysis.hpp"
-#include "element_kernel.hpp"
-#include "io/state_codec.hpp"
-#include "reactions.hpp"
+#include "io/restart/state_codec.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "solver/analysis/reactions.hpp"
+#include "solver/fe/element_kernel.hpp"
 #include "support/hertz_line_contact.hpp"
 #include "support/identical_solutions.hpp"
-#include "support/state_recorder.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/shrink_fit_rings.hpp"
 #include "support/stacked_blocks.hpp"
+#include "support/state_recorder.hpp"
 
 namespace saasgaps {
 namespace {

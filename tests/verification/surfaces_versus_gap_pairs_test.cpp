@@ -21,7 +21,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "analysis.hpp"
+#include "solver/analysis/analysis.hpp"
 #include "support/ring_fit.hpp"
 #include "support/stacked_blocks.hpp"
 

@@ -21,11 +21,11 @@
 #include <cmath>
 #include <numbers>
 
-#include "conduction_kernel.hpp"
+#include "solver/thermal/conduction_kernel.hpp"
+#include "solver/thermal/thermal_analysis.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/settling_transient.hpp"
 #include "support/state_recorder.hpp"
-#include "thermal_analysis.hpp"
 
 namespace saasgaps {
 namespace {

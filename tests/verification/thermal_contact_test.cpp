@@ -17,11 +17,11 @@
 #include <cmath>
 #include <Eigen/Dense>
 
-#include "contact_conductance.hpp"
+#include "solver/thermal/contact_conductance.hpp"
+#include "solver/thermal/thermal_analysis.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/settling_transient.hpp"
 #include "support/stacked_blocks.hpp"
-#include "thermal_analysis.hpp"
 
 namespace saasgaps {
 namespace {

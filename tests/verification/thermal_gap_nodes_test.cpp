@@ -2,7 +2,7 @@
 // (corners of their gap elements only) and one node of no element. Nothing conducts to them unless
 // the gaps conduct, so their temperature is not a result of the conduction: it stays at the reference
 // temperature in a steady run and at the initial temperature in a transient one
-// (solver/thermal_system.hpp, docs/model.md). Before that rule their zero rows made the conduction
+// (solver/thermal/thermal_system.hpp, docs/model.md). Before that rule their zero rows made the conduction
 // matrix singular.
 //
 // Problem 2 is a strip of nine elements heated uniformly by 1100 over its reference temperature,
@@ -16,8 +16,8 @@
 #include <set>
 #include <string>
 
+#include "solver/thermal/thermal_analysis.hpp"
 #include "support/examples.hpp"
-#include "thermal_analysis.hpp"
 
 namespace saasgaps {
 namespace {

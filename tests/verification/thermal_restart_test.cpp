@@ -7,9 +7,9 @@
 
 #include <cmath>
 
-#include "io/model_reader.hpp"
-#include "restart_state.hpp"
-#include "thermal_analysis.hpp"
+#include "io/model/model_reader.hpp"
+#include "solver/state/restart_state.hpp"
+#include "solver/thermal/thermal_analysis.hpp"
 #include "support/identical_solutions.hpp"
 #include "support/state_recorder.hpp"
 #include "support/transient_heating.hpp"

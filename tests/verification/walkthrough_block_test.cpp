@@ -7,9 +7,9 @@
 #include <memory>
 #include <string>
 
-#include "analysis.hpp"
-#include "dof_map.hpp"
-#include "io/model_reader.hpp"
+#include "io/model/model_reader.hpp"
+#include "solver/analysis/analysis.hpp"
+#include "solver/assembly/dof_map.hpp"
 #include "support/quoted_figure.hpp"
 
 namespace saasgaps {

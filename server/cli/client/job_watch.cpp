@@ -1,0 +1,128 @@
+#include "cli/client/job_watch.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <thread>
+
+#include "cli/common/progress_table.hpp"
+#include "cli/common/usage.hpp"
+#include "io/results/history_json.hpp"
+#include "io/results/thermal_row_json.hpp"
+
+namespace saasgaps::cli {
+
+namespace {
+
+using nlohmann::json;
+
+/// What the live line and the last line show of a job.
+struct JobView {
+  std::string state = "queued";
+  int iteration = 0;
+  std::optional<IterationRecord> row;
+};
+
+/// The live line: "job 3  running  iteration 7" and the row's key columns (live_summary).
+std::string live_line(std::int64_t job, const JobView& view) {
+  std::string line = "job " + std::to_string(job) + "  " + view.state + "  iteration " + std::to_string(view.iteration);
+  if (view.row) line += live_summary(*view.row);
+  return line;
+}
+
+class Watcher {
+ public:
+  Watcher(std::int64_t job, bool wide) : job_(job), live_(::isatty(STDOUT_FILENO) == 1), table_(std::cout, wide) {}
+
+  void on_event(const ServerEvent& event) {
+    last_id_ = event.id;
+    const json data = json::parse(event.data, nullptr, false);
+    if (!data.is_object()) return;  // not ours to read; the next event may be
+    if (event.name == "state") {
+      view_.state = data.value("state", view_.state);
+      view_.iteration = data.value("iteration", view_.iteration);
+      if (!live_) std::cout << "job " << job_ << ": " << view_.state << '\n';
+    } else if (event.name == "iteration") {
+      try {
+        view_.row = io::history_row_from_json(data);
+      } catch (const json::exception&) {
+        return;  // a row of another version: the live line keeps the last one understood
+      }
+      view_.iteration = view_.row->iteration;
+      if (!live_) table_.print(*view_.row);
+    } else if (event.name == "thermal") {
+      try {
+        const ThermalRecord row = io::thermal_row_from_json(data);
+        // The live line shows the stress iterations; a thermal row gets a line of its own above it.
+        if (live_) std::cout << "\r\033[K";
+        table_.print(row);
+      } catch (const json::exception&) {
+        return;  // a row of another version: skipped like an unknown iteration row
+      }
+    }
+    if (live_) std::cout << "\r\033[K" << live_line(job_, view_);
+    std::cout.flush();
+  }
+
+  /// Ends the live line and prints how the job ended.
+  void finish(const json& job) {
+    view_.state = job.value("state", view_.state);
+    if (live_) std::cout << "\r\033[K" << live_line(job_, view_) << '\n';
+    std::cout << "job " << job_ << " " << view_.state;
+    const json message = job.value("message", json());
+    const json error = job.value("error", json());
+    if (error.is_string()) {
+      std::cout << ": " << error.get<std::string>();
+    } else if (message.is_string()) {
+      std::cout << ": " << message.get<std::string>();
+    }
+    std::cout << std::endl;
+  }
+
+  [[nodiscard]] const std::string& last_id() const { return last_id_; }
+
+ private:
+  std::int64_t job_;
+  bool live_;
+  ProgressTable table_;
+  JobView view_;
+  std::string last_id_;
+};
+
+}  // namespace
+
+int exit_code_of_job_state(const std::string& state) {
+  if (state == "converged") return exit_code::ok;
+  if (state == "not_converged" || state == "cancelled" || state == "interrupted") return exit_code::not_converged;
+  if (state == "failed") return exit_code::failure;
+  return -1;
+}
+
+int watch_job(ServiceClient& client, std::int64_t job, bool wide) {
+  const std::string path = "/v1/jobs/" + std::to_string(job);
+  Watcher watcher(job, wide);
+  constexpr int reconnects = 5;
+  for (int attempt = 0;; ++attempt) {
+    // The stream ends when the job has finished, or breaks (the server stopped: the job is then
+    // interrupted, which ends this command too, or a network fault: reconnect).
+    client.follow_events(path + "/events", watcher.last_id(), [&](const ServerEvent& e) { watcher.on_event(e); });
+    // The job's final word (message, error) is the job's own.
+    const json state = json::parse(client.get(path));
+    const int code = exit_code_of_job_state(state.value("state", ""));
+    if (code >= 0) {
+      watcher.finish(state);
+      return code;
+    }
+    if (attempt == reconnects) {
+      throw std::runtime_error("the event stream of job " + std::to_string(job) + " at " + client.url() +
+                               " broke " + std::to_string(reconnects + 1) + " times; the job is still " +
+                               state.value("state", "running"));
+    }
+    std::this_thread::sleep_for(std::chrono::seconds(1));
+  }
+}
+
+}  // namespace saasgaps::cli

@@ -1,0 +1,141 @@
+#pragma once
+/// The assembly importer's state and steps (internal to io; import_assembly in
+/// io/assembly_reader.hpp is the interface). One Importer reads one assembly document; its sections
+/// are implemented in assembly_reader.cpp (mesh, regions, constraints, loads, gaps and contact
+/// surfaces, the model reader's check) and assembly_thermal.cpp (the thermal section by group).
+
+#include <array>
+#include <filesystem>
+#include <initializer_list>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/import/assembly_reader.hpp"
+#include "io/import/gap_generator.hpp"
+#include "io/import/mesh_groups.hpp"
+#include "io/json/value_rules.hpp"
+#include "io/mesher/gmsh_mesh.hpp"
+#include "solver/base/errors.hpp"
+
+namespace saasgaps::io::assembly {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+/// Which dimensions a use of a group accepts, and how to say it.
+struct GroupUse {
+  std::initializer_list<int> dims;
+  const char* role;   ///< "a region", "a pressure"...
+  const char* needs;  ///< "a surface (dimension 2)"
+};
+
+class Importer {
+ public:
+  Importer(const json& assembly, fs::path base, FileAccess access)
+      : doc_(assembly), base_(std::move(base)), access_(access) {}
+
+  json run();
+
+ private:
+  void report(std::string pointer, std::string detail) {
+    // An upload's files sit in a private directory the client never saw: name them as uploaded.
+    if (access_ == FileAccess::base_only) {
+      const std::string directory = (base_ / "").string();
+      for (std::size_t at = detail.find(directory); at != std::string::npos; at = detail.find(directory, at)) {
+        detail.erase(at, directory.size());
+      }
+    }
+    issues_.push_back({std::move(pointer), std::move(detail)});
+  }
+  /// report() as a callable, for the shared checks of value_rules.hpp.
+  auto reporter() {
+    return [this](const std::string& pointer, std::string detail) { report(pointer, std::move(detail)); };
+  }
+
+  // ---- shape checks
+  bool object(const json& v, const std::string& p, std::initializer_list<std::string_view> required,
+              std::initializer_list<std::string_view> optional);
+  /// parent[key] when it is an array (non-empty if asked); nullptr when absent (object() reports a
+  /// missing required key) or reported.
+  const json* array(const json& parent, const std::string& p, std::string_view key, bool non_empty);
+  std::optional<double> number(const json& o, const std::string& p, std::string_view key,
+                               const Range& range = any_number);
+  std::optional<std::string> string(const json& o, const std::string& p, std::string_view key);
+
+  /// The file `name` (the value at `pointer`) names, or nullopt (reported) when it may not be read.
+  std::optional<fs::path> resolve_file(const std::string& name, const std::string& pointer);
+
+  // ---- the mesh and its groups
+  void load_mesh();
+  /// The group o["group"] names (reported at <p>/group when missing, misspelt or of the wrong dimension).
+  const PhysicalGroup* group(const json& o, const std::string& p, const GroupUse& use);
+  const PhysicalGroup* named_group(const json& name, const std::string& at, const GroupUse& use);
+  /// Node indices of a group (sorted, unique); reports nodes that no surface element uses.
+  std::vector<int> group_nodes(const PhysicalGroup& g, const std::string& p);
+  int tag_of(int node) const { return static_cast<int>(mesh_.node_tags[static_cast<std::size_t>(node)]); }
+  /// A boundary edge of a curve group: its node indices in the counter-clockwise order of the one
+  /// solid element (its position in GmshMesh::faces) that has it.
+  struct BoundaryEdge {
+    int a = -1, b = -1;
+    int owner = -1;
+  };
+  /// The line elements of curve group g as boundary edges, or nullopt (reported at <p>/group, for
+  /// `use` "a pressure", "a thermal boundary condition") when one lies inside the mesh or off it, or
+  /// there are none.
+  std::optional<std::vector<BoundaryEdge>> boundary_edges(const PhysicalGroup& g, const std::string& p,
+                                                          std::string_view use);
+
+  // ---- sections
+  void regions(json& model);
+  void constraints(json& model);
+  void loads(json& model);
+  void pressures(const json& loads, const std::string& p, json& out);
+  void nodal_forces(const json& loads, const std::string& p, json& out);
+  void temperatures(const json& loads, const std::string& p, json& out);
+  void temperature_file(const json& file, const std::string& p, std::vector<std::optional<double>>& T,
+                        std::vector<std::string>& source);
+  void gaps(json& model);
+  std::optional<FaceChain> face(const json& name, const std::string& p);
+  /// An exact face pair {faces: [A, B], friction?, conductance?} (its faces at p) as a contact pair of
+  /// two surfaces in `contact`.
+  void contact_pair(const json& pair, const std::string& p, json& contact);
+  /// Index in contact["surfaces"] of the surface made of curve group `name` (at p), defined on first use.
+  std::optional<std::size_t> contact_surface(const json& name, const std::string& p, json& contact);
+  /// thermal: the model's section with boundary conditions on curve groups and sources on surface
+  /// groups (assembly_thermal.cpp).
+  void thermal(json& model);
+  void thermal_boundary(const json& list, const std::string& p, json& out);
+  void thermal_sources(const json& list, const std::string& p, json& out);
+  void validate(const json& model);
+
+  const json& doc_;
+  fs::path base_;
+  FileAccess access_;
+  std::vector<InputIssue> issues_;
+  GmshMesh mesh_;
+  bool mesh_loaded_ = false;
+  std::vector<Vec2> positions_;
+  std::vector<int> ids_;
+  std::optional<MeshGroups> groups_;  ///< once the mesh is loaded
+  std::set<int> material_ids_;
+  std::map<int, int> surface_material_;  ///< Gmsh surface tag -> material id, from regions
+  /// A generated pointer and the assembly value it comes from, so that the model reader's findings
+  /// are reported where the user wrote them: a finding at `generated` or below it is reported at
+  /// `written`, as "the generated <pointer>: ..." or, when `same_keys` (the generated object has the
+  /// assembly object's keys), at `written` with the rest of the pointer, as the reader words it.
+  struct Origin {
+    std::string generated;
+    std::string written;
+    bool same_keys = false;
+  };
+  std::vector<Origin> origins_;
+};
+
+}  // namespace saasgaps::io::assembly

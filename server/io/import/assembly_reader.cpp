@@ -1,0 +1,678 @@
+#include "io/import/assembly_reader.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "io/import/assembly_importer.hpp"
+#include "io/import/gap_generator.hpp"
+#include "io/import/mesh_groups.hpp"
+#include "io/import/nodal_values_file.hpp"
+#include "io/json/json_pointer.hpp"
+#include "io/json/value_quote.hpp"
+#include "io/json/value_rules.hpp"
+#include "io/mesher/gmsh_mesh.hpp"
+#include "io/model/model_reader.hpp"
+#include "solver/base/errors.hpp"
+
+namespace saasgaps::io {
+
+namespace assembly {
+
+/// Sections of the model document the importer writes itself; the rest pass through.
+constexpr std::array<std::string_view, 6> generated_sections{"/nodes", "/elements", "/constraints", "/gaps/elements",
+                                                             "/loads/", "/contact"};
+
+constexpr double default_pair_tolerance = 0.1;
+
+// ---- shape checks
+
+bool Importer::object(const json& v, const std::string& p, std::initializer_list<std::string_view> required,
+                      std::initializer_list<std::string_view> optional) {
+  return check_object(v, p, {required.begin(), required.size()}, {optional.begin(), optional.size()}, reporter());
+}
+
+const json* Importer::array(const json& parent, const std::string& p, std::string_view key, bool non_empty) {
+  const auto it = parent.find(key);
+  if (it == parent.end()) return nullptr;
+  return check_array(*it, pointer_append(p, key), key, non_empty ? 1 : 0, reporter());
+}
+
+std::optional<double> Importer::number(const json& o, const std::string& p, std::string_view key, const Range& range) {
+  const auto it = o.find(key);
+  if (it == o.end()) return std::nullopt;
+  return check_number(*it, pointer_append(p, key), key, range, reporter());
+}
+
+std::optional<std::string> Importer::string(const json& o, const std::string& p, std::string_view key) {
+  const auto it = o.find(key);
+  if (it == o.end()) return std::nullopt;
+  return check_string(*it, pointer_append(p, key), key, reporter());
+}
+
+// ---- the mesh and its groups
+
+std::optional<fs::path> Importer::resolve_file(const std::string& name, const std::string& pointer) {
+  const fs::path given(name);
+  if (access_ == FileAccess::base_only &&
+      (given.filename() != given || name.empty() || name.front() == '.' || name.find('\\') != std::string::npos)) {
+    report(pointer, "\"" + name + "\" must be the plain name of an uploaded file (no directories)");
+    return std::nullopt;
+  }
+  if (access_ == FileAccess::base_only && !fs::exists(base_ / given)) {
+    report(pointer, "no part of the upload carries the file \"" + name + "\": add a part with filename=\"" + name +
+                        "\" (curl -F 'file=@" + name + "')");
+    return std::nullopt;
+  }
+  return given.is_absolute() ? given : base_ / given;
+}
+
+void Importer::load_mesh() {
+  const auto name = string(doc_, "", "mesh");
+  if (!name) return;
+  const auto path = resolve_file(*name, "/mesh");
+  if (!path) return;
+  try {
+    mesh_ = read_gmsh_mesh(*path);
+  } catch (const MeshTooLarge&) {
+    throw;  // a limit, not a defect of the assembly: the service answers 413
+  } catch (const MeshError& e) {
+    report("/mesh", e.what());
+    return;
+  }
+  for (const MeshFace& f : mesh_.faces) {
+    if (f.tag > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+      report("/mesh", "element tag " + std::to_string(f.tag) + " is beyond the largest element id (2147483647)");
+      return;
+    }
+  }
+  mesh_loaded_ = true;
+  groups_.emplace(mesh_);
+  positions_.reserve(mesh_.r.size());
+  for (std::size_t i = 0; i < mesh_.r.size(); ++i) {
+    positions_.emplace_back(mesh_.r[i], mesh_.z[i]);
+    ids_.push_back(static_cast<int>(mesh_.node_tags[i]));
+  }
+}
+
+const PhysicalGroup* Importer::group(const json& o, const std::string& p, const GroupUse& use) {
+  const auto it = o.find("group");
+  if (it == o.end()) return nullptr;  // reported by object()
+  return named_group(*it, pointer_append(p, "group"), use);
+}
+
+const PhysicalGroup* Importer::named_group(const json& value, const std::string& at, const GroupUse& use) {
+  if (!value.is_string()) {
+    report(at, "a physical group name must be a string, got " + describe(value));
+    return nullptr;
+  }
+  if (!groups_) return nullptr;
+  std::string problem;
+  const PhysicalGroup* g = groups_->find(value.get<std::string>(), use.dims, use.role, use.needs, problem);
+  if (g == nullptr) report(at, problem);
+  return g;
+}
+
+std::vector<int> Importer::group_nodes(const PhysicalGroup& g, const std::string& p) {
+  bool off_mesh = false;
+  std::vector<int> nodes = groups_->nodes(g, off_mesh);
+  if (off_mesh) {
+    report(pointer_append(p, "group"), "physical group \"" + g.name + "\" has nodes (or unmeshed points) that no "
+                                       "surface element uses; it must lie on the meshed surfaces");
+  } else if (nodes.empty()) {
+    report(pointer_append(p, "group"), "physical group \"" + g.name + "\" holds no mesh nodes");
+  }
+  return nodes;
+}
+
+// ---- sections
+
+/// regions: [{group (surface), material, angle?}]; every surface element gets exactly one.
+void Importer::regions(json& model) {
+  const json* list = array(doc_, "", "regions", true);
+  if (list == nullptr || !mesh_loaded_) return;
+  std::map<int, std::pair<int, double>> surface_material;  // surface -> (material id, angle)
+  std::map<int, std::string> surface_pointer;
+  bool complete = true;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string p = pointer_append("/regions", i);
+    const json& o = (*list)[i];
+    if (!object(o, p, {"group", "material"}, {"angle"})) continue;
+    const PhysicalGroup* g = group(o, p, {{2}, "a region", "a surface (dimension 2)"});
+    const double angle = number(o, p, "angle").value_or(0.0);
+    const auto m = o.find("material");
+    if (m == o.end()) {
+      complete = false;  // reported by object()
+      continue;
+    }
+    if (!m->is_number_integer() || !material_ids_.contains(m->get<int>())) {
+      report(pointer_append(p, "material"), "material " + quote(*m) + " is not the id of an entry of /materials");
+      complete = false;
+      continue;
+    }
+    if (g == nullptr) {
+      complete = false;
+      continue;
+    }
+    for (const int surface : g->entities) {
+      const auto [first, fresh] = surface_pointer.emplace(surface, pointer_append(p, "group"));
+      if (!fresh) {
+        report(pointer_append(p, "group"), "surface " + std::to_string(surface) + " of group \"" + g->name +
+                                               "\" already has a material from " + first->second +
+                                               "; give each surface one region");
+        continue;
+      }
+      surface_material[surface] = {m->get<int>(), angle};
+      surface_material_[surface] = m->get<int>();
+    }
+  }
+  if (!complete) return;
+  json& elements = model["elements"] = json::array();
+  std::map<int, std::size_t> missing;  // surface -> elements without a region
+  for (const MeshFace& f : mesh_.faces) {
+    const auto it = surface_material.find(f.surface);
+    if (it == surface_material.end()) {
+      ++missing[f.surface];
+      continue;
+    }
+    json nodes = json::array();
+    for (int k = 0; k < f.count; ++k) nodes.push_back(tag_of(f.nodes[static_cast<std::size_t>(k)]));
+    json e = {{"id", static_cast<int>(f.tag)}, {"nodes", std::move(nodes)}, {"material", it->second.first}};
+    if (it->second.second != 0.0) e["angle"] = it->second.second;
+    elements.push_back(std::move(e));
+  }
+  for (const auto& [surface, count] : missing) {
+    report("/regions", "surface " + std::to_string(surface) + " of the mesh (" + std::to_string(count) +
+                           " elements) is in no region; put it in a physical surface named by a region");
+  }
+}
+
+/// constraints: [{group (point or curve), r?, z?}]; a node's component prescribed twice must agree.
+void Importer::constraints(json& model) {
+  const json* list = array(doc_, "", "constraints", true);
+  if (list == nullptr || !mesh_loaded_) return;
+  // node -> component -> (value, pointer); std::map keeps the output in node order.
+  std::map<int, std::map<char, std::pair<double, std::string>>> prescribed;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string p = pointer_append("/constraints", i);
+    const json& o = (*list)[i];
+    if (!object(o, p, {"group"}, {"r", "z"})) continue;
+    if (!o.contains("r") && !o.contains("z")) report(p, "the constraint prescribes neither r nor z; give r and/or z");
+    const PhysicalGroup* g = group(o, p, {{0, 1}, "a constraint", "points or curves (dimension 0 or 1)"});
+    std::map<char, double> values;
+    for (const char c : {'r', 'z'}) {
+      if (const auto v = number(o, p, std::string(1, c))) values[c] = *v;
+    }
+    if (g == nullptr) continue;
+    for (const int node : group_nodes(*g, p)) {
+      for (const auto& [c, v] : values) {
+        const std::string at = pointer_append(p, std::string(1, c));
+        const auto [first, fresh] = prescribed[node].emplace(c, std::pair{v, at});
+        if (!fresh && first->second.first != v) {
+          report(at, std::string(1, c) + " = " + json(v).dump() + " of node " + std::to_string(tag_of(node)) +
+                         " contradicts " + json(first->second.first).dump() + " from " + first->second.second);
+        }
+      }
+    }
+  }
+  json& out = model["constraints"] = json::array();
+  for (const auto& [node, components] : prescribed) {
+    json c = {{"node", tag_of(node)}};
+    for (const auto& [component, value] : components) c[std::string(1, component)] = value.first;
+    out.push_back(std::move(c));
+  }
+}
+
+void Importer::loads(json& model) {
+  const auto it = doc_.find("loads");
+  if (it == doc_.end()) return;
+  const auto kinds = load_kind_names.names();
+  if (!check_object(*it, "/loads", {}, kinds, reporter())) return;
+  json out = json::object();
+  pressures(*it, "/loads", out);
+  nodal_forces(*it, "/loads", out);
+  temperatures(*it, "/loads", out);
+  if (const auto b = it->find("body_force"); b != it->end()) out["body_force"] = *b;
+  model["loads"] = std::move(out);
+}
+
+/// pressures: [{group (curve), normal?, shear?}] on every edge of the group, each edge listed in the
+/// counter-clockwise order of the one solid element that owns it (shear > 0 runs that way).
+void Importer::pressures(const json& loads, const std::string& lp, json& out) {
+  const json* list = array(loads, lp, "pressures", false);
+  if (list == nullptr || !mesh_loaded_) return;
+  json& result = out["pressures"] = json::array();
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string p = pointer_append(pointer_append(lp, "pressures"), i);
+    const json& o = (*list)[i];
+    if (!object(o, p, {"group"}, {"normal", "shear"})) continue;
+    const PhysicalGroup* g = group(o, p, {{1}, "a pressure", "a curve (dimension 1)"});
+    const double normal = number(o, p, "normal").value_or(0.0);
+    const double shear = number(o, p, "shear").value_or(0.0);
+    if (g == nullptr) continue;
+    for (const BoundaryEdge& e : boundary_edges(*g, p, "a pressure").value_or(std::vector<BoundaryEdge>{})) {
+      result.push_back({{"nodes", {tag_of(e.a), tag_of(e.b)}}, {"normal", normal}, {"shear", shear}});
+    }
+  }
+}
+
+std::optional<std::vector<Importer::BoundaryEdge>> Importer::boundary_edges(const PhysicalGroup& g, const std::string& p,
+                                                                            std::string_view use) {
+  const auto edges = groups_->edges(g);
+  if (edges.empty()) {
+    report(pointer_append(p, "group"), "physical group \"" + g.name + "\" has no line elements");
+    return std::nullopt;
+  }
+  std::vector<BoundaryEdge> out;
+  for (const auto& [a, b] : edges) {
+    const std::vector<int> owner = a < 0 || b < 0 ? std::vector<int>{} : groups_->owners(a, b);
+    if (owner.size() != 1) {
+      report(pointer_append(p, "group"),
+             "curve group \"" + g.name + "\" is not on the boundary of the meshed surfaces" +
+                 (a >= 0 && b >= 0 ? " (edge " + std::to_string(tag_of(a)) + "-" + std::to_string(tag_of(b)) + " has " +
+                                         std::to_string(owner.size()) + " elements; " + std::string(use) +
+                                         " acts on an edge of exactly one)"
+                                   : std::string()));
+      return std::nullopt;
+    }
+    const MeshFace& f = mesh_.faces[static_cast<std::size_t>(owner.front())];
+    const auto k = static_cast<int>(std::find(f.nodes.begin(), f.nodes.begin() + f.count, a) - f.nodes.begin());
+    const bool along = f.nodes[static_cast<std::size_t>((k + 1) % f.count)] == b;
+    out.push_back(along ? BoundaryEdge{a, b, owner.front()} : BoundaryEdge{b, a, owner.front()});
+  }
+  return out;
+}
+
+/// nodal_forces: [{group (points), fr?, fz?}]: the force at each point of the group.
+void Importer::nodal_forces(const json& loads, const std::string& lp, json& out) {
+  const json* list = array(loads, lp, "nodal_forces", false);
+  if (list == nullptr || !mesh_loaded_) return;
+  json& result = out["nodal_forces"] = json::array();
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string p = pointer_append(pointer_append(lp, "nodal_forces"), i);
+    const json& o = (*list)[i];
+    if (!object(o, p, {"group"}, {"fr", "fz"})) continue;
+    const PhysicalGroup* g = group(o, p, {{0}, "a nodal force", "points (dimension 0)"});
+    const double fr = number(o, p, "fr").value_or(0.0), fz = number(o, p, "fz").value_or(0.0);
+    if (g == nullptr) continue;
+    for (const int node : group_nodes(*g, p)) result.push_back({{"node", tag_of(node)}, {"fr", fr}, {"fz", fz}});
+  }
+}
+
+/// temperatures: {default?, groups?: [{group, T}], file?: {path, field?, tolerance?}}. A node takes
+/// its value from at most one source besides the default (groups that share a node must agree).
+void Importer::temperatures(const json& loads, const std::string& lp, json& out) {
+  const auto it = loads.find("temperatures");
+  if (it == loads.end()) return;
+  const std::string tp = pointer_append(lp, "temperatures");
+  if (!object(*it, tp, {}, {"default", "groups", "file"}) || !mesh_loaded_) return;
+  json result = json::object();
+  if (const auto d = number(*it, tp, "default")) result["default"] = *d;
+  std::vector<std::optional<double>> T(mesh_.node_tags.size());
+  std::vector<std::string> source(mesh_.node_tags.size());
+  if (const json* list = array(*it, tp, "groups", false)) {
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const std::string p = pointer_append(pointer_append(tp, "groups"), i);
+      const json& o = (*list)[i];
+      if (!object(o, p, {"group", "T"}, {})) continue;
+      const PhysicalGroup* g = group(o, p, {{0, 1, 2}, "a temperature", "a point, curve or surface"});
+      const auto value = number(o, p, "T");
+      if (g == nullptr || !value) continue;
+      for (const int node : group_nodes(*g, p)) {
+        const auto n = static_cast<std::size_t>(node);
+        if (T[n] && *T[n] != *value) {
+          report(pointer_append(p, "T"), "node " + std::to_string(tag_of(node)) + " gets T = " + json(*value).dump() +
+                                             " here and T = " + json(*T[n]).dump() + " from " + source[n] +
+                                             "; groups that share nodes must agree");
+          break;
+        }
+        T[n] = *value;
+        source[n] = pointer_append(p, "T");
+      }
+    }
+  }
+  if (const auto f = it->find("file"); f != it->end()) temperature_file(*f, pointer_append(tp, "file"), T, source);
+  json nodal = json::array();
+  for (std::size_t n = 0; n < T.size(); ++n) {
+    if (T[n]) nodal.push_back({{"node", tag_of(static_cast<int>(n))}, {"T", *T[n]}});
+  }
+  if (!nodal.empty()) result["nodal"] = std::move(nodal);
+  out["temperatures"] = std::move(result);
+}
+
+/// {path (.csv or .vtu), field? = "T", tolerance?}: values by node id, or by position within
+/// tolerance (default 1e-6 of the mesh's extent). Every row must find its node.
+void Importer::temperature_file(const json& file, const std::string& p, std::vector<std::optional<double>>& T,
+                                std::vector<std::string>& source) {
+  if (!object(file, p, {"path"}, {"field", "tolerance"})) return;
+  const auto name = string(file, p, "path");
+  const std::string field = string(file, p, "field").value_or("T");
+  const auto tolerance_given = number(file, p, "tolerance", positive);
+  if (!name) return;
+  const auto resolved = resolve_file(*name, pointer_append(p, "path"));
+  if (!resolved) return;
+  const fs::path& path = *resolved;
+  NodalValues values;
+  try {
+    if (path.extension() == ".csv") {
+      values = read_nodal_csv(path, field);
+    } else if (path.extension() == ".vtu") {
+      values = read_vtu_point_field(path, field);
+    } else {
+      report(pointer_append(p, "path"), "\"" + *name + "\" must be a .csv or .vtu file");
+      return;
+    }
+  } catch (const NodalFileError& e) {
+    report(pointer_append(p, "path"), e.what());
+    return;
+  }
+  double extent = 0.0;
+  for (const Vec2& x : positions_) extent = std::max({extent, std::fabs(x.x()), std::fabs(x.y())});
+  const double tolerance = tolerance_given.value_or(1e-6 * std::max(extent, 1e-300));
+  const std::vector<int> matched = match_rows(values, mesh_.node_tags, mesh_.r, mesh_.z, tolerance);
+  const std::string at = pointer_append(p, "path");
+  std::size_t unmatched = 0;
+  std::string first_unmatched;
+  for (std::size_t row = 0; row < values.values.size(); ++row) {
+    const int node = matched[row];
+    if (node < 0) {
+      if (unmatched++ == 0) {
+        first_unmatched = (path.extension() == ".csv" ? "line " : "point ") + std::to_string(values.origin[row]) +
+                          (values.by_id ? " (node " + std::to_string(values.ids[row]) + ")"
+                                        : " at (" + json(values.r[row]).dump() + ", " + json(values.z[row]).dump() + ")");
+      }
+      continue;
+    }
+    const auto n = static_cast<std::size_t>(node);
+    if (T[n] && source[n] != at) {
+      report(at, "node " + std::to_string(tag_of(node)) + " has a temperature from " + source[n] +
+                     " and from this file; give each node one temperature");
+      return;
+    }
+    T[n] = values.values[row];
+    source[n] = at;
+  }
+  if (unmatched > 0) {
+    report(at, std::to_string(unmatched) + " row(s) of " + *name + " match no node of the mesh" +
+                   (values.by_id ? "" : " within " + json(tolerance).dump()) + ", first " + first_unmatched);
+  }
+}
+
+/// One face of a gap pair: a curve group ordered into a chain, with the outward normal of each edge
+/// taken from the solid element that owns it.
+std::optional<FaceChain> Importer::face(const json& name, const std::string& p) {
+  const PhysicalGroup* g = named_group(name, p, {{1}, "a gap face", "a curve (dimension 1)"});
+  if (g == nullptr) return std::nullopt;
+  const auto edges = groups_->edges(*g);
+  for (const auto& [a, b] : edges) {
+    if (a < 0 || b < 0) {
+      report(p, "curve group \"" + g->name + "\" has nodes no surface element uses; a gap face bounds a meshed surface");
+      return std::nullopt;
+    }
+  }
+  const ChainResult chain = order_chain(edges, ids_);
+  if (!chain.problem.empty()) {
+    report(p, "curve group \"" + g->name + "\" cannot be a gap face: " + chain.problem);
+    return std::nullopt;
+  }
+  FaceChain out;
+  out.nodes = chain.nodes;
+  for (std::size_t k = 0; k + 1 < out.nodes.size(); ++k) {
+    const int a = out.nodes[k], b = out.nodes[k + 1];
+    const std::vector<int> owner = groups_->owners(a, b);
+    if (owner.size() != 1) {
+      report(p, "curve group \"" + g->name + "\" is not on the boundary of the meshed surfaces: its edge " +
+                    std::to_string(tag_of(a)) + "-" + std::to_string(tag_of(b)) + " belongs to " +
+                    std::to_string(owner.size()) + " elements (a gap face edge belongs to exactly one)");
+      return std::nullopt;
+    }
+    const MeshFace& f = mesh_.faces[static_cast<std::size_t>(owner.front())];
+    Vec2 centre = Vec2::Zero();
+    for (int c = 0; c < f.count; ++c) centre += positions_[static_cast<std::size_t>(f.nodes[static_cast<std::size_t>(c)])];
+    centre /= f.count;
+    const Vec2 xa = positions_[static_cast<std::size_t>(a)], xb = positions_[static_cast<std::size_t>(b)];
+    Vec2 n(xb.y() - xa.y(), xa.x() - xb.x());
+    n.normalize();
+    if ((centre - xa).dot(n) > 0.0) n = -n;  // point away from the element's centre: outward
+    out.outward.push_back(n);
+  }
+  return out;
+}
+
+/// A face pair of the exact method as contact: each face becomes a contact surface named for its
+/// curve group (its boundary edges as they are; the model reader judges the chain), the pair a contact
+/// pair [A, B], A the first face (the mortar's non-mortar side, docs/contact-surfaces.md), with the
+/// pair's friction and conductance as given (the model reader judges them at their pointers).
+void Importer::contact_pair(const json& pair, const std::string& p, json& contact) {
+  const json& faces = pair["faces"];
+  const std::string a_at = pointer_append(p, std::size_t{0}), b_at = pointer_append(p, std::size_t{1});
+  const auto a = contact_surface(faces[0], a_at, contact);
+  const auto b = contact_surface(faces[1], b_at, contact);
+  if (!a || !b) return;
+  if (*a == *b) {
+    report(b_at, "a face cannot be paired with itself (\"" + faces[1].get<std::string>() +
+                     "\" is both faces); name the two curves that face each other");
+    return;
+  }
+  const std::string pair_at = pointer_append("/contact/pairs", contact["pairs"].size());
+  origins_.push_back({pair_at, p.substr(0, p.rfind('/')), true});
+  json generated = {{"surfaces", {contact["surfaces"][*a]["name"], contact["surfaces"][*b]["name"]}}};
+  for (const char* key : {"friction", "conductance"}) {
+    if (pair.contains(key)) generated[key] = pair[key];
+  }
+  contact["pairs"].push_back(std::move(generated));
+}
+
+std::optional<std::size_t> Importer::contact_surface(const json& name, const std::string& p, json& contact) {
+  const PhysicalGroup* g = named_group(name, p, {{1}, "a contact face", "a curve (dimension 1)"});
+  if (g == nullptr) return std::nullopt;
+  json& surfaces = contact["surfaces"];
+  for (std::size_t k = 0; k < surfaces.size(); ++k) {
+    if (surfaces[k]["name"] == g->name) return k;
+  }
+  json edges = json::array();
+  std::set<std::pair<int, int>> seen;  // an edge two curve entities share is one edge
+  for (const auto& [a, b] : groups_->edges(*g)) {
+    if (a < 0 || b < 0) {
+      report(p, "curve group \"" + g->name + "\" has nodes no surface element uses; a contact face bounds a meshed surface");
+      return std::nullopt;
+    }
+    if (seen.insert(std::minmax(a, b)).second) edges.push_back({tag_of(a), tag_of(b)});
+  }
+  if (edges.empty()) {
+    report(p, "curve group \"" + g->name + "\" has no line elements");
+    return std::nullopt;
+  }
+  origins_.push_back({pointer_append("/contact/surfaces", surfaces.size()), p});
+  surfaces.push_back({{"name", g->name}, {"edges", std::move(edges)}});
+  return surfaces.size() - 1;
+}
+
+/// gaps: the settings pass through; pairs: [{faces: [curve, curve], first_id?, tolerance?}] become
+/// gaps.elements, or with method "exact" contact surfaces and pairs (then no gap elements remain and
+/// the gaps block, whose settings concern gap elements only, is left out of the model).
+void Importer::gaps(json& model) {
+  const auto it = doc_.find("gaps");
+  if (it == doc_.end()) return;
+  if (!it->is_object()) {
+    report("/gaps", "expected an object, got " + describe(*it));
+    return;
+  }
+  json settings = *it;
+  settings.erase("pairs");
+  if (settings.contains("elements")) {
+    report("/gaps/elements", "gap elements are generated from /gaps/pairs; remove elements");
+  }
+  if (!it->contains("pairs")) report("/gaps", "missing required key \"pairs\" (the faces that face each other)");
+  const json* list = array(*it, "/gaps", "pairs", true);
+  settings["elements"] = json::array();
+  if (list == nullptr || !mesh_loaded_) {
+    model["gaps"] = std::move(settings);
+    return;
+  }
+  if (settings.value("method", json()) == "exact") {
+    json contact = {{"surfaces", json::array()}, {"pairs", json::array()}};
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const std::string p = pointer_append("/gaps/pairs", i);
+      const json& o = (*list)[i];
+      if (!object(o, p, {"faces"}, {"first_id", "tolerance", "friction", "conductance"})) continue;
+      for (const char* key : {"first_id", "tolerance"}) {
+        if (o.contains(key)) {
+          report(pointer_append(p, key), std::string(key) + " concerns generated gap elements, and with gaps.method "
+                 "\"exact\" a face pair becomes contact surfaces instead (docs/import.md); remove it");
+        }
+      }
+      const auto faces = o.find("faces");
+      if (faces == o.end()) continue;
+      if (!faces->is_array() || faces->size() != 2) {
+        report(pointer_append(p, "faces"), "faces must name two curve groups, got " + describe(*faces));
+        continue;
+      }
+      contact_pair(o, pointer_append(p, "faces"), contact);
+    }
+    if (!contact["pairs"].empty()) model["contact"] = std::move(contact);
+    return;
+  }
+  std::set<long long> used;  // element ids taken
+  long long next_id = 1;
+  for (const MeshFace& f : mesh_.faces) {
+    used.insert(static_cast<long long>(f.tag));
+    next_id = std::max(next_id, static_cast<long long>(f.tag) + 1);
+  }
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string p = pointer_append("/gaps/pairs", i);
+    const json& o = (*list)[i];
+    if (!object(o, p, {"faces"}, {"first_id", "tolerance", "friction", "conductance"})) continue;
+    for (const char* key : {"friction", "conductance"}) {
+      if (o.contains(key)) {
+        report(pointer_append(p, key), std::string(key) + " belongs to a contact pair, which a face pair becomes with "
+               "gaps.method \"exact\" (docs/import.md); gap elements conduct by gaps.conductance and have no friction");
+      }
+    }
+    const double tolerance = number(o, p, "tolerance", positive).value_or(default_pair_tolerance);
+    long long id = next_id;
+    if (const auto first = o.find("first_id"); first != o.end()) {
+      if (!first->is_number_integer() || first->get<long long>() < 1) {
+        report(pointer_append(p, "first_id"), "first_id must be a positive integer, got " + describe(*first));
+        continue;
+      }
+      id = first->get<long long>();
+    }
+    const auto faces = o.find("faces");
+    if (faces == o.end()) continue;
+    if (!faces->is_array() || faces->size() != 2) {
+      report(pointer_append(p, "faces"), "faces must name two curve groups, got " + describe(*faces));
+      continue;
+    }
+    const auto a = face((*faces)[0], pointer_append(pointer_append(p, "faces"), std::size_t{0}));
+    const auto b = face((*faces)[1], pointer_append(pointer_append(p, "faces"), std::size_t{1}));
+    if (!a || !b) continue;
+    const GapGeneration generated = generate_gaps(*a, *b, positions_, ids_, tolerance);
+    const std::string between = "between \"" + (*faces)[0].get<std::string>() + "\" and \"" +
+                                (*faces)[1].get<std::string>() + "\": ";
+    for (const std::string& problem : generated.problems) report(p, between + problem);
+    for (const GeneratedGap& g : generated.gaps) {
+      if (id > std::numeric_limits<int>::max() || !used.insert(id).second) {
+        report(o.contains("first_id") ? pointer_append(p, "first_id") : p,
+               "gap element id " + std::to_string(id) + " is already used by an element or an earlier pair; choose "
+               "first_id so the " + std::to_string(generated.gaps.size()) + " ids of this pair are free");
+        break;
+      }
+      json nodes = json::array();
+      for (const int n : g.nodes) nodes.push_back(tag_of(n));
+      settings["elements"].push_back({{"id", id}, {"nodes", std::move(nodes)}, {"angle", g.angle_deg}});
+      ++id;
+    }
+    next_id = std::max(next_id, id);
+  }
+  model["gaps"] = std::move(settings);
+}
+
+/// The model reader judges the result; pass-through blocks keep their pointers.
+void Importer::validate(const json& model) {
+  try {
+    (void)read_model(model);
+  } catch (const ModelError& e) {
+    for (const InputIssue& issue : e.issues()) {
+      const bool generated = std::any_of(generated_sections.begin(), generated_sections.end(), [&](std::string_view s) {
+        return issue.pointer.starts_with(s) && !issue.pointer.starts_with("/loads/body_force");
+      });
+      const auto origin = std::find_if(origins_.begin(), origins_.end(), [&](const Origin& o) {
+        return issue.pointer == o.generated || issue.pointer.starts_with(o.generated + "/");
+      });
+      if (origin != origins_.end() && origin->same_keys) {
+        report(origin->written + issue.pointer.substr(origin->generated.size()), issue.detail);
+      } else if (origin != origins_.end()) {
+        report(origin->written, "the generated " + issue.pointer + ": " + issue.detail);
+      } else if (generated) {
+        report("/mesh", "the generated model's " + issue.pointer + ": " + issue.detail);
+      } else {
+        report(issue.pointer, issue.detail);
+      }
+    }
+  }
+}
+
+json Importer::run() {
+  if (!object(doc_, "", {"schema_version", "title", "mesh", "analysis", "materials", "regions", "constraints"},
+              {"description", "units", "loads", "gaps", "thermal", "solver", "output"})) {
+    throw ModelError(std::move(issues_), "assembly");
+  }
+  if (const auto v = doc_.find("schema_version"); v != doc_.end()) {
+    check_schema_version(*v, std::string("/schema_version"), reporter());
+  }
+  json model = json::object();
+  model["schema_version"] = 1;
+  for (const char* key : {"title", "description", "units", "analysis", "materials"}) {
+    if (const auto v = doc_.find(key); v != doc_.end()) model[key] = *v;
+  }
+  if (const auto m = doc_.find("materials"); m != doc_.end() && m->is_array()) {
+    for (const json& material : *m) {
+      if (material.is_object() && material.contains("id") && material["id"].is_number_integer()) {
+        material_ids_.insert(material["id"].get<int>());
+      }
+    }
+  }
+  load_mesh();
+  if (mesh_loaded_) {
+    // On the axis of an axisymmetric section Gmsh may place a node a round-off left of r = 0.
+    const auto analysis = doc_.find("analysis");
+    const bool axisymmetric = analysis != doc_.end() && analysis->is_object() &&
+                              analysis->value("type", json()) == "axisymmetric";
+    double extent = 0.0;
+    for (const Vec2& x : positions_) extent = std::max({extent, std::fabs(x.x()), std::fabs(x.y())});
+    json& nodes = model["nodes"] = json::array();
+    for (std::size_t n = 0; n < positions_.size(); ++n) {
+      double r = positions_[n].x();
+      if (axisymmetric && r < 0.0 && r > -1e-12 * extent) r = 0.0;
+      nodes.push_back({{"id", ids_[n]}, {"r", r}, {"z", positions_[n].y()}});
+    }
+  }
+  regions(model);
+  gaps(model);
+  constraints(model);
+  loads(model);
+  thermal(model);
+  for (const char* key : {"solver", "output"}) {
+    if (const auto v = doc_.find(key); v != doc_.end()) model[key] = *v;
+  }
+  if (issues_.empty()) validate(model);
+  if (!issues_.empty()) throw ModelError(std::move(issues_), "assembly");
+  return model;
+}
+
+}  // namespace assembly
+
+nlohmann::json import_assembly(const nlohmann::json& assembly, const std::filesystem::path& base_directory,
+                               FileAccess access) {
+  return assembly::Importer(assembly, base_directory, access).run();
+}
+
+}  // namespace saasgaps::io

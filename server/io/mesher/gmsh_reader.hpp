@@ -1,0 +1,17 @@
+#pragma once
+/// The calls into Gmsh (libgmsh): linked only into saasgaps-mesher, which makes them inside its
+/// sandbox. Gmsh keeps its model in global state: one read per process.
+
+#include <cstddef>
+#include <filesystem>
+
+#include "io/mesher/gmsh_mesh.hpp"
+
+namespace saasgaps::io {
+
+/// Opens `file` with Gmsh (a `.geo` is meshed in 2D with the options it sets itself) and returns
+/// the mesh; messages name the file as `shown`. Throws MeshTooLarge beyond `max_nodes` nodes,
+/// std::bad_alloc when memory runs out, MeshError for anything else (never a Gmsh exception).
+GmshMesh read_with_gmsh(const std::filesystem::path& file, const std::filesystem::path& shown, std::size_t max_nodes);
+
+}  // namespace saasgaps::io

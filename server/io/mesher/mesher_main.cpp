@@ -1,0 +1,80 @@
+// saasgaps-mesher DIRECTORY FILE SHOWN MAX_NODES SECONDS MEMORY_BYTES FILE_BYTES
+//
+// Reads DIRECTORY/FILE with Gmsh inside the sandbox of io/mesher_sandbox.hpp (DIRECTORY becomes
+// "/", nothing outside it exists) and writes the mesh to standard output in the encoding of
+// io/mesher_protocol.hpp; errors go to standard error, named as SHOWN, with the exit codes of
+// mesher::Exit. Started by io/gmsh_mesh.cpp for every mesh read, never by hand.
+#include <unistd.h>
+
+#include <charconv>
+#include <cstdio>
+#include <exception>
+#include <new>
+#include <string>
+#include <string_view>
+
+#include "io/mesher/gmsh_reader.hpp"
+#include "io/mesher/mesher_protocol.hpp"
+#include "io/mesher/mesher_sandbox.hpp"
+
+namespace {
+
+using namespace saasgaps::io;
+
+template <class T>
+bool parse(std::string_view text, T& value) {
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return ec == std::errc() && end == text.data() + text.size();
+}
+
+int report(int code, const std::string& message) {
+  const std::string line = message + "\n";
+  (void)!::write(STDERR_FILENO, line.data(), line.size());
+  return code;
+}
+
+bool write_all(const std::string& bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(STDOUT_FILENO, bytes.data() + done, bytes.size() - done);
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Only standard input, output and error: nothing the parent had open is the geometry's business.
+  ::close_range(3, ~0U, 0);
+  std::size_t max_nodes = 0;
+  SandboxLimits limits;
+  if (argc != 8 || !parse(argv[4], max_nodes) || !parse(argv[5], limits.cpu_seconds) ||
+      !parse(argv[6], limits.memory_bytes) || !parse(argv[7], limits.file_bytes) || limits.cpu_seconds < 1) {
+    return report(mesher::usage, "usage: saasgaps-mesher DIRECTORY FILE SHOWN MAX_NODES SECONDS MEMORY_BYTES FILE_BYTES");
+  }
+  const std::string file = argv[2];
+  const std::string shown = argv[3];
+  if (file.empty() || file.find('/') != std::string::npos || file == "." || file == "..") {
+    return report(mesher::usage, "saasgaps-mesher: FILE must be a plain file name, got \"" + file + "\"");
+  }
+  try {
+    enter_sandbox(argv[1], limits);
+  } catch (const SandboxError& e) {
+    return report(mesher::no_sandbox, "cannot confine Gmsh to the directory of " + shown + " (" + e.what() +
+                                          "); a mesh is read only inside that sandbox");
+  }
+  try {
+    const GmshMesh mesh = read_with_gmsh("/" + file, shown, max_nodes);
+    return write_all(mesher::encode(mesh)) ? mesher::ok : report(mesher::mesh_error, "cannot write the mesh");
+  } catch (const MeshTooLarge& e) {
+    return report(mesher::too_many_nodes, e.what());
+  } catch (const MeshError& e) {
+    return report(mesher::mesh_error, e.what());
+  } catch (const std::bad_alloc&) {
+    return report(mesher::out_of_memory, "out of memory");
+  } catch (const std::exception& e) {
+    return report(mesher::mesh_error, std::string("Gmsh cannot read ") + shown + ": " + e.what());
+  }
+}

@@ -1,0 +1,190 @@
+#include "io/mesher/mesher_protocol.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
+namespace saasgaps::io::mesher {
+
+namespace {
+
+constexpr std::string_view magic = "SGMESH1\n";
+constexpr std::string_view trailer = "END\n";
+
+// Bytes per record of the encoding, for the bounds below.
+constexpr std::size_t node_bytes = 8 + 8 + 8;
+constexpr std::size_t face_bytes = 8 + 4 + 4 + 4 * 4;
+
+class Writer {
+ public:
+  template <class T>
+  void put(T value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    text_.append(reinterpret_cast<const char*>(&value), sizeof value);
+  }
+  void count(std::size_t n) { put(static_cast<std::uint64_t>(n)); }
+  void bytes(std::string_view s) { text_.append(s); }
+  std::string take() { return std::move(text_); }
+
+ private:
+  std::string text_;
+};
+
+/// Reads the encoding front to back; every read is checked against what remains.
+class Reader {
+ public:
+  Reader(std::string_view bytes, const std::string& source) : rest_(bytes), source_(source) {}
+
+  template <class T>
+  T get() {
+    static_assert(std::is_trivially_copyable_v<T>);
+    need(sizeof(T), "a value");
+    T value;
+    std::memcpy(&value, rest_.data(), sizeof value);
+    rest_.remove_prefix(sizeof value);
+    return value;
+  }
+  /// A count of records of at least `record` bytes each: no more than the bytes left can hold,
+  /// so a forged count cannot make the reader allocate beyond the (bounded) input.
+  std::size_t count(std::size_t record, const char* what) {
+    const auto n = get<std::uint64_t>();
+    if (n > rest_.size() / record) fail(std::string("a count of ") + what + " (" + std::to_string(n) + ") beyond the data");
+    return static_cast<std::size_t>(n);
+  }
+  void expect(std::string_view text, const char* what) {
+    need(text.size(), what);
+    if (rest_.substr(0, text.size()) != text) fail(std::string("no ") + what);
+    rest_.remove_prefix(text.size());
+  }
+  std::string text(std::size_t n) {
+    need(n, "a name");
+    std::string s(rest_.substr(0, n));
+    rest_.remove_prefix(n);
+    return s;
+  }
+  /// A node index: -1 (none) when `may_be_none`, else in [0, nodes).
+  int node(std::size_t nodes, bool may_be_none) {
+    const auto i = get<std::int32_t>();
+    if ((i == -1 && may_be_none) || (i >= 0 && static_cast<std::size_t>(i) < nodes)) return i;
+    fail("node index " + std::to_string(i) + " outside the " + std::to_string(nodes) + " nodes");
+  }
+  [[nodiscard]] bool done() const { return rest_.empty(); }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw MeshError("the mesher's output for " + source_ + " is not a valid mesh: " + what);
+  }
+
+ private:
+  void need(std::size_t n, const char* what) const {
+    if (rest_.size() < n) fail(std::string("it ends before ") + what);
+  }
+  std::string_view rest_;
+  const std::string& source_;
+};
+
+}  // namespace
+
+std::size_t output_limit(std::size_t max_nodes) {
+  // A first-order 2D mesh has about 2 triangles per node and fewer boundary edges than nodes;
+  // 4 faces and 4 edges per node plus 1 MiB for groups and names leaves room for any real mesh.
+  return magic.size() + 8 + max_nodes * (node_bytes + 4 * face_bytes + 4 * 8) + (std::size_t{1} << 20);
+}
+
+std::string encode(const GmshMesh& mesh) {
+  Writer w;
+  w.bytes(magic);
+  w.count(mesh.node_tags.size());
+  for (std::size_t i = 0; i < mesh.node_tags.size(); ++i) {
+    w.put(static_cast<std::uint64_t>(mesh.node_tags[i]));
+    w.put(mesh.r[i]);
+    w.put(mesh.z[i]);
+  }
+  w.count(mesh.faces.size());
+  for (const MeshFace& f : mesh.faces) {
+    w.put(static_cast<std::uint64_t>(f.tag));
+    w.put(static_cast<std::int32_t>(f.surface));
+    w.put(static_cast<std::int32_t>(f.count));
+    for (const int n : f.nodes) w.put(static_cast<std::int32_t>(n));
+  }
+  w.count(mesh.curves.size());
+  for (const auto& [curve, edges] : mesh.curves) {
+    w.put(static_cast<std::int32_t>(curve));
+    w.count(edges.size());
+    for (const MeshEdge& e : edges) {
+      w.put(static_cast<std::int32_t>(e.a));
+      w.put(static_cast<std::int32_t>(e.b));
+    }
+  }
+  w.count(mesh.points.size());
+  for (const auto& [point, node] : mesh.points) {
+    w.put(static_cast<std::int32_t>(point));
+    w.put(static_cast<std::int32_t>(node));
+  }
+  w.count(mesh.groups.size());
+  for (const PhysicalGroup& g : mesh.groups) {
+    w.put(static_cast<std::int32_t>(g.dim));
+    w.put(static_cast<std::int32_t>(g.tag));
+    w.count(g.name.size());
+    w.bytes(g.name);
+    w.count(g.entities.size());
+    for (const int e : g.entities) w.put(static_cast<std::int32_t>(e));
+  }
+  w.bytes(trailer);
+  return w.take();
+}
+
+GmshMesh decode(std::string_view bytes, std::size_t max_nodes, const std::string& source) {
+  Reader in(bytes, source);
+  in.expect(magic, "header");
+  GmshMesh mesh;
+  const std::size_t nodes = in.count(node_bytes, "nodes");
+  if (nodes > max_nodes) {
+    throw MeshTooLarge(source + " meshes to " + std::to_string(nodes) + " nodes, more than the limit of " +
+                       std::to_string(max_nodes) + " nodes");
+  }
+  mesh.node_tags.resize(nodes);
+  mesh.r.resize(nodes);
+  mesh.z.resize(nodes);
+  for (std::size_t i = 0; i < nodes; ++i) {
+    mesh.node_tags[i] = in.get<std::uint64_t>();
+    mesh.r[i] = in.get<double>();
+    mesh.z[i] = in.get<double>();
+  }
+  mesh.faces.resize(in.count(face_bytes, "faces"));
+  for (MeshFace& f : mesh.faces) {
+    f.tag = in.get<std::uint64_t>();
+    f.surface = in.get<std::int32_t>();
+    f.count = in.get<std::int32_t>();
+    if (f.count != 3 && f.count != 4) in.fail("a face of " + std::to_string(f.count) + " nodes");
+    for (int k = 0; k < 4; ++k) f.nodes[static_cast<std::size_t>(k)] = in.node(nodes, k >= f.count);
+  }
+  const std::size_t curves = in.count(4 + 8, "curves");
+  for (std::size_t c = 0; c < curves; ++c) {
+    const auto curve = in.get<std::int32_t>();
+    std::vector<MeshEdge>& edges = mesh.curves[curve];
+    edges.resize(in.count(8, "edges"));
+    // An edge's node is -1 when no surface element uses it (the importer reports such a curve).
+    for (MeshEdge& e : edges) {
+      e.a = in.node(nodes, true);
+      e.b = in.node(nodes, true);
+    }
+  }
+  const std::size_t points = in.count(8, "points");
+  for (std::size_t p = 0; p < points; ++p) {
+    const auto point = in.get<std::int32_t>();
+    mesh.points[point] = in.node(nodes, true);
+  }
+  mesh.groups.resize(in.count(4 + 4 + 8 + 8, "groups"));
+  for (PhysicalGroup& g : mesh.groups) {
+    g.dim = in.get<std::int32_t>();
+    if (g.dim < 0 || g.dim > 3) in.fail("a physical group of dimension " + std::to_string(g.dim));
+    g.tag = in.get<std::int32_t>();
+    g.name = in.text(in.count(1, "name bytes"));
+    g.entities.resize(in.count(4, "entities"));
+    for (int& e : g.entities) e = in.get<std::int32_t>();
+  }
+  in.expect(trailer, "end marker");
+  if (!in.done()) in.fail("bytes after the end marker");
+  return mesh;
+}
+
+}  // namespace saasgaps::io::mesher

@@ -1,0 +1,86 @@
+#pragma once
+/// A contact surface (model format `contact.surfaces`): a chain of boundary edges of solid elements,
+/// given as node-index pairs [a, b] in any order and direction. Geometry only; docs/contact-surfaces.md.
+///
+/// Each edge must be a side of exactly one solid element (gap elements do not count: a face of a
+/// solid that touches a gap element is still a boundary of the solid mesh). The edges must form one
+/// chain, open or closed, with the material of every edge on the same side. The chain is oriented
+/// with the material on its left (counter-clockwise around the body, as elements list their nodes),
+/// so segment s runs nodes[s] -> nodes[s + 1] and its outward normal is the tangent turned clockwise:
+///   n_s = (t_z, -t_r) / |t|,   t = x(nodes[s + 1]) - x(nodes[s]).
+/// An open chain starts at its free end; a closed one at the first listed edge.
+
+#include <array>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "solver/base/errors.hpp"
+#include "solver/base/voigt.hpp"
+#include "solver/model/model.hpp"
+
+namespace saasgaps {
+
+/// Why an edge of a surface is refused.
+enum class SurfaceEdgeProblem {
+  empty,          ///< the surface has no edges (reported at edge 0)
+  degenerate,     ///< both ends are the same node
+  not_a_side,     ///< no solid element has a side joining the two nodes
+  interior,       ///< a side of two or more solid elements: not on the boundary
+  repeated,       ///< the same two nodes as an earlier edge (either direction)
+  branch,         ///< a third edge at one node: the edges do not form a chain
+  opposite_side,  ///< its element lies on the other side of the chain than its neighbour's
+  disconnected,   ///< not on the chain of the first edge: the edges form more than one chain
+};
+
+/// The name of a problem as the io layer words it ("not a boundary edge", ...).
+const char* describe(SurfaceEdgeProblem problem);
+
+/// One refused edge: `edge` indexes the edge list given (the io layer turns it into the JSON Pointer
+/// /contact/surfaces/<i>/edges/<edge>).
+struct SurfaceEdgeIssue {
+  std::size_t edge = 0;
+  SurfaceEdgeProblem problem = SurfaceEdgeProblem::not_a_side;
+  std::string detail;  ///< names the nodes (by user id) and elements involved
+};
+
+/// Every refused edge of one surface. Edge-level problems (degenerate .. repeated) are all reported;
+/// chain-level ones (branch, opposite_side, disconnected) only when every edge passed, and only the
+/// first one found, since one misplaced edge makes the rest of the chain ambiguous.
+class ContactSurfaceError : public SolverError {
+ public:
+  explicit ContactSurfaceError(std::vector<SurfaceEdgeIssue> issues);
+  [[nodiscard]] const std::vector<SurfaceEdgeIssue>& issues() const { return issues_; }
+
+ private:
+  std::vector<SurfaceEdgeIssue> issues_;
+};
+
+struct ContactSurface {
+  std::vector<int> nodes;          ///< node indices along the chain; a closed chain does not repeat nodes[0]
+  bool closed = false;
+  std::vector<int> element;        ///< per segment: the solid element (index) whose side it is
+  std::vector<std::size_t> edge;   ///< per segment: index into the edge list given
+  std::vector<Vec2> normal;        ///< per segment: unit outward normal of its element
+
+  [[nodiscard]] std::size_t segment_count() const { return element.size(); }
+  /// Node indices of segment s, in chain order.
+  [[nodiscard]] std::array<int, 2> segment(std::size_t s) const {
+    return {nodes[s], nodes[(s + 1) % nodes.size()]};
+  }
+};
+
+/// Validates and orients the chain. Node indices must be valid (the io layer resolves ids).
+/// Throws ContactSurfaceError naming every refused edge.
+ContactSurface contact_surface(const Model& model, std::span<const std::array<int, 2>> edges);
+
+/// Unit normal at each node of the chain (same order as surface.nodes): the adjacent segments'
+/// normals weighted by the inverse of their lengths,
+///   n_j = normalize(n_{s-1} / L_{s-1} + n_s / L_s)    (an open chain's end nodes: their one segment's),
+/// which for nodes on a circle is exactly radial however unequal the two chords are (chord s of angle
+/// a_s has its normal at its mid angle and L_s = 2 R sin(a_s / 2): the tangential parts
+/// sin(a_s / 2) / L_s cancel; equal weights would tilt it by about (L_s - L_{s-1}) / 4R). At a
+/// corner it lies between the two faces' normals, nearer the shorter segment's.
+std::vector<Vec2> nodal_normals(const ContactSurface& surface, const std::vector<Node>& nodes);
+
+}  // namespace saasgaps

@@ -1,0 +1,631 @@
+// The assembly importer: a model imported from a Gmsh mesh and its physical groups equals the model
+// written by hand for the same mesh, and every kind of bad assembly gives one error at the pointer
+// of the group, pair or file it concerns.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "io/import/assembly_reader.hpp"
+#include "io/import/gap_generator.hpp"
+#include "io/model/model_reader.hpp"
+#include "solver/base/errors.hpp"
+#include "solver/gaps/gap_faces.hpp"
+
+namespace saasgaps {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const fs::path data_dir = fs::path(SAASGAPS_TEST_DATA_DIR);
+const fs::path assemblies_dir = fs::path(SAASGAPS_EXAMPLES_DIR) / "assemblies";
+
+json load(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  return json::parse(in);
+}
+
+std::string text_of(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// A scratch directory per test, holding variants of the test mesh.
+class Scratch {
+ public:
+  Scratch() : dir_(fs::temp_directory_path() / ("saasgaps-import-" + std::to_string(::getpid()) + "-" +
+                                               ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
+    fs::create_directories(dir_);
+  }
+  ~Scratch() { fs::remove_all(dir_); }
+  Scratch(const Scratch&) = delete;
+  Scratch& operator=(const Scratch&) = delete;
+  [[nodiscard]] const fs::path& dir() const { return dir_; }
+  fs::path write(const std::string& name, const std::string& content) const {
+    std::ofstream(dir_ / name) << content;
+    return dir_ / name;
+  }
+
+ private:
+  fs::path dir_;
+};
+
+/// The test mesh's text with `from` replaced by `to` (once; the text must contain it).
+std::string two_blocks_with(const std::string& from, const std::string& to) {
+  std::string text = text_of(data_dir / "two_blocks.msh");
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// Imports `assembly` (relative files in `dir`) expecting exactly one issue; returns it.
+InputIssue single_issue(const json& assembly, const fs::path& dir) {
+  try {
+    (void)io::import_assembly(assembly, dir);
+  } catch (const ModelError& e) {
+    EXPECT_EQ(e.issues().size(), 1u) << [&] {
+      std::string all;
+      for (const InputIssue& i : e.issues()) all += i.pointer + ": " + i.detail + "\n";
+      return all;
+    }();
+    if (!e.issues().empty()) return e.issues().front();
+  }
+  ADD_FAILURE() << "the import succeeded";
+  return {};
+}
+
+// ---- the same model, imported and hand-written
+
+std::vector<int> node_ids(const Model& m, const std::array<int, 4>& nodes, int count) {
+  std::vector<int> ids;
+  for (int k = 0; k < count; ++k) ids.push_back(m.nodes[static_cast<std::size_t>(nodes[static_cast<std::size_t>(k)])].id);
+  return ids;
+}
+
+TEST(AssemblyImport, ImportedMshEqualsTheHandWrittenModel) {
+  const Model imported = io::read_model(io::import_assembly(load(data_dir / "two_blocks.assembly.json"), data_dir));
+  const Model hand = io::read_model(load(data_dir / "two_blocks.model.json"));
+
+  ASSERT_EQ(imported.nodes.size(), hand.nodes.size());
+  for (std::size_t n = 0; n < hand.nodes.size(); ++n) {
+    EXPECT_EQ(imported.nodes[n].id, hand.nodes[n].id);
+    EXPECT_EQ(imported.nodes[n].r, hand.nodes[n].r);
+    EXPECT_EQ(imported.nodes[n].z, hand.nodes[n].z);
+  }
+  // Element 23 is clockwise in the .msh file: the import lists it counter-clockwise.
+  ASSERT_EQ(imported.elements.size(), hand.elements.size());
+  for (std::size_t e = 0; e < hand.elements.size(); ++e) {
+    const Element& a = imported.elements[e];
+    const Element& b = hand.elements[e];
+    EXPECT_EQ(a.id, b.id);
+    EXPECT_EQ(node_ids(imported, a.nodes, a.node_count), node_ids(hand, b.nodes, b.node_count)) << "element " << b.id;
+    EXPECT_EQ(a.material, b.material);
+    EXPECT_EQ(a.angle_deg, b.angle_deg);
+  }
+  ASSERT_TRUE(imported.gaps && hand.gaps);
+  ASSERT_EQ(imported.gaps->elements.size(), hand.gaps->elements.size());
+  for (std::size_t g = 0; g < hand.gaps->elements.size(); ++g) {
+    const GapElement& a = imported.gaps->elements[g];
+    const GapElement& b = hand.gaps->elements[g];
+    EXPECT_EQ(a.id, b.id);
+    EXPECT_EQ(node_ids(imported, a.nodes, a.node_count), node_ids(hand, b.nodes, b.node_count)) << "gap " << b.id;
+    EXPECT_NEAR(a.angle_deg, b.angle_deg, 1e-12);
+  }
+  EXPECT_EQ(imported.gaps->tensile_schedule, hand.gaps->tensile_schedule);
+
+  const auto constraints = [](const Model& m) {
+    std::map<int, std::pair<std::optional<double>, std::optional<double>>> by_node;
+    for (const Constraint& c : m.constraints) by_node[m.nodes[static_cast<std::size_t>(c.node)].id] = {c.u_r, c.u_z};
+    return by_node;
+  };
+  EXPECT_EQ(constraints(imported), constraints(hand));
+
+  // Pressures: the same edge of the same owning element, in the same direction, the same tractions.
+  const auto pressures = [](const Model& m) {
+    std::set<std::tuple<int, int, int, double, double>> edges;
+    for (const EdgePressure& p : m.loads.pressures) {
+      edges.emplace(m.elements[static_cast<std::size_t>(p.element)].id, m.nodes[static_cast<std::size_t>(p.node_a)].id,
+                    m.nodes[static_cast<std::size_t>(p.node_b)].id, p.normal, p.shear);
+    }
+    return edges;
+  };
+  EXPECT_EQ(pressures(imported), pressures(hand));
+  ASSERT_EQ(imported.loads.nodal_forces.size(), 1u);
+  EXPECT_EQ(imported.loads.nodal_forces[0].node, hand.loads.nodal_forces[0].node);
+  EXPECT_EQ(imported.loads.nodal_forces[0].f_z, hand.loads.nodal_forces[0].f_z);
+  EXPECT_EQ(imported.loads.node_temperature, hand.loads.node_temperature);
+  EXPECT_EQ(imported.thickness, hand.thickness);
+  EXPECT_EQ(imported.solver.max_iterations, hand.solver.max_iterations);
+  EXPECT_EQ(imported.output.watch_elements, hand.output.watch_elements);
+  EXPECT_EQ(imported.output.watch_gaps, hand.output.watch_gaps);
+}
+
+/// The ring fit from ring-fit.geo against the hand-made ring-shrink-fit-plane-strain.json (written
+/// by make_ring_model.py): the same nodes (matched by position), elements, gaps with their angles,
+/// constraints and temperatures, although Gmsh numbers them differently.
+TEST(AssemblyImport, RingFromGeoEqualsTheHandMadeRing) {
+  const Model imported =
+      io::read_model(io::import_assembly(load(assemblies_dir / "ring-fit.assembly.json"), assemblies_dir));
+  const Model hand = io::read_model(load(fs::path(SAASGAPS_EXAMPLES_DIR) / "ring-shrink-fit-plane-strain.json"));
+  ASSERT_EQ(imported.nodes.size(), hand.nodes.size());
+  // Hand-made node of each imported node, by position (the hand-made file rounds to 1e-9, and
+  // Gmsh places the nodes on the arcs to about 1e-7).
+  std::vector<int> to_hand(imported.nodes.size(), -1);
+  for (std::size_t n = 0; n < imported.nodes.size(); ++n) {
+    const Node& a = imported.nodes[n];
+    for (std::size_t h = 0; h < hand.nodes.size(); ++h) {
+      if (std::hypot(a.r - hand.nodes[h].r, a.z - hand.nodes[h].z) < 1e-6) to_hand[n] = static_cast<int>(h);
+    }
+    ASSERT_GE(to_hand[n], 0) << "imported node " << a.id << " at (" << a.r << ", " << a.z << ") has no hand-made twin";
+  }
+  EXPECT_EQ(std::set<int>(to_hand.begin(), to_hand.end()).size(), hand.nodes.size());
+  // A cell as the set of its corners in cyclic order, starting from the smallest.
+  const auto cycle = [](std::vector<int> c) {
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+    return c;
+  };
+  const auto mapped = [&](const std::array<int, 4>& nodes, int count) {
+    std::vector<int> c;
+    for (int k = 0; k < count; ++k) c.push_back(to_hand[static_cast<std::size_t>(nodes[static_cast<std::size_t>(k)])]);
+    return cycle(c);
+  };
+  const auto own = [&](const std::array<int, 4>& nodes, int count) {
+    return cycle(std::vector<int>(nodes.begin(), nodes.begin() + count));
+  };
+  std::set<std::vector<int>> hand_elements, imported_elements;
+  for (const Element& e : hand.elements) hand_elements.insert(own(e.nodes, e.node_count));
+  for (const Element& e : imported.elements) imported_elements.insert(mapped(e.nodes, e.node_count));
+  EXPECT_EQ(imported_elements, hand_elements);
+
+  std::map<std::vector<int>, double> hand_gaps, imported_gaps;
+  for (const GapElement& g : hand.gaps->elements) hand_gaps[own(g.nodes, g.node_count)] = g.angle_deg;
+  for (const GapElement& g : imported.gaps->elements) imported_gaps[mapped(g.nodes, g.node_count)] = g.angle_deg;
+  ASSERT_EQ(imported_gaps.size(), hand_gaps.size());
+  for (const auto& [corners, angle] : hand_gaps) {
+    const auto found = imported_gaps.find(corners);
+    ASSERT_NE(found, imported_gaps.end());
+    // Gmsh places the nodes of the two arcs at their angles to about 5e-9 rad; across a gap 750
+    // times thinner than it is long that turns the pair direction by up to 2e-4 degrees.
+    EXPECT_NEAR(found->second, angle, 1e-3);
+  }
+  std::map<int, std::pair<std::optional<double>, std::optional<double>>> hand_fixed, imported_fixed;
+  for (const Constraint& c : hand.constraints) hand_fixed[c.node] = {c.u_r, c.u_z};
+  for (const Constraint& c : imported.constraints) imported_fixed[to_hand[static_cast<std::size_t>(c.node)]] = {c.u_r, c.u_z};
+  EXPECT_EQ(imported_fixed, hand_fixed);
+  for (std::size_t n = 0; n < imported.nodes.size(); ++n) {
+    EXPECT_EQ(imported.loads.node_temperature[n], hand.loads.node_temperature[static_cast<std::size_t>(to_hand[n])]);
+  }
+}
+
+TEST(AssemblyImport, TemperaturesFromCsvByPositionAndFromVtu) {
+  const Scratch scratch;
+  fs::copy_file(data_dir / "two_blocks.msh", scratch.dir() / "two_blocks.msh");
+  json assembly = load(data_dir / "two_blocks.assembly.json");
+  assembly["loads"]["temperatures"] = {{"default", 0.0}, {"file", {{"path", "t.csv"}}}};
+  scratch.write("t.csv", "# from a thermal code\nx,y,T\n0,0,10\n1,0,11\n2, 2.01, 12.5\n");
+  Model m = io::read_model(io::import_assembly(assembly, scratch.dir()));
+  EXPECT_EQ(m.loads.node_temperature[0], 10.0);
+  EXPECT_EQ(m.loads.node_temperature[1], 11.0);
+  EXPECT_EQ(m.loads.node_temperature[11], 12.5);
+  EXPECT_EQ(m.loads.node_temperature[5], 0.0);
+
+  // A VTU point field (the two blocks' nodes, ascii points, base64 Float64 values as VTK writes
+  // them: the UInt32 byte count and the data encoded separately).
+  scratch.write("t.vtu",
+                "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">"
+                "<UnstructuredGrid><Piece NumberOfPoints=\"2\" NumberOfCells=\"0\"><Points>"
+                "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">1 1 0 2 2.01 0</DataArray>"
+                "</Points><PointData><DataArray type=\"Float64\" Name=\"temperature\" format=\"binary\">"
+                // 16 bytes, then 300.0 and 400.5 as little-endian doubles
+                "EAAAAA==AAAAAADAckAAAAAAAAh5QA==</DataArray></PointData></Piece></UnstructuredGrid></VTKFile>\n");
+  assembly["loads"]["temperatures"]["file"] = {{"path", "t.vtu"}, {"field", "temperature"}};
+  m = io::read_model(io::import_assembly(assembly, scratch.dir()));
+  EXPECT_EQ(m.loads.node_temperature[4], 300.0);   // node 5 at (1, 1)
+  EXPECT_EQ(m.loads.node_temperature[11], 400.5);  // node 12 at (2, 2.01)
+  EXPECT_EQ(m.loads.node_temperature[0], 0.0);
+
+  // A compressed VTU (ParaView's default) is refused with a message that says how to write it.
+  scratch.write("z.vtu", "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" byte_order=\"LittleEndian\" "
+                         "compressor=\"vtkZLibDataCompressor\"><UnstructuredGrid/></VTKFile>\n");
+  assembly["loads"]["temperatures"]["file"] = {{"path", "z.vtu"}};
+  const InputIssue compressed = single_issue(assembly, scratch.dir());
+  EXPECT_EQ(compressed.pointer, "/loads/temperatures/file/path");
+  EXPECT_NE(compressed.detail.find("is compressed (vtkZLibDataCompressor); write it uncompressed"), std::string::npos)
+      << compressed.detail;
+
+  scratch.write("bad.csv", "node,T\n5,20\n99,30\n");
+  assembly["loads"]["temperatures"]["file"] = {{"path", "bad.csv"}};
+  const InputIssue issue = single_issue(assembly, scratch.dir());
+  EXPECT_EQ(issue.pointer, "/loads/temperatures/file/path");
+  EXPECT_NE(issue.detail.find("line 3 (node 99)"), std::string::npos) << issue.detail;
+}
+
+// ---- one clear error per defect
+
+/// One value of the test assembly changed, and the one issue it must give.
+struct BadValue {
+  const char* what;
+  const char* at;       ///< pointer of the value changed
+  json value;
+  const char* pointer;  ///< pointer of the issue
+  const char* says;     ///< part of its text
+};
+
+TEST(AssemblyImport, GroupsMissingMisspeltOrOfTheWrongDimension) {
+  const std::vector<BadValue> cases{
+      {"missing group", "/constraints/1/group", "symmetry_plane", "/constraints/1/group",
+       "no physical group named \"symmetry_plane\" (its named groups: \"corner\" (dimension 0 (point)), "
+       "\"bottom\" (dimension 1 (curve))"},
+      {"misspelt group", "/regions/1/group", "uper", "/regions/1/group", "did you mean \"upper\"?"},
+      {"surface as a pressure curve", "/loads/pressures/0/group", "upper", "/loads/pressures/0/group",
+       "\"upper\" has dimension 2 (surface); a pressure needs a curve (dimension 1)"},
+      {"surface as a gap face", "/gaps/pairs/0/faces/1", "upper", "/gaps/pairs/0/faces/1",
+       "a gap face needs a curve"},
+      {"curve as a nodal force point", "/loads/nodal_forces/0/group", "top", "/loads/nodal_forces/0/group",
+       "a nodal force needs points"},
+      {"a pass-through value keeps its pointer", "/gaps/initial_modulus", -1.0, "/gaps/initial_modulus", "> 0"},
+  };
+  for (const BadValue& c : cases) {
+    json assembly = load(data_dir / "two_blocks.assembly.json");
+    assembly[json::json_pointer(c.at)] = c.value;
+    const InputIssue issue = single_issue(assembly, data_dir);
+    EXPECT_EQ(issue.pointer, c.pointer) << c.what;
+    EXPECT_NE(issue.detail.find(c.says), std::string::npos) << c.what << ": " << issue.detail;
+  }
+}
+
+TEST(AssemblyImport, FacesWhoseNodesDoNotFaceEachOther) {
+  const Scratch scratch;
+  scratch.write("two_blocks.msh", two_blocks_with("8 1 1.01 0", "8 1.4 1.01 0"));
+  const InputIssue issue = single_issue(load(data_dir / "two_blocks.assembly.json"), scratch.dir());
+  EXPECT_EQ(issue.pointer, "/gaps/pairs/0");
+  EXPECT_NE(issue.detail.find("between \"lower_top\" and \"upper_bottom\""), std::string::npos) << issue.detail;
+  EXPECT_NE(issue.detail.find("node 5 at (1, 1) faces (1, 1.01)"), std::string::npos) << issue.detail;
+  EXPECT_NE(issue.detail.find("nearest node 8 at (1.4, 1.01)"), std::string::npos) << issue.detail;
+}
+
+TEST(AssemblyImport, ZeroClearanceNamesThePair) {
+  const Scratch scratch;
+  std::string text = text_of(data_dir / "two_blocks.msh");
+  for (const char* node : {"7 0 1.01 0", "8 1 1.01 0", "9 2 1.01 0"}) {
+    std::string moved = node;
+    moved.replace(moved.find("1.01"), 4, "1");
+    text.replace(text.find(node), std::string(node).size(), moved);
+  }
+  scratch.write("two_blocks.msh", text);
+  const InputIssue issue = single_issue(load(data_dir / "two_blocks.assembly.json"), scratch.dir());
+  EXPECT_EQ(issue.pointer, "/gaps/pairs/0");
+  EXPECT_NE(issue.detail.find("between \"lower_top\" and \"upper_bottom\": zero clearance"), std::string::npos)
+      << issue.detail;
+  EXPECT_NE(issue.detail.find("node 4 at (0, 1) and node 7"), std::string::npos) << issue.detail;
+}
+
+// ---- exact face pairs: contact surfaces
+
+/// The two-block assembly with gaps.method "exact" (and without what concerns gap elements).
+json exact_two_blocks() {
+  json assembly = load(data_dir / "two_blocks.assembly.json");
+  assembly["gaps"]["method"] = "exact";
+  assembly["gaps"]["pairs"][0].erase("first_id");
+  assembly["output"].erase("watch_gaps");
+  return assembly;
+}
+
+/// (node ids of each edge) of a contact surface.
+std::vector<std::vector<int>> surface_edges(const Model& m, std::size_t surface) {
+  std::vector<std::vector<int>> edges;
+  for (const auto& [a, b] : m.contact->surfaces[surface].edges) {
+    edges.push_back({m.nodes[static_cast<std::size_t>(a)].id, m.nodes[static_cast<std::size_t>(b)].id});
+  }
+  return edges;
+}
+
+TEST(AssemblyImport, ExactFacePairsBecomeContactSurfacesAtAnyClearance) {
+  const Scratch scratch;
+  // The upper block's bottom nodes 7, 8, 9 at z = 1.01 (a clearance), 1 (touching), 0.99 (an
+  // interference), and with node 8 moved along the face (the faces' nodes no longer face each other).
+  const std::vector<std::pair<std::string, std::string>> variants{
+      {"8 1 1.01 0", "8 1 1.01 0"}, {"1.01 0", "1 0"}, {"1.01 0", "0.99 0"}, {"8 1 1.01 0", "8 1.4 1.01 0"}};
+  for (const auto& [from, to] : variants) {
+    std::string text = text_of(data_dir / "two_blocks.msh");
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+      text.replace(at, from.size(), to);
+    }
+    scratch.write("two_blocks.msh", text);
+    const Model m = io::read_model(io::import_assembly(exact_two_blocks(), scratch.dir()));
+    EXPECT_FALSE(m.gaps) << to;  // no gap elements, so no gaps block
+    ASSERT_TRUE(m.contact) << to;
+    ASSERT_EQ(m.contact->surfaces.size(), 2u);
+    EXPECT_EQ(m.contact->surfaces[0].name, "lower_top");
+    EXPECT_EQ(m.contact->surfaces[1].name, "upper_bottom");
+    EXPECT_EQ(surface_edges(m, 0), (std::vector<std::vector<int>>{{4, 5}, {5, 6}}));
+    EXPECT_EQ(surface_edges(m, 1), (std::vector<std::vector<int>>{{7, 8}, {8, 9}}));
+    ASSERT_EQ(m.contact->pairs.size(), 1u);
+    EXPECT_EQ(m.contact->pairs[0].surfaces, (std::array<int, 2>{0, 1}));
+  }
+  // The classic method still generates gap elements (ImportedMshEqualsTheHandWrittenModel); a face
+  // used by two pairs is one surface.
+  json twice = exact_two_blocks();
+  twice["gaps"]["pairs"].push_back({{"faces", {"upper_bottom", "top"}}});
+  const Model m = io::read_model(io::import_assembly(twice, data_dir));
+  ASSERT_TRUE(m.contact);
+  EXPECT_EQ(m.contact->surfaces.size(), 3u);
+  ASSERT_EQ(m.contact->pairs.size(), 2u);
+  EXPECT_EQ(m.contact->pairs[1].surfaces, (std::array<int, 2>{1, 2}));
+}
+
+TEST(AssemblyImport, ExactFacePairErrorsAtTheirPointers) {
+  struct BadPair {
+    const char* what;
+    json pair;
+    const char* pointer;
+    const char* says;
+  };
+  const std::vector<BadPair> cases{
+      {"first_id", {{"faces", {"lower_top", "upper_bottom"}}, {"first_id", 100}}, "/gaps/pairs/0/first_id",
+       "becomes contact surfaces"},
+      {"tolerance", {{"faces", {"lower_top", "upper_bottom"}}, {"tolerance", 0.2}}, "/gaps/pairs/0/tolerance",
+       "becomes contact surfaces"},
+      {"a face with itself", {{"faces", {"lower_top", "lower_top"}}}, "/gaps/pairs/0/faces/1", "paired with itself"},
+      {"an unknown group", {{"faces", {"lower_top", "uper_bottom"}}}, "/gaps/pairs/0/faces/1", "did you mean"},
+      {"a surface group", {{"faces", {"lower", "upper_bottom"}}}, "/gaps/pairs/0/faces/0", "a curve (dimension 1)"},
+      // "left" runs up both blocks' sides: two pieces, not one chain (the model reader's finding).
+      {"not a chain", {{"faces", {"left", "upper_bottom"}}}, "/gaps/pairs/0/faces/0", "/contact/surfaces/0/edges/"},
+      {"three faces", {{"faces", {"lower_top", "upper_bottom", "top"}}}, "/gaps/pairs/0/faces", "two curve groups"},
+  };
+  for (const BadPair& c : cases) {
+    json assembly = exact_two_blocks();
+    assembly["gaps"]["pairs"][0] = c.pair;
+    const InputIssue issue = single_issue(assembly, data_dir);
+    EXPECT_EQ(issue.pointer, c.pointer) << c.what << ": " << issue.detail;
+    EXPECT_NE(issue.detail.find(c.says), std::string::npos) << c.what << ": " << issue.detail;
+  }
+}
+
+// ---- heat conduction by physical group
+
+/// The two-block assembly with exact contact, a material per block and a thermal section by group
+/// instead of loads.temperatures.
+json thermal_two_blocks() {
+  json assembly = exact_two_blocks();
+  assembly["materials"][0]["table"][0]["k"] = 2.0;
+  json upper_material = assembly["materials"][0];
+  upper_material["id"] = 2;
+  assembly["materials"].push_back(upper_material);
+  assembly["regions"][1]["material"] = 2;
+  assembly["loads"].erase("temperatures");
+  assembly["gaps"]["pairs"][0]["conductance"] = {{"closed", 5.0}, {"gas_conductivity", 0.01}};
+  assembly["thermal"] = {
+      {"type", "steady"},
+      {"boundary", {{{"group", "bottom"}, {"temperature", 20.0}},
+                    {{"group", "top"}, {"flux", 3.0}},
+                    {{"group", "left"}, {"film", 0.5}, {"ambient", 70.0}}}},
+      {"sources", {{{"group", "upper"}, {"power_density", 1.5}}, {{"material", 1}, {"power_density", -0.5}}}}};
+  return assembly;
+}
+
+/// (node ids of each edge) of a thermal boundary entry.
+std::vector<std::vector<int>> thermal_edges(const Model& m, std::size_t entry) {
+  std::vector<std::vector<int>> edges;
+  for (const ThermalEdge& e : m.thermal->boundary[entry].edges) {
+    edges.push_back({m.nodes[static_cast<std::size_t>(e.node_a)].id, m.nodes[static_cast<std::size_t>(e.node_b)].id});
+  }
+  return edges;
+}
+
+TEST(AssemblyImport, ThermalConditionsAndSourcesByPhysicalGroup) {
+  const json model = io::import_assembly(thermal_two_blocks(), data_dir);
+  const Model m = io::read_model(model);
+  ASSERT_TRUE(m.thermal);
+  EXPECT_EQ(m.thermal->type, ThermalType::steady);
+  ASSERT_EQ(m.thermal->boundary.size(), 3u);
+  // Each entry keeps its index, kind and values; its edges are the group's line elements, each in
+  // the counter-clockwise order of the element that owns it.
+  EXPECT_EQ(m.thermal->boundary[0].kind, ThermalBoundary::Kind::temperature);
+  EXPECT_EQ(m.thermal->boundary[0].value, 20.0);
+  EXPECT_EQ(thermal_edges(m, 0), (std::vector<std::vector<int>>{{1, 2}, {2, 3}}));
+  EXPECT_EQ(m.thermal->boundary[1].kind, ThermalBoundary::Kind::flux);
+  EXPECT_EQ(m.thermal->boundary[1].value, 3.0);
+  EXPECT_EQ(thermal_edges(m, 1), (std::vector<std::vector<int>>{{11, 10}, {12, 11}}));
+  EXPECT_EQ(m.thermal->boundary[2].kind, ThermalBoundary::Kind::film);
+  EXPECT_EQ(m.thermal->boundary[2].value, 0.5);
+  EXPECT_EQ(m.thermal->boundary[2].ambient, 70.0);
+  EXPECT_EQ(thermal_edges(m, 2).size(), 2u);  // "left": one edge of each block
+  for (const ThermalEdge& e : m.thermal->boundary[2].edges) {
+    EXPECT_EQ(m.nodes[static_cast<std::size_t>(e.node_a)].r, 0.0);
+    EXPECT_EQ(m.nodes[static_cast<std::size_t>(e.node_b)].r, 0.0);
+  }
+  // The source on the upper block's surface group heats its material (2); the one by id passes through.
+  ASSERT_EQ(m.thermal->sources.size(), 2u);
+  EXPECT_EQ(m.materials[static_cast<std::size_t>(m.thermal->sources[0].material)].id, 2);
+  EXPECT_EQ(m.thermal->sources[0].power_density, 1.5);
+  EXPECT_EQ(m.materials[static_cast<std::size_t>(m.thermal->sources[1].material)].id, 1);
+  EXPECT_EQ(m.thermal->sources[1].power_density, -0.5);
+  // The exact face pair carries its conductance to the contact pair.
+  ASSERT_TRUE(m.contact && m.contact->pairs.size() == 1);
+  ASSERT_TRUE(m.contact->pairs[0].conductance);
+  EXPECT_EQ(model["contact"]["pairs"][0]["conductance"], (json{{"closed", 5.0}, {"gas_conductivity", 0.01}}));
+  EXPECT_FALSE(model.contains("loads") && model["loads"].contains("temperatures"));
+}
+
+TEST(AssemblyImport, ThermalErrorsAtTheirPointers) {
+  const std::vector<BadValue> cases{
+      {"an unknown group", "/thermal/boundary/1/group", "topp", "/thermal/boundary/1/group", "did you mean \"top\"?"},
+      {"a surface as a boundary", "/thermal/boundary/0/group", "lower", "/thermal/boundary/0/group",
+       "a thermal boundary condition needs a curve (dimension 1)"},
+      {"a point as a boundary", "/thermal/boundary/0/group", "corner", "/thermal/boundary/0/group",
+       "has dimension 0 (point)"},
+      {"edges beside the group", "/thermal/boundary/0/edges", json{{1, 2}}, "/thermal/boundary/0/edges",
+       "remove edges"},
+      {"a curve as a source", "/thermal/sources/0/group", "top", "/thermal/sources/0/group",
+       "a heat source needs a surface (dimension 2)"},
+      {"a group holding part of a material", "/regions/1/material", 1, "/thermal/sources/0/group",
+       "is material 1 too, and group \"upper\" does not hold it"},
+      {"a material heated twice", "/thermal/sources/1/material", 2, "/thermal/sources/1/material",
+       "already heated by /thermal/sources/0"},
+      {"group and material", "/thermal/sources/0/material", 2, "/thermal/sources/0", "exactly one of them"},
+      {"an unknown material", "/thermal/sources/1/material", 7, "/thermal/sources/1/material", "not the id"},
+      // The values pass through: the model reader's findings keep their pointers.
+      {"a negative film", "/thermal/boundary/2/film", -0.5, "/thermal/boundary/2/film", "film"},
+      {"two kinds", "/thermal/boundary/1/temperature", 5.0, "/thermal/boundary/1", "exactly one of"},
+      {"a transient key in a steady run", "/thermal/end_time", 2.0, "/thermal/end_time", "transient"},
+      {"a source's power", "/thermal/sources/0/power_density", "hot", "/thermal/sources/0/power_density", ""},
+      {"a pair's conductance", "/gaps/pairs/0/conductance/closed", -1.0, "/gaps/pairs/0/conductance/closed", ""},
+      {"temperatures given too", "/loads/temperatures", json{{"default", 70.0}}, "/loads/temperatures",
+       "computed by /thermal"},
+  };
+  for (const BadValue& c : cases) {
+    json assembly = thermal_two_blocks();
+    assembly[json::json_pointer(c.at)] = c.value;
+    const InputIssue issue = single_issue(assembly, data_dir);
+    EXPECT_EQ(issue.pointer, c.pointer) << c.what << ": " << issue.detail;
+    EXPECT_NE(issue.detail.find(c.says), std::string::npos) << c.what << ": " << issue.detail;
+  }
+  // A classic face pair makes gap elements, which conduct by gaps.conductance, not by the pair's.
+  json classic = load(data_dir / "two_blocks.assembly.json");
+  classic["gaps"]["pairs"][0]["conductance"] = 1.0;
+  const InputIssue conductance = single_issue(classic, data_dir);
+  EXPECT_EQ(conductance.pointer, "/gaps/pairs/0/conductance");
+  EXPECT_NE(conductance.detail.find("gaps.conductance"), std::string::npos) << conductance.detail;
+}
+
+TEST(AssemblyImport, AFileThatIsNotAMesh) {
+  const Scratch scratch;
+  scratch.write("two_blocks.msh", "{\"this\": \"is JSON, not a mesh\"}\n");
+  const InputIssue issue = single_issue(load(data_dir / "two_blocks.assembly.json"), scratch.dir());
+  EXPECT_EQ(issue.pointer, "/mesh");
+  EXPECT_NE(issue.detail.find("Gmsh cannot read"), std::string::npos) << issue.detail;
+
+  const InputIssue missing = single_issue(load(data_dir / "two_blocks.assembly.json"), scratch.dir() / "elsewhere");
+  EXPECT_EQ(missing.pointer, "/mesh");
+  EXPECT_NE(missing.detail.find("does not exist"), std::string::npos) << missing.detail;
+}
+
+TEST(AssemblyImport, AMeshOutsideThePlaneZ0) {
+  const Scratch scratch;
+  scratch.write("two_blocks.msh", two_blocks_with("11 1 2.01 0", "11 1 2.01 0.25"));
+  const InputIssue issue = single_issue(load(data_dir / "two_blocks.assembly.json"), scratch.dir());
+  EXPECT_EQ(issue.pointer, "/mesh");
+  EXPECT_NE(issue.detail.find("outside the plane z = 0, first node 11 at (1, 2.01, 0.25)"), std::string::npos)
+      << issue.detail;
+}
+
+TEST(AssemblyImport, SecondOrderElementsAreRejectedByName) {
+  const Scratch scratch;
+  scratch.write("square.geo",
+                "Point(1) = {0, 0, 0, 0.5}; Point(2) = {1, 0, 0, 0.5}; Point(3) = {1, 1, 0, 0.5};\n"
+                "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 1};\n"
+                "Curve Loop(1) = {1, 2, 3}; Plane Surface(1) = {1};\n"
+                "Physical Surface(\"body\") = {1}; Physical Curve(\"base\") = {1};\n"
+                "Mesh.ElementOrder = 2;\n");
+  json assembly = load(data_dir / "two_blocks.assembly.json");
+  assembly["mesh"] = "square.geo";
+  const InputIssue issue = single_issue(assembly, scratch.dir());
+  EXPECT_EQ(issue.pointer, "/mesh");
+  EXPECT_NE(issue.detail.find("\"Triangle 6\""), std::string::npos) << issue.detail;
+  EXPECT_NE(issue.detail.find("only first-order"), std::string::npos) << issue.detail;
+}
+
+// ---- the gap geometry alone
+
+TEST(GapGenerator, ChainsMustBeOneOpenCurve) {
+  const std::vector<int> ids{10, 11, 12, 13};
+  const std::vector<std::array<int, 2>> open{{2, 1}, {0, 1}, {2, 3}};
+  EXPECT_EQ(io::order_chain(open, ids).nodes, (std::vector<int>{0, 1, 2, 3}));  // from the smaller end id
+  const std::vector<std::array<int, 2>> closed{{0, 1}, {1, 2}, {2, 0}};
+  EXPECT_NE(io::order_chain(closed, ids).problem.find("closed curve"), std::string::npos);
+  const std::vector<std::array<int, 2>> branched{{0, 1}, {1, 2}, {1, 3}};
+  EXPECT_NE(io::order_chain(branched, ids).problem.find("branches at node 11"), std::string::npos);
+  const std::vector<std::array<int, 2>> broken{{0, 1}, {2, 3}};
+  EXPECT_NE(io::order_chain(broken, ids).problem.find("one connected curve"), std::string::npos);
+}
+
+/// Two faces of a slanted gap: y = x (A, below) and y = x + c (B); M normal to them, at 135 degrees
+/// here because A's outward normal points up-left.
+TEST(GapGenerator, SlantedFacesPairAlongTheNormal) {
+  const Vec2 up_left = Vec2(-1, 1).normalized();
+  std::vector<Vec2> x;
+  for (int k = 0; k < 4; ++k) x.emplace_back(k, k);
+  for (int k = 0; k < 4; ++k) x.push_back(Vec2(k, k) + 0.01 * up_left);  // clearance 0.01 along the normal
+  const std::vector<int> ids{1, 2, 3, 4, 11, 12, 13, 14};
+  io::FaceChain a, b;
+  a.nodes = {0, 1, 2, 3};
+  b.nodes = {7, 6, 5, 4};  // the other way round
+  a.outward.assign(3, up_left);
+  b.outward.assign(3, -up_left);
+  const io::GapGeneration g = io::generate_gaps(a, b, x, ids, 0.1);
+  ASSERT_TRUE(g.problems.empty()) << g.problems.front();
+  ASSERT_EQ(g.gaps.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_NEAR(g.gaps[k].angle_deg, 135.0, 1e-9);
+    double twice_area = 0.0;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Vec2& p = x[static_cast<std::size_t>(g.gaps[k].nodes[i])];
+      const Vec2& q = x[static_cast<std::size_t>(g.gaps[k].nodes[(i + 1) % 4])];
+      twice_area += p.x() * q.y() - q.x() * p.y();
+    }
+    EXPECT_GT(twice_area, 0.0);  // counter-clockwise
+  }
+  EXPECT_EQ(g.pairs.front(), (std::pair<int, int>{0, 4}));
+
+  // A face with one node fewer: the unmatched node of B is named.
+  b.nodes = {7, 6, 5};
+  b.outward.assign(2, -up_left);
+  const io::GapGeneration fewer = io::generate_gaps(a, b, x, ids, 0.1);
+  ASSERT_FALSE(fewer.problems.empty());
+  EXPECT_NE(fewer.problems.front().find("node 1 at (0, 0)"), std::string::npos) << fewer.problems.front();
+}
+
+/// Generated angles pass the model reader's rule (solver/gap_faces.hpp), whatever the clearance; a
+/// pairing whose facing nodes are offset along the faces far more than the clearance would turn M
+/// along the faces, and is a problem of the generation naming the nodes.
+TEST(GapGenerator, GeneratedAnglesRunAcrossTheGapOrTheNodesAreNamed) {
+  const auto faces = [](double clearance, double offset, std::vector<Vec2>& x) {
+    x.clear();
+    for (int k = 0; k < 3; ++k) x.emplace_back(k, 0.0);                  // A: z = 0, 1 between nodes
+    for (int k = 0; k < 3; ++k) x.emplace_back(k + offset, clearance);   // B above it
+  };
+  const std::vector<int> ids{1, 2, 3, 11, 12, 13};
+  io::FaceChain a, b;
+  a.nodes = {0, 1, 2};
+  b.nodes = {3, 4, 5};
+  a.outward.assign(2, Vec2(0, 1));
+  b.outward.assign(2, Vec2(0, -1));
+  std::vector<Vec2> x;
+  for (double clearance : {0.01, 1.0, 3.0}) {  // thin, square and wider than long: all across
+    faces(clearance, 0.0, x);
+    const io::GapGeneration g = io::generate_gaps(a, b, x, ids, 0.1);
+    ASSERT_TRUE(g.problems.empty()) << g.problems.front();
+    for (const io::GeneratedGap& gap : g.gaps) {
+      std::array<Vec2, 4> corners{};
+      for (std::size_t i = 0; i < 4; ++i) corners[i] = x[static_cast<std::size_t>(gap.nodes[i])];
+      EXPECT_TRUE(runs_across(gap_faces(corners, 4, gap.angle_deg)));
+      EXPECT_NEAR(gap.angle_deg, 90.0, 1e-9);
+    }
+  }
+  // Offset 0.09 (within the 0.1 tolerance) across a clearance of 0.01: M at 6.3 degrees, along the faces.
+  faces(0.01, 0.09, x);
+  const io::GapGeneration sheared = io::generate_gaps(a, b, x, ids, 0.1);
+  ASSERT_EQ(sheared.problems.size(), 2U);
+  EXPECT_TRUE(sheared.gaps.empty());
+  EXPECT_NE(sheared.problems.front().find("between nodes 1-2 and 11-12 would have its M axis (6.3"), std::string::npos)
+      << sheared.problems.front();
+  EXPECT_NE(sheared.problems.front().find("more than 30 degrees off perpendicular to its faces"), std::string::npos)
+      << sheared.problems.front();
+}
+
+}  // namespace
+}  // namespace saasgaps

@@ -1,0 +1,84 @@
+// The mesher's output decoded as hostile input (io/mesher_protocol.hpp): a faithful round trip,
+// and every forged or truncated encoding refused with MeshError rather than read out of bounds.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+
+#include "io/mesher/mesher_protocol.hpp"
+
+namespace saasgaps::io {
+namespace {
+
+GmshMesh two_triangles() {
+  GmshMesh m;
+  m.node_tags = {1, 2, 3, 4};
+  m.r = {0, 1, 1, 0};
+  m.z = {0, 0, 1, 1};
+  m.faces = {{7, 1, 3, {0, 1, 2, -1}}, {8, 1, 3, {0, 2, 3, -1}}};
+  m.curves[1] = {{0, 1}};
+  m.points[1] = 0;
+  m.groups = {{2, 1, "body", {1}}, {1, 2, "", {1}}};
+  return m;
+}
+
+/// The encoding with the 4 bytes at `offset` replaced by `value`.
+std::string with_int(std::string bytes, std::size_t offset, std::int32_t value) {
+  std::memcpy(bytes.data() + offset, &value, sizeof value);
+  return bytes;
+}
+
+TEST(MesherProtocol, RoundTrip) {
+  const GmshMesh m = two_triangles();
+  const GmshMesh back = mesher::decode(mesher::encode(m), 100, "t.geo");
+  EXPECT_EQ(back.node_tags, m.node_tags);
+  EXPECT_EQ(back.r, m.r);
+  EXPECT_EQ(back.faces.size(), 2u);
+  EXPECT_EQ(back.faces[1].nodes, m.faces[1].nodes);
+  EXPECT_EQ(back.curves.at(1).front().b, 1);
+  EXPECT_EQ(back.points.at(1), 0);
+  EXPECT_EQ(back.groups[0].name, "body");
+  EXPECT_EQ(back.groups[1].entities, std::vector<int>{1});
+}
+
+TEST(MesherProtocol, ForgedOrTruncatedOutputIsRefused) {
+  const std::string good = mesher::encode(two_triangles());
+  for (std::size_t cut = 0; cut < good.size(); cut += 7) {
+    EXPECT_THROW(mesher::decode(good.substr(0, cut), 100, "t.geo"), MeshError) << cut;
+  }
+  EXPECT_THROW(mesher::decode(good + "x", 100, "t.geo"), MeshError);
+  // A node count far beyond the bytes: refused before anything is allocated.
+  std::string huge = good;
+  const std::uint64_t lie = std::uint64_t{1} << 60;
+  std::memcpy(huge.data() + 8, &lie, sizeof lie);
+  EXPECT_THROW(mesher::decode(huge, std::size_t{1} << 62, "t.geo"), MeshError);
+  // The first face's first node (after the header, 4 nodes, the face count, tag, surface, count).
+  const std::size_t first_face_node = 8 + 8 + 4 * 24 + 8 + 8 + 4 + 4;
+  EXPECT_THROW(mesher::decode(with_int(good, first_face_node, 4), 100, "t.geo"), MeshError);
+  EXPECT_THROW(mesher::decode(with_int(good, first_face_node, -1), 100, "t.geo"), MeshError);
+  EXPECT_THROW(mesher::decode(with_int(good, first_face_node - 4, 5), 100, "t.geo"), MeshError);  // 5 nodes
+}
+
+TEST(MesherProtocol, NodesBeyondTheLimitAreMeshTooLarge) {
+  try {
+    (void)mesher::decode(mesher::encode(two_triangles()), 3, "t.geo");
+    FAIL() << "decoded";
+  } catch (const MeshTooLarge& e) {
+    EXPECT_NE(std::string(e.what()).find("4 nodes, more than the limit of 3 nodes"), std::string::npos) << e.what();
+  }
+}
+
+/// The defaults and the output bound docs/import.md quotes.
+TEST(MesherProtocol, DocumentedLimits) {
+  const MeshLimits limits;
+  EXPECT_EQ(limits.max_nodes, 200000u);
+  EXPECT_EQ(limits.seconds, 60);
+  EXPECT_EQ(limits.memory_bytes, std::size_t{2} << 30);
+  EXPECT_EQ(limits.file_bytes, std::size_t{64} << 20);
+  EXPECT_EQ(mesher::output_limit(1000) - mesher::output_limit(0), 184000u);
+  EXPECT_EQ(mesher::output_limit(0), 16u + (1u << 20));
+  EXPECT_GE(concurrent_meshers(), 2);
+}
+
+}  // namespace
+}  // namespace saasgaps::io

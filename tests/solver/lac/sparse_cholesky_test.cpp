@@ -1,0 +1,72 @@
+// SparseCholesky::inverse_form (solver/sparse_cholesky.hpp): C A^-1 C' from forward solves over the
+// columns' reach equals the same product from whole solves.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "solver/lac/sparse_cholesky.hpp"
+#include "support/laplacian_grid.hpp"
+
+namespace saasgaps {
+namespace {
+
+using testing::Grid;
+
+/// C A^-1 C' column by column from whole solves: the reference.
+std::vector<double> by_whole_solves(SparseCholesky& cholesky, const SparseColumns& c, Index n) {
+  const std::size_t m = c.size();
+  std::vector<double> form(m * m), b(static_cast<std::size_t>(n)), x(static_cast<std::size_t>(n));
+  for (std::size_t j = 0; j < m; ++j) {
+    std::fill(b.begin(), b.end(), 0.0);
+    for (Index k = c.start[j]; k < c.start[j + 1]; ++k) b[c.row[k]] += c.value[k];
+    cholesky.solve(b, x);
+    for (std::size_t i = 0; i < m; ++i) {
+      double sum = 0.0;
+      for (Index k = c.start[i]; k < c.start[i + 1]; ++k) sum += c.value[k] * x[c.row[k]];
+      form[i + j * m] = sum;
+    }
+  }
+  return form;
+}
+
+TEST(SparseCholesky, InverseFormOverTheReachEqualsWholeSolves) {
+  const Grid grid(60, 0.01);
+  SparseCholesky cholesky(grid.pattern);
+  cholesky.factorize(grid.values);
+  // Rows along one edge of the grid (a contact surface's), each over two neighbours with
+  // weights of both signs, and one row far away whose reach is another branch of the tree.
+  SparseColumns c;
+  for (Index k = 0; k < 12; ++k) {
+    c.add(5 + k, 1.0 + 0.1 * static_cast<double>(k));
+    c.add(6 + k, -0.5);
+    c.end_column();
+  }
+  c.add(59 * 60 + 30, 2.0);
+  c.end_column();
+  const std::vector<double> form = cholesky.inverse_form(c);
+  const std::vector<double> expected = by_whole_solves(cholesky, c, grid.n());
+  ASSERT_EQ(form.size(), expected.size());
+  const double largest = *std::max_element(expected.begin(), expected.end());
+  for (std::size_t i = 0; i < form.size(); ++i) EXPECT_NEAR(form[i], expected[i], 1e-13 * largest) << "entry " << i;
+  // Symmetric to the last bit, and the far row couples to the edge's rows only weakly.
+  const std::size_t m = c.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    for (std::size_t j = 0; j < m; ++j) EXPECT_EQ(form[i + j * m], form[j + i * m]);
+  }
+}
+
+TEST(SparseCholesky, InverseFormOfNoColumnsIsEmptyAndTheFactorStillSolves) {
+  const Grid grid(10, 0.5);
+  SparseCholesky cholesky(grid.pattern);
+  cholesky.factorize(grid.values);
+  EXPECT_TRUE(cholesky.inverse_form(SparseColumns{}).empty());
+  std::vector<double> b(static_cast<std::size_t>(grid.n()), 1.0), x(b.size());
+  cholesky.solve(b, x);
+  EXPECT_GT(x[0], 0.0);
+}
+
+}  // namespace
+}  // namespace saasgaps
