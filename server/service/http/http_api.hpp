@@ -1,17 +1,22 @@
 #pragma once
-/// The HTTP API of docs/http-api.md on cpp-httplib: jobs, their iterations, events (Server-Sent Events),
-/// results, models, cancel, resume, delete, and the health check. Handlers only read and write the
-/// store; solving happens on the JobRunner's threads.
+/// The HTTP API of docs/http-api.md on cpp-httplib: the route table, and the handlers of the job
+/// routes (submit, import, list, show, iterations, thermal rows, model, units, cancel, resume,
+/// delete). Results (result_routes), events (event_stream), the probes (probes) and what runs around
+/// every route (request_hooks) have files of their own. Handlers only read and write the store;
+/// solving happens on the JobRunner's threads.
 
 #include <httplib.h>
 
-#include <atomic>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "service/http/event_stream.hpp"
 #include "service/http/request_guard.hpp"
+#include "service/http/result_routes.hpp"
 #include "service/runs/model_handoff.hpp"
 #include "service/store/event_hub.hpp"
 #include "service/store/job_store.hpp"
@@ -37,6 +42,7 @@ class HttpApi {
   void install(httplib::Server& server);
 
  private:
+  /// POST /v1/jobs: a model document, validated and queued.
   void submit(const httplib::Request& req, httplib::Response& res);
   /// Queues a validated model document (its text and its model) as a new job: 202 with Location.
   /// `parsed` (optional): the model read with its digest, handed to the worker that runs the job.
@@ -44,20 +50,31 @@ class HttpApi {
                std::shared_ptr<const ParsedModel> parsed = nullptr);
   /// POST /v1/imports: the model document of an uploaded assembly; with ?submit=true, queued as a job.
   void import_assembly(const httplib::Request& req, httplib::Response& res);
+  /// GET /v1/jobs: a page of jobs, newest first (?state=, ?page_size=, ?page_token=).
   void list(const httplib::Request& req, httplib::Response& res);
+  /// GET /v1/jobs/{id}: the job resource.
+  void show(const httplib::Request& req, httplib::Response& res);
+  /// GET /v1/jobs/{id}/iterations: its history rows after ?after=.
+  void iterations(const httplib::Request& req, httplib::Response& res);
+  /// GET /v1/jobs/{id}/thermal: its thermal history rows after ?after=.
+  void thermal(const httplib::Request& req, httplib::Response& res);
+  /// GET /v1/jobs/{id}/model: the submitted model document.
+  void model(const httplib::Request& req, httplib::Response& res);
+  /// GET /v1/jobs/{id}/units: the names of the model's units.
+  void units(const httplib::Request& req, httplib::Response& res);
+  /// POST /v1/jobs/{id}/cancel.
+  void cancel(const httplib::Request& req, httplib::Response& res);
+  /// POST /v1/jobs/{id}/resume, with the READ card's changes as its body.
   void resume(const httplib::Request& req, httplib::Response& res);
-  void events(const httplib::Request& req, httplib::Response& res);
-  /// Operations routes: /healthz, /readyz, /metrics.
-  void install_probes(httplib::Server& server);
-  /// The pre-routing guard, request ids, the access log and the 405 answers.
-  void install_guards(httplib::Server& server);
-  [[nodiscard]] bool ready(std::string& why);
+  /// DELETE /v1/jobs/{id}.
+  void remove(const httplib::Request& req, httplib::Response& res);
 
   JobStore& store_;
   EventHub& hub_;
   ApiOptions options_;
   RequestGuard guard_;
-  std::atomic<int> open_streams_{0};
+  EventStreams streams_;
+  ResultRoutes results_;
 };
 
 }  // namespace saasgaps::service

@@ -1,0 +1,33 @@
+#pragma once
+/// GET /v1/jobs/{id}/events: a job's events as Server-Sent Events, from the one after Last-Event-ID
+/// until the job finishes. Each open stream holds one of the server's HTTP threads, so their number
+/// is capped.
+
+#include <httplib.h>
+
+#include <atomic>
+
+#include "service/store/event_hub.hpp"
+#include "service/store/job_store.hpp"
+
+namespace saasgaps::service {
+
+class EventStreams {
+ public:
+  EventStreams(JobStore& store, EventHub& hub, int max_streams)
+      : store_(store), hub_(hub), max_streams_(max_streams) {}
+
+  /// Opens a job's stream: 404 for no job, 503 with Retry-After while max_streams are open.
+  void serve(const httplib::Request& req, httplib::Response& res);
+  /// Streams open now (reported by /healthz and /metrics).
+  [[nodiscard]] int open() const { return open_.load(); }
+  [[nodiscard]] int max_streams() const { return max_streams_; }
+
+ private:
+  JobStore& store_;
+  EventHub& hub_;
+  int max_streams_;
+  std::atomic<int> open_{0};
+};
+
+}  // namespace saasgaps::service
