@@ -24,6 +24,7 @@
 #include "service/http/http_api.hpp"
 #include "service/ops/log.hpp"
 #include "service/runs/job_runner.hpp"
+#include "service/store/database_lock.hpp"
 #include "service/store/event_hub.hpp"
 #include "service/store/job_store.hpp"
 #include "service/workers/slurm_executor.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 /// A job's states and the actions that move it, as one table: every allowed transition listed once
 /// (job_transitions()), with its guard; what the table does not list is refused. The store asks it
-/// before every change of a job's state (job_store.cpp, run_leases.cpp).
+/// before every change of a job's state (job_store.cpp, retention.cpp, run_leases.cpp).
 ///
 ///   (none)       submit          -> queued
 ///   queued       claim           -> running       a run starts: attempt + 1, a new lease

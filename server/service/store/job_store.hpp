@@ -4,8 +4,8 @@
 ///
 /// Every state change is one transaction together with the event that announces it; every finished
 /// iteration's history row and restart state commit together (with their event) before the next
-/// iteration starts. A single server owns a database at a time (see DatabaseLock), so on start-up
-/// every job still marked running was left by a dead server.
+/// iteration starts. A single server owns a database at a time (DatabaseLock, database_lock.hpp), so
+/// on start-up every job still marked running was left by a dead server.
 
 #include <chrono>
 #include <cstdint>
@@ -293,22 +293,6 @@ class JobStore {
   std::map<std::int64_t, HandedOn> handed_on_;
   std::mutex probe_mutex_;
   std::chrono::steady_clock::time_point last_probe_{};
-};
-
-/// An exclusive advisory lock (flock) on the database file itself: one server per database, whatever
-/// name reaches it (a hard link or another path to the same inode takes the same lock). Released by
-/// the kernel when the process dies, even by kill -9. Must outlive every connection to the file: the
-/// descriptor stays open until then, since closing a descriptor of the file would drop SQLite's own
-/// POSIX locks on it.
-class DatabaseLock {
- public:
-  explicit DatabaseLock(const std::string& database_path);
-  ~DatabaseLock();
-  DatabaseLock(const DatabaseLock&) = delete;
-  DatabaseLock& operator=(const DatabaseLock&) = delete;
-
- private:
-  int fd_ = -1;
 };
 
 }  // namespace saasgaps::service

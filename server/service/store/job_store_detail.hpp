@@ -1,7 +1,7 @@
 #pragma once
-/// Inside the job store: the connection pool and the row helpers that job_store.cpp (jobs, their
-/// rows and states) and run_leases.cpp (runs, leases, remote workers, Slurm) share. Not for use
-/// outside those two files.
+/// Inside the job store: the connection pool every store file leases from, and the helpers of
+/// run_leases.cpp (runs, leases, remote workers, Slurm) that the other store files call. Not for use
+/// outside the store's files.
 
 #include <condition_variable>
 #include <memory>
@@ -93,16 +93,6 @@ class JobStore::Pool {
 };
 
 namespace detail {
-
-/// Schema versions, applied in order (job_store.cpp); PRAGMA user_version records how far a
-/// database has come.
-extern const std::vector<const char*> migrations;
-
-std::optional<JobRecord> find_job(Connection& db, std::int64_t id);
-JobRecord require_job(Connection& db, std::int64_t id);
-/// Sets a job's state (and optional message / error) and records the state event.
-void change_state(Connection& db, std::int64_t job, JobState state, const std::optional<std::string>& message = {},
-                  const std::optional<std::string>& error = {});
 
 /// Starts a run of a queued or interrupted job: running, attempts + 1, a new lease (with_ticket: a
 /// new ticket instead, the lease to be drawn when the worker redeems it); returns what the run needs

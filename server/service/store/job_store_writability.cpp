@@ -18,6 +18,8 @@
 
 #include "io/json/json_text.hpp"
 #include "service/ops/log.hpp"
+#include "service/store/job_rows.hpp"
+#include "service/store/schema_migrations.hpp"
 
 namespace saasgaps::service {
 

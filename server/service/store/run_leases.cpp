@@ -5,6 +5,7 @@
 
 #include "io/json/fingerprint.hpp"
 #include "io/restart/state_codec.hpp"
+#include "service/store/job_rows.hpp"
 #include "service/store/job_store.hpp"
 #include "service/store/job_store_detail.hpp"
 

@@ -1,0 +1,85 @@
+#include "service/store/schema_migrations.hpp"
+
+namespace saasgaps::service {
+namespace detail {
+
+extern const std::vector<const char*> migrations = {
+    // 1: the first schema.
+    R"sql(
+    CREATE TABLE jobs (
+      id INTEGER PRIMARY KEY AUTOINCREMENT,
+      state TEXT NOT NULL,
+      title TEXT NOT NULL,
+      created_at TEXT NOT NULL,
+      started_at TEXT,
+      finished_at TEXT,
+      updated_at TEXT NOT NULL,
+      iteration INTEGER NOT NULL DEFAULT 0,
+      max_iterations INTEGER NOT NULL,
+      attempts INTEGER NOT NULL DEFAULT 0,
+      interruptions INTEGER NOT NULL DEFAULT 0,
+      cancel_requested INTEGER NOT NULL DEFAULT 0,
+      settings TEXT NOT NULL DEFAULT '{}',
+      lease_owner TEXT,
+      heartbeat_at TEXT,
+      idempotency_key TEXT UNIQUE,
+      request_digest TEXT,
+      error TEXT,
+      message TEXT
+    );
+    CREATE INDEX jobs_by_state ON jobs(state, id);
+    CREATE TABLE models (
+      job_id INTEGER PRIMARY KEY REFERENCES jobs(id) ON DELETE CASCADE,
+      document TEXT NOT NULL
+    );
+    CREATE TABLE iterations (
+      job_id INTEGER NOT NULL REFERENCES jobs(id) ON DELETE CASCADE,
+      iteration INTEGER NOT NULL,
+      row TEXT NOT NULL,
+      PRIMARY KEY (job_id, iteration)
+    ) WITHOUT ROWID;
+    CREATE TABLE states (
+      job_id INTEGER NOT NULL REFERENCES jobs(id) ON DELETE CASCADE,
+      iteration INTEGER NOT NULL,
+      state BLOB NOT NULL,
+      created_at TEXT NOT NULL,
+      PRIMARY KEY (job_id, iteration)
+    );
+    CREATE TABLE results (
+      job_id INTEGER PRIMARY KEY REFERENCES jobs(id) ON DELETE CASCADE,
+      document TEXT NOT NULL
+    );
+    CREATE TABLE events (
+      id INTEGER PRIMARY KEY AUTOINCREMENT,
+      job_id INTEGER NOT NULL REFERENCES jobs(id) ON DELETE CASCADE,
+      kind TEXT NOT NULL,
+      data TEXT NOT NULL,
+      created_at TEXT NOT NULL
+    );
+    CREATE INDEX events_by_job ON events(job_id, id);
+    )sql",
+    // 2: leases of runs (remote workers) and the Slurm job running each.
+    R"sql(
+    ALTER TABLE jobs ADD COLUMN lease_secret TEXT;
+    ALTER TABLE jobs ADD COLUMN slurm_job_id TEXT;
+    ALTER TABLE jobs ADD COLUMN slurm_state TEXT;
+    )sql",
+    // 3: the single-use ticket of a run handed to Slurm, and what a finish keeps of its spent lease.
+    R"sql(
+    ALTER TABLE jobs ADD COLUMN lease_ticket TEXT;
+    ALTER TABLE jobs ADD COLUMN finish_digest TEXT;
+    )sql",
+    // 4: the thermal history rows of runs with `thermal` (a table of their own: their key is the
+    // row's index in the run, not an iteration, and a database of older jobs simply has none).
+    R"sql(
+    CREATE TABLE thermal_rows (
+      job_id INTEGER NOT NULL REFERENCES jobs(id) ON DELETE CASCADE,
+      row_index INTEGER NOT NULL,
+      row TEXT NOT NULL,
+      PRIMARY KEY (job_id, row_index)
+    ) WITHOUT ROWID;
+    )sql",
+};
+
+}  // namespace detail
+}  // namespace saasgaps::service
