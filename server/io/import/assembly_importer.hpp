@@ -19,6 +19,7 @@
 
 #include "io/import/assembly_reader.hpp"
 #include "io/import/gap_generator.hpp"
+#include "io/import/generated_origins.hpp"
 #include "io/import/mesh_groups.hpp"
 #include "io/json/value_rules.hpp"
 #include "io/mesher/gmsh_mesh.hpp"
@@ -113,7 +114,6 @@ class Importer {
   void thermal(json& model);
   void thermal_boundary(const json& list, const std::string& p, json& out);
   void thermal_sources(const json& list, const std::string& p, json& out);
-  void validate(const json& model);
 
   const json& doc_;
   fs::path base_;
@@ -126,16 +126,7 @@ class Importer {
   std::optional<MeshGroups> groups_;  ///< once the mesh is loaded
   std::set<int> material_ids_;
   std::map<int, int> surface_material_;  ///< Gmsh surface tag -> material id, from regions
-  /// A generated pointer and the assembly value it comes from, so that the model reader's findings
-  /// are reported where the user wrote them: a finding at `generated` or below it is reported at
-  /// `written`, as "the generated <pointer>: ..." or, when `same_keys` (the generated object has the
-  /// assembly object's keys), at `written` with the rest of the pointer, as the reader words it.
-  struct Origin {
-    std::string generated;
-    std::string written;
-    bool same_keys = false;
-  };
-  std::vector<Origin> origins_;
+  GeneratedOrigins origins_;
 };
 
 }  // namespace saasgaps::io::assembly

@@ -19,16 +19,12 @@
 #include "io/json/value_quote.hpp"
 #include "io/json/value_rules.hpp"
 #include "io/mesher/gmsh_mesh.hpp"
-#include "io/model/model_reader.hpp"
 #include "solver/base/errors.hpp"
+#include "solver/model/loads.hpp"
 
 namespace saasgaps::io {
 
 namespace assembly {
-
-/// Sections of the model document the importer writes itself; the rest pass through.
-constexpr std::array<std::string_view, 6> generated_sections{"/nodes", "/elements", "/constraints", "/gaps/elements",
-                                                             "/loads/", "/contact"};
 
 constexpr double default_pair_tolerance = 0.1;
 
@@ -462,7 +458,7 @@ void Importer::contact_pair(const json& pair, const std::string& p, json& contac
     return;
   }
   const std::string pair_at = pointer_append("/contact/pairs", contact["pairs"].size());
-  origins_.push_back({pair_at, p.substr(0, p.rfind('/')), true});
+  origins_.add(pair_at, p.substr(0, p.rfind('/')), true);
   json generated = {{"surfaces", {contact["surfaces"][*a]["name"], contact["surfaces"][*b]["name"]}}};
   for (const char* key : {"friction", "conductance"}) {
     if (pair.contains(key)) generated[key] = pair[key];
@@ -490,7 +486,7 @@ std::optional<std::size_t> Importer::contact_surface(const json& name, const std
     report(p, "curve group \"" + g->name + "\" has no line elements");
     return std::nullopt;
   }
-  origins_.push_back({pointer_append("/contact/surfaces", surfaces.size()), p});
+  origins_.add(pointer_append("/contact/surfaces", surfaces.size()), p);
   surfaces.push_back({{"name", g->name}, {"edges", std::move(edges)}});
   return surfaces.size() - 1;
 }
@@ -595,31 +591,6 @@ void Importer::gaps(json& model) {
   model["gaps"] = std::move(settings);
 }
 
-/// The model reader judges the result; pass-through blocks keep their pointers.
-void Importer::validate(const json& model) {
-  try {
-    (void)read_model(model);
-  } catch (const ModelError& e) {
-    for (const InputIssue& issue : e.issues()) {
-      const bool generated = std::any_of(generated_sections.begin(), generated_sections.end(), [&](std::string_view s) {
-        return issue.pointer.starts_with(s) && !issue.pointer.starts_with("/loads/body_force");
-      });
-      const auto origin = std::find_if(origins_.begin(), origins_.end(), [&](const Origin& o) {
-        return issue.pointer == o.generated || issue.pointer.starts_with(o.generated + "/");
-      });
-      if (origin != origins_.end() && origin->same_keys) {
-        report(origin->written + issue.pointer.substr(origin->generated.size()), issue.detail);
-      } else if (origin != origins_.end()) {
-        report(origin->written, "the generated " + issue.pointer + ": " + issue.detail);
-      } else if (generated) {
-        report("/mesh", "the generated model's " + issue.pointer + ": " + issue.detail);
-      } else {
-        report(issue.pointer, issue.detail);
-      }
-    }
-  }
-}
-
 json Importer::run() {
   if (!object(doc_, "", {"schema_version", "title", "mesh", "analysis", "materials", "regions", "constraints"},
               {"description", "units", "loads", "gaps", "thermal", "solver", "output"})) {
@@ -663,7 +634,12 @@ json Importer::run() {
   for (const char* key : {"solver", "output"}) {
     if (const auto v = doc_.find(key); v != doc_.end()) model[key] = *v;
   }
-  if (issues_.empty()) validate(model);
+  // The model reader judges the result only when the assembly's own checks found nothing: a model
+  // generated from a faulty assembly lacks what could not be generated, and its findings would be
+  // about that.
+  if (issues_.empty()) {
+    for (InputIssue& finding : origins_.findings(model)) report(std::move(finding.pointer), std::move(finding.detail));
+  }
   if (!issues_.empty()) throw ModelError(std::move(issues_), "assembly");
   return model;
 }
