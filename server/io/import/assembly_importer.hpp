@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/import/assembly_files.hpp"
 #include "io/import/assembly_reader.hpp"
 #include "io/import/gap_generator.hpp"
 #include "io/import/generated_origins.hpp"
@@ -39,21 +40,13 @@ struct GroupUse {
 
 class Importer {
  public:
-  Importer(const json& assembly, fs::path base, FileAccess access)
-      : doc_(assembly), base_(std::move(base)), access_(access) {}
+  Importer(const json& assembly, fs::path base, FileAccess access) : doc_(assembly), files_(std::move(base), access) {}
 
   json run();
 
  private:
   void report(std::string pointer, std::string detail) {
-    // An upload's files sit in a private directory the client never saw: name them as uploaded.
-    if (access_ == FileAccess::base_only) {
-      const std::string directory = (base_ / "").string();
-      for (std::size_t at = detail.find(directory); at != std::string::npos; at = detail.find(directory, at)) {
-        detail.erase(at, directory.size());
-      }
-    }
-    issues_.push_back({std::move(pointer), std::move(detail)});
+    issues_.push_back({std::move(pointer), files_.as_named(std::move(detail))});
   }
   /// report() as a callable, for the shared checks of value_rules.hpp.
   auto reporter() {
@@ -116,8 +109,7 @@ class Importer {
   void thermal_sources(const json& list, const std::string& p, json& out);
 
   const json& doc_;
-  fs::path base_;
-  FileAccess access_;
+  AssemblyFiles files_;
   std::vector<InputIssue> issues_;
   GmshMesh mesh_;
   bool mesh_loaded_ = false;

@@ -56,18 +56,10 @@ std::optional<std::string> Importer::string(const json& o, const std::string& p,
 // ---- the mesh and its groups
 
 std::optional<fs::path> Importer::resolve_file(const std::string& name, const std::string& pointer) {
-  const fs::path given(name);
-  if (access_ == FileAccess::base_only &&
-      (given.filename() != given || name.empty() || name.front() == '.' || name.find('\\') != std::string::npos)) {
-    report(pointer, "\"" + name + "\" must be the plain name of an uploaded file (no directories)");
-    return std::nullopt;
-  }
-  if (access_ == FileAccess::base_only && !fs::exists(base_ / given)) {
-    report(pointer, "no part of the upload carries the file \"" + name + "\": add a part with filename=\"" + name +
-                        "\" (curl -F 'file=@" + name + "')");
-    return std::nullopt;
-  }
-  return given.is_absolute() ? given : base_ / given;
+  std::string problem;
+  auto path = files_.resolve(name, problem);
+  if (!path) report(pointer, std::move(problem));
+  return path;
 }
 
 void Importer::load_mesh() {
