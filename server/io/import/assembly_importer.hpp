@@ -53,7 +53,7 @@ class Importer {
     return [this](const std::string& pointer, std::string detail) { report(pointer, std::move(detail)); };
   }
 
-  // ---- shape checks
+  // ---- shape checks (assembly_checks.cpp)
   bool object(const json& v, const std::string& p, std::initializer_list<std::string_view> required,
               std::initializer_list<std::string_view> optional);
   /// parent[key] when it is an array (non-empty if asked); nullptr when absent (object() reports a
@@ -62,12 +62,15 @@ class Importer {
   std::optional<double> number(const json& o, const std::string& p, std::string_view key,
                                const Range& range = any_number);
   std::optional<std::string> string(const json& o, const std::string& p, std::string_view key);
-
   /// The file `name` (the value at `pointer`) names, or nullopt (reported) when it may not be read.
   std::optional<fs::path> resolve_file(const std::string& name, const std::string& pointer);
 
-  // ---- the mesh and its groups
+  // ---- the mesh and its groups (assembly_mesh.cpp)
   void load_mesh();
+  /// The mesh's nodes as the model's, by their Gmsh tags.
+  void nodes(json& model) const;
+  /// The largest |r| or |z| of the mesh's nodes: the scale of round-off and of position tolerances.
+  double extent() const;
   /// The group o["group"] names (reported at <p>/group when missing, misspelt or of the wrong dimension).
   const PhysicalGroup* group(const json& o, const std::string& p, const GroupUse& use);
   const PhysicalGroup* named_group(const json& name, const std::string& at, const GroupUse& use);

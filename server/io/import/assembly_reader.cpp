@@ -28,98 +28,6 @@ namespace assembly {
 
 constexpr double default_pair_tolerance = 0.1;
 
-// ---- shape checks
-
-bool Importer::object(const json& v, const std::string& p, std::initializer_list<std::string_view> required,
-                      std::initializer_list<std::string_view> optional) {
-  return check_object(v, p, {required.begin(), required.size()}, {optional.begin(), optional.size()}, reporter());
-}
-
-const json* Importer::array(const json& parent, const std::string& p, std::string_view key, bool non_empty) {
-  const auto it = parent.find(key);
-  if (it == parent.end()) return nullptr;
-  return check_array(*it, pointer_append(p, key), key, non_empty ? 1 : 0, reporter());
-}
-
-std::optional<double> Importer::number(const json& o, const std::string& p, std::string_view key, const Range& range) {
-  const auto it = o.find(key);
-  if (it == o.end()) return std::nullopt;
-  return check_number(*it, pointer_append(p, key), key, range, reporter());
-}
-
-std::optional<std::string> Importer::string(const json& o, const std::string& p, std::string_view key) {
-  const auto it = o.find(key);
-  if (it == o.end()) return std::nullopt;
-  return check_string(*it, pointer_append(p, key), key, reporter());
-}
-
-// ---- the mesh and its groups
-
-std::optional<fs::path> Importer::resolve_file(const std::string& name, const std::string& pointer) {
-  std::string problem;
-  auto path = files_.resolve(name, problem);
-  if (!path) report(pointer, std::move(problem));
-  return path;
-}
-
-void Importer::load_mesh() {
-  const auto name = string(doc_, "", "mesh");
-  if (!name) return;
-  const auto path = resolve_file(*name, "/mesh");
-  if (!path) return;
-  try {
-    mesh_ = read_gmsh_mesh(*path);
-  } catch (const MeshTooLarge&) {
-    throw;  // a limit, not a defect of the assembly: the service answers 413
-  } catch (const MeshError& e) {
-    report("/mesh", e.what());
-    return;
-  }
-  for (const MeshFace& f : mesh_.faces) {
-    if (f.tag > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
-      report("/mesh", "element tag " + std::to_string(f.tag) + " is beyond the largest element id (2147483647)");
-      return;
-    }
-  }
-  mesh_loaded_ = true;
-  groups_.emplace(mesh_);
-  positions_.reserve(mesh_.r.size());
-  for (std::size_t i = 0; i < mesh_.r.size(); ++i) {
-    positions_.emplace_back(mesh_.r[i], mesh_.z[i]);
-    ids_.push_back(static_cast<int>(mesh_.node_tags[i]));
-  }
-}
-
-const PhysicalGroup* Importer::group(const json& o, const std::string& p, const GroupUse& use) {
-  const auto it = o.find("group");
-  if (it == o.end()) return nullptr;  // reported by object()
-  return named_group(*it, pointer_append(p, "group"), use);
-}
-
-const PhysicalGroup* Importer::named_group(const json& value, const std::string& at, const GroupUse& use) {
-  if (!value.is_string()) {
-    report(at, "a physical group name must be a string, got " + describe(value));
-    return nullptr;
-  }
-  if (!groups_) return nullptr;
-  std::string problem;
-  const PhysicalGroup* g = groups_->find(value.get<std::string>(), use.dims, use.role, use.needs, problem);
-  if (g == nullptr) report(at, problem);
-  return g;
-}
-
-std::vector<int> Importer::group_nodes(const PhysicalGroup& g, const std::string& p) {
-  bool off_mesh = false;
-  std::vector<int> nodes = groups_->nodes(g, off_mesh);
-  if (off_mesh) {
-    report(pointer_append(p, "group"), "physical group \"" + g.name + "\" has nodes (or unmeshed points) that no "
-                                       "surface element uses; it must lie on the meshed surfaces");
-  } else if (nodes.empty()) {
-    report(pointer_append(p, "group"), "physical group \"" + g.name + "\" holds no mesh nodes");
-  }
-  return nodes;
-}
-
 // ---- sections
 
 /// regions: [{group (surface), material, angle?}]; every surface element gets exactly one.
@@ -251,33 +159,6 @@ void Importer::pressures(const json& loads, const std::string& lp, json& out) {
   }
 }
 
-std::optional<std::vector<Importer::BoundaryEdge>> Importer::boundary_edges(const PhysicalGroup& g, const std::string& p,
-                                                                            std::string_view use) {
-  const auto edges = groups_->edges(g);
-  if (edges.empty()) {
-    report(pointer_append(p, "group"), "physical group \"" + g.name + "\" has no line elements");
-    return std::nullopt;
-  }
-  std::vector<BoundaryEdge> out;
-  for (const auto& [a, b] : edges) {
-    const std::vector<int> owner = a < 0 || b < 0 ? std::vector<int>{} : groups_->owners(a, b);
-    if (owner.size() != 1) {
-      report(pointer_append(p, "group"),
-             "curve group \"" + g.name + "\" is not on the boundary of the meshed surfaces" +
-                 (a >= 0 && b >= 0 ? " (edge " + std::to_string(tag_of(a)) + "-" + std::to_string(tag_of(b)) + " has " +
-                                         std::to_string(owner.size()) + " elements; " + std::string(use) +
-                                         " acts on an edge of exactly one)"
-                                   : std::string()));
-      return std::nullopt;
-    }
-    const MeshFace& f = mesh_.faces[static_cast<std::size_t>(owner.front())];
-    const auto k = static_cast<int>(std::find(f.nodes.begin(), f.nodes.begin() + f.count, a) - f.nodes.begin());
-    const bool along = f.nodes[static_cast<std::size_t>((k + 1) % f.count)] == b;
-    out.push_back(along ? BoundaryEdge{a, b, owner.front()} : BoundaryEdge{b, a, owner.front()});
-  }
-  return out;
-}
-
 /// nodal_forces: [{group (points), fr?, fz?}]: the force at each point of the group.
 void Importer::nodal_forces(const json& loads, const std::string& lp, json& out) {
   const json* list = array(loads, lp, "nodal_forces", false);
@@ -361,9 +242,7 @@ void Importer::temperature_file(const json& file, const std::string& p, std::vec
     report(pointer_append(p, "path"), e.what());
     return;
   }
-  double extent = 0.0;
-  for (const Vec2& x : positions_) extent = std::max({extent, std::fabs(x.x()), std::fabs(x.y())});
-  const double tolerance = tolerance_given.value_or(1e-6 * std::max(extent, 1e-300));
+  const double tolerance = tolerance_given.value_or(1e-6 * std::max(extent(), 1e-300));
   const std::vector<int> matched = match_rows(values, mesh_.node_tags, mesh_.r, mesh_.z, tolerance);
   const std::string at = pointer_append(p, "path");
   std::size_t unmatched = 0;
@@ -604,20 +483,7 @@ json Importer::run() {
     }
   }
   load_mesh();
-  if (mesh_loaded_) {
-    // On the axis of an axisymmetric section Gmsh may place a node a round-off left of r = 0.
-    const auto analysis = doc_.find("analysis");
-    const bool axisymmetric = analysis != doc_.end() && analysis->is_object() &&
-                              analysis->value("type", json()) == "axisymmetric";
-    double extent = 0.0;
-    for (const Vec2& x : positions_) extent = std::max({extent, std::fabs(x.x()), std::fabs(x.y())});
-    json& nodes = model["nodes"] = json::array();
-    for (std::size_t n = 0; n < positions_.size(); ++n) {
-      double r = positions_[n].x();
-      if (axisymmetric && r < 0.0 && r > -1e-12 * extent) r = 0.0;
-      nodes.push_back({{"id", ids_[n]}, {"r", r}, {"z", positions_[n].y()}});
-    }
-  }
+  nodes(model);
   regions(model);
   gaps(model);
   constraints(model);
