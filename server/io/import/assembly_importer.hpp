@@ -89,9 +89,15 @@ class Importer {
   std::optional<std::vector<BoundaryEdge>> boundary_edges(const PhysicalGroup& g, const std::string& p,
                                                           std::string_view use);
 
-  // ---- sections
+  // ---- materials and regions (assembly_regions.cpp)
+  /// The ids of /materials, which regions and thermal sources name.
+  void read_material_ids();
   void regions(json& model);
+
+  // ---- constraints (assembly_constraints.cpp)
   void constraints(json& model);
+
+  // ---- sections
   void loads(json& model);
   void pressures(const json& loads, const std::string& p, json& out);
   void nodal_forces(const json& loads, const std::string& p, json& out);

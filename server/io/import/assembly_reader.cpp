@@ -30,102 +30,6 @@ constexpr double default_pair_tolerance = 0.1;
 
 // ---- sections
 
-/// regions: [{group (surface), material, angle?}]; every surface element gets exactly one.
-void Importer::regions(json& model) {
-  const json* list = array(doc_, "", "regions", true);
-  if (list == nullptr || !mesh_loaded_) return;
-  std::map<int, std::pair<int, double>> surface_material;  // surface -> (material id, angle)
-  std::map<int, std::string> surface_pointer;
-  bool complete = true;
-  for (std::size_t i = 0; i < list->size(); ++i) {
-    const std::string p = pointer_append("/regions", i);
-    const json& o = (*list)[i];
-    if (!object(o, p, {"group", "material"}, {"angle"})) continue;
-    const PhysicalGroup* g = group(o, p, {{2}, "a region", "a surface (dimension 2)"});
-    const double angle = number(o, p, "angle").value_or(0.0);
-    const auto m = o.find("material");
-    if (m == o.end()) {
-      complete = false;  // reported by object()
-      continue;
-    }
-    if (!m->is_number_integer() || !material_ids_.contains(m->get<int>())) {
-      report(pointer_append(p, "material"), "material " + quote(*m) + " is not the id of an entry of /materials");
-      complete = false;
-      continue;
-    }
-    if (g == nullptr) {
-      complete = false;
-      continue;
-    }
-    for (const int surface : g->entities) {
-      const auto [first, fresh] = surface_pointer.emplace(surface, pointer_append(p, "group"));
-      if (!fresh) {
-        report(pointer_append(p, "group"), "surface " + std::to_string(surface) + " of group \"" + g->name +
-                                               "\" already has a material from " + first->second +
-                                               "; give each surface one region");
-        continue;
-      }
-      surface_material[surface] = {m->get<int>(), angle};
-      surface_material_[surface] = m->get<int>();
-    }
-  }
-  if (!complete) return;
-  json& elements = model["elements"] = json::array();
-  std::map<int, std::size_t> missing;  // surface -> elements without a region
-  for (const MeshFace& f : mesh_.faces) {
-    const auto it = surface_material.find(f.surface);
-    if (it == surface_material.end()) {
-      ++missing[f.surface];
-      continue;
-    }
-    json nodes = json::array();
-    for (int k = 0; k < f.count; ++k) nodes.push_back(tag_of(f.nodes[static_cast<std::size_t>(k)]));
-    json e = {{"id", static_cast<int>(f.tag)}, {"nodes", std::move(nodes)}, {"material", it->second.first}};
-    if (it->second.second != 0.0) e["angle"] = it->second.second;
-    elements.push_back(std::move(e));
-  }
-  for (const auto& [surface, count] : missing) {
-    report("/regions", "surface " + std::to_string(surface) + " of the mesh (" + std::to_string(count) +
-                           " elements) is in no region; put it in a physical surface named by a region");
-  }
-}
-
-/// constraints: [{group (point or curve), r?, z?}]; a node's component prescribed twice must agree.
-void Importer::constraints(json& model) {
-  const json* list = array(doc_, "", "constraints", true);
-  if (list == nullptr || !mesh_loaded_) return;
-  // node -> component -> (value, pointer); std::map keeps the output in node order.
-  std::map<int, std::map<char, std::pair<double, std::string>>> prescribed;
-  for (std::size_t i = 0; i < list->size(); ++i) {
-    const std::string p = pointer_append("/constraints", i);
-    const json& o = (*list)[i];
-    if (!object(o, p, {"group"}, {"r", "z"})) continue;
-    if (!o.contains("r") && !o.contains("z")) report(p, "the constraint prescribes neither r nor z; give r and/or z");
-    const PhysicalGroup* g = group(o, p, {{0, 1}, "a constraint", "points or curves (dimension 0 or 1)"});
-    std::map<char, double> values;
-    for (const char c : {'r', 'z'}) {
-      if (const auto v = number(o, p, std::string(1, c))) values[c] = *v;
-    }
-    if (g == nullptr) continue;
-    for (const int node : group_nodes(*g, p)) {
-      for (const auto& [c, v] : values) {
-        const std::string at = pointer_append(p, std::string(1, c));
-        const auto [first, fresh] = prescribed[node].emplace(c, std::pair{v, at});
-        if (!fresh && first->second.first != v) {
-          report(at, std::string(1, c) + " = " + json(v).dump() + " of node " + std::to_string(tag_of(node)) +
-                         " contradicts " + json(first->second.first).dump() + " from " + first->second.second);
-        }
-      }
-    }
-  }
-  json& out = model["constraints"] = json::array();
-  for (const auto& [node, components] : prescribed) {
-    json c = {{"node", tag_of(node)}};
-    for (const auto& [component, value] : components) c[std::string(1, component)] = value.first;
-    out.push_back(std::move(c));
-  }
-}
-
 void Importer::loads(json& model) {
   const auto it = doc_.find("loads");
   if (it == doc_.end()) return;
@@ -475,13 +379,7 @@ json Importer::run() {
   for (const char* key : {"title", "description", "units", "analysis", "materials"}) {
     if (const auto v = doc_.find(key); v != doc_.end()) model[key] = *v;
   }
-  if (const auto m = doc_.find("materials"); m != doc_.end() && m->is_array()) {
-    for (const json& material : *m) {
-      if (material.is_object() && material.contains("id") && material["id"].is_number_integer()) {
-        material_ids_.insert(material["id"].get<int>());
-      }
-    }
-  }
+  read_material_ids();
   load_mesh();
   nodes(model);
   regions(model);
