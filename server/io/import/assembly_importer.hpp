@@ -97,13 +97,15 @@ class Importer {
   // ---- constraints (assembly_constraints.cpp)
   void constraints(json& model);
 
-  // ---- sections
+  // ---- loads (assembly_loads.cpp)
   void loads(json& model);
   void pressures(const json& loads, const std::string& p, json& out);
   void nodal_forces(const json& loads, const std::string& p, json& out);
   void temperatures(const json& loads, const std::string& p, json& out);
   void temperature_file(const json& file, const std::string& p, std::vector<std::optional<double>>& T,
                         std::vector<std::string>& source);
+
+  // ---- gap face pairs and contact surfaces
   void gaps(json& model);
   std::optional<FaceChain> face(const json& name, const std::string& p);
   /// An exact face pair {faces: [A, B], friction?, conductance?} (its faces at p) as a contact pair of
