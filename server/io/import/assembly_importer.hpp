@@ -105,9 +105,13 @@ class Importer {
   void temperature_file(const json& file, const std::string& p, std::vector<std::optional<double>>& T,
                         std::vector<std::string>& source);
 
-  // ---- gap face pairs and contact surfaces
+  // ---- gap face pairs (assembly_gaps.cpp) and contact surfaces (assembly_contact.cpp)
   void gaps(json& model);
+  /// The face pairs as gap elements, appended to `elements`.
+  void gap_elements(const json& pairs, json& elements);
   std::optional<FaceChain> face(const json& name, const std::string& p);
+  /// The face pairs of gaps.method "exact" as the model's contact pairs and their surfaces.
+  void contact_pairs(const json& pairs, json& model);
   /// An exact face pair {faces: [A, B], friction?, conductance?} (its faces at p) as a contact pair of
   /// two surfaces in `contact`.
   void contact_pair(const json& pair, const std::string& p, json& contact);
