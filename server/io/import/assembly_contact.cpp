@@ -6,31 +6,25 @@
 #include <algorithm>
 #include <set>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "io/json/json_pointer.hpp"
-#include "io/json/value_quote.hpp"
 
 namespace saasgaps::io::assembly {
+
+/// Why an exact face pair takes no first_id or tolerance, said after the key.
+constexpr std::string_view for_gap_elements_only =
+    " concerns generated gap elements, and with gaps.method \"exact\" a face pair becomes contact surfaces instead "
+    "(docs/import.md); remove it";
 
 void Importer::contact_pairs(const json& pairs, json& model) {
   json contact = {{"surfaces", json::array()}, {"pairs", json::array()}};
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const std::string p = pointer_append("/gaps/pairs", i);
     const json& o = pairs[i];
-    if (!object(o, p, {"faces"}, {"first_id", "tolerance", "friction", "conductance"})) continue;
-    for (const char* key : {"first_id", "tolerance"}) {
-      if (o.contains(key)) {
-        report(pointer_append(p, key), std::string(key) + " concerns generated gap elements, and with gaps.method "
-               "\"exact\" a face pair becomes contact surfaces instead (docs/import.md); remove it");
-      }
-    }
-    const auto faces = o.find("faces");
-    if (faces == o.end()) continue;
-    if (!faces->is_array() || faces->size() != 2) {
-      report(pointer_append(p, "faces"), "faces must name two curve groups, got " + describe(*faces));
-      continue;
-    }
+    if (!pair_keys(o, p, {"first_id", "tolerance"}, for_gap_elements_only)) continue;
+    if (pair_faces(o, p) == nullptr) continue;
     contact_pair(o, pointer_append(p, "faces"), contact);
   }
   if (!contact["pairs"].empty()) model["contact"] = std::move(contact);

@@ -1,13 +1,14 @@
 /// The assembly's `gaps` section (docs/import.md): its settings pass through, and its face pairs
 /// [{faces: [curve, curve], first_id?, tolerance?}] become the model's gaps.elements, generated
 /// between the two faces (gap_generator.hpp), or with method "exact" contact surfaces and pairs
-/// (assembly_contact.cpp).
+/// (assembly_contact.cpp). What both methods ask of a face pair's shape is here too.
 #include "io/import/assembly_importer.hpp"
 
 #include <algorithm>
 #include <limits>
 #include <set>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -19,6 +20,10 @@
 namespace saasgaps::io::assembly {
 
 constexpr double default_pair_tolerance = 0.1;
+/// Why a face pair that becomes gap elements takes no friction or conductance, said after the key.
+constexpr std::string_view for_contact_pairs_only =
+    " belongs to a contact pair, which a face pair becomes with gaps.method \"exact\" (docs/import.md); gap "
+    "elements conduct by gaps.conductance and have no friction";
 
 void Importer::gaps(json& model) {
   const auto it = doc_.find("gaps");
@@ -48,6 +53,25 @@ void Importer::gaps(json& model) {
   model["gaps"] = std::move(settings);
 }
 
+bool Importer::pair_keys(const json& o, const std::string& p, std::initializer_list<const char*> foreign,
+                         std::string_view why) {
+  if (!object(o, p, {"faces"}, {"first_id", "tolerance", "friction", "conductance"})) return false;
+  for (const char* key : foreign) {
+    if (o.contains(key)) report(pointer_append(p, key), std::string(key) + std::string(why));
+  }
+  return true;
+}
+
+const json* Importer::pair_faces(const json& o, const std::string& p) {
+  const auto faces = o.find("faces");
+  if (faces == o.end()) return nullptr;
+  if (!faces->is_array() || faces->size() != 2) {
+    report(pointer_append(p, "faces"), "faces must name two curve groups, got " + describe(*faces));
+    return nullptr;
+  }
+  return &*faces;
+}
+
 /// Each pair's elements take the ids from its first_id up, or else from the one after the largest
 /// id taken; an id may not repeat an element's or an earlier pair's.
 void Importer::gap_elements(const json& pairs, json& elements) {
@@ -60,13 +84,7 @@ void Importer::gap_elements(const json& pairs, json& elements) {
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const std::string p = pointer_append("/gaps/pairs", i);
     const json& o = pairs[i];
-    if (!object(o, p, {"faces"}, {"first_id", "tolerance", "friction", "conductance"})) continue;
-    for (const char* key : {"friction", "conductance"}) {
-      if (o.contains(key)) {
-        report(pointer_append(p, key), std::string(key) + " belongs to a contact pair, which a face pair becomes with "
-               "gaps.method \"exact\" (docs/import.md); gap elements conduct by gaps.conductance and have no friction");
-      }
-    }
+    if (!pair_keys(o, p, {"friction", "conductance"}, for_contact_pairs_only)) continue;
     const double tolerance = number(o, p, "tolerance", positive).value_or(default_pair_tolerance);
     long long id = next_id;
     if (const auto first = o.find("first_id"); first != o.end()) {
@@ -76,12 +94,8 @@ void Importer::gap_elements(const json& pairs, json& elements) {
       }
       id = first->get<long long>();
     }
-    const auto faces = o.find("faces");
-    if (faces == o.end()) continue;
-    if (!faces->is_array() || faces->size() != 2) {
-      report(pointer_append(p, "faces"), "faces must name two curve groups, got " + describe(*faces));
-      continue;
-    }
+    const json* faces = pair_faces(o, p);
+    if (faces == nullptr) continue;
     const auto a = face((*faces)[0], pointer_append(pointer_append(p, "faces"), std::size_t{0}));
     const auto b = face((*faces)[1], pointer_append(pointer_append(p, "faces"), std::size_t{1}));
     if (!a || !b) continue;

@@ -107,6 +107,11 @@ class Importer {
 
   // ---- gap face pairs (assembly_gaps.cpp) and contact surfaces (assembly_contact.cpp)
   void gaps(json& model);
+  /// Whether face pair o (at p) is an object; a key of `foreign`, which belongs to the other method,
+  /// is reported with `why` after its name.
+  bool pair_keys(const json& o, const std::string& p, std::initializer_list<const char*> foreign, std::string_view why);
+  /// o["faces"] when it is an array of two; nullptr when absent (object() reports it) or reported.
+  const json* pair_faces(const json& o, const std::string& p);
   /// The face pairs as gap elements, appended to `elements`.
   void gap_elements(const json& pairs, json& elements);
   std::optional<FaceChain> face(const json& name, const std::string& p);
