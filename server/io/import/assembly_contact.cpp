@@ -4,6 +4,7 @@
 #include "io/import/assembly_importer.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>

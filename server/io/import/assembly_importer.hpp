@@ -1,10 +1,16 @@
 #pragma once
 /// The assembly importer's state and steps (internal to io; import_assembly in
-/// io/assembly_reader.hpp is the interface). One Importer reads one assembly document; its sections
-/// are implemented in assembly_reader.cpp (mesh, regions, constraints, loads, gaps and contact
-/// surfaces, the model reader's check) and assembly_thermal.cpp (the thermal section by group).
+/// io/import/assembly_reader.hpp is the interface). One Importer reads one assembly document; its
+/// methods are defined a concept a file: the entry point, which runs the steps in order
+/// (assembly_reader.cpp), the shape checks every section makes (assembly_checks.cpp), the mesh and
+/// its physical groups (assembly_mesh.cpp), materials and the regions that give them to the
+/// surfaces (assembly_regions.cpp), constraints (assembly_constraints.cpp), loads
+/// (assembly_loads.cpp), gap face pairs as gap elements (assembly_gaps.cpp) or as contact surfaces
+/// (assembly_contact.cpp), and the thermal section by group (assembly_thermal.cpp). The files an
+/// assembly names are AssemblyFiles' (assembly_files.hpp), and the model reader's findings on the
+/// generated model find their way back to the assembly through GeneratedOrigins
+/// (generated_origins.hpp).
 
-#include <array>
 #include <filesystem>
 #include <initializer_list>
 #include <map>
@@ -53,7 +59,7 @@ class Importer {
     return [this](const std::string& pointer, std::string detail) { report(pointer, std::move(detail)); };
   }
 
-  // ---- shape checks (assembly_checks.cpp)
+  // ---- shape checks, and the files values name (assembly_checks.cpp)
   bool object(const json& v, const std::string& p, std::initializer_list<std::string_view> required,
               std::initializer_list<std::string_view> optional);
   /// parent[key] when it is an array (non-empty if asked); nullptr when absent (object() reports a
@@ -122,8 +128,9 @@ class Importer {
   void contact_pair(const json& pair, const std::string& p, json& contact);
   /// Index in contact["surfaces"] of the surface made of curve group `name` (at p), defined on first use.
   std::optional<std::size_t> contact_surface(const json& name, const std::string& p, json& contact);
-  /// thermal: the model's section with boundary conditions on curve groups and sources on surface
-  /// groups (assembly_thermal.cpp).
+
+  // ---- thermal (assembly_thermal.cpp): the model's section with boundary conditions on curve
+  // groups and sources on surface groups
   void thermal(json& model);
   void thermal_boundary(const json& list, const std::string& p, json& out);
   void thermal_sources(const json& list, const std::string& p, json& out);

@@ -9,10 +9,12 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/json/json_pointer.hpp"
 #include "io/json/value_quote.hpp"
+#include "io/mesher/gmsh_mesh.hpp"
 
 namespace saasgaps::io::assembly {
 

@@ -1,33 +1,20 @@
 #include "io/import/assembly_reader.hpp"
 
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <limits>
-#include <map>
-#include <optional>
-#include <set>
 #include <string>
 #include <utility>
-#include <vector>
 
 #include "io/import/assembly_importer.hpp"
-#include "io/import/gap_generator.hpp"
-#include "io/import/mesh_groups.hpp"
-#include "io/import/nodal_values_file.hpp"
-#include "io/json/json_pointer.hpp"
-#include "io/json/value_quote.hpp"
 #include "io/json/value_rules.hpp"
-#include "io/mesher/gmsh_mesh.hpp"
 #include "solver/base/errors.hpp"
-#include "solver/model/loads.hpp"
 
 namespace saasgaps::io {
 
 namespace assembly {
 
-// ---- sections
-
+/// The steps in an order where each finds what it needs done (the mesh before every group, the
+/// regions before the thermal sources that heat their materials), which is also the order of the
+/// issues reported. Every step reports what it finds and goes on, so that one ModelError carries
+/// every problem of the document; only a document that is not an object stops at once.
 json Importer::run() {
   if (!object(doc_, "", {"schema_version", "title", "mesh", "analysis", "materials", "regions", "constraints"},
               {"description", "units", "loads", "gaps", "thermal", "solver", "output"})) {

@@ -14,10 +14,10 @@
 /// of its material, so a group holding part of one would heat more than it names). A source may
 /// name `material` instead, as in the model. The other keys (type, initial_temperature, time_step,
 /// end_time, output_times) pass through.
+#include "io/import/assembly_importer.hpp"
+
 #include <map>
 #include <set>
-
-#include "io/import/assembly_importer.hpp"
 
 #include "io/json/json_pointer.hpp"
 #include "io/json/value_quote.hpp"
