@@ -12,8 +12,8 @@
 
 namespace saasgaps::io::assembly {
 
-/// The materials pass through: the model reader judges them (an id that is not an integer among
-/// them), and regions and thermal sources may name only the ids gathered here.
+/// The materials pass through for the model reader to judge (an id missing or not an integer among
+/// the rest); regions and thermal sources may name only the integer ids gathered here.
 void Importer::read_material_ids() {
   const auto m = doc_.find("materials");
   if (m == doc_.end() || !m->is_array()) return;
