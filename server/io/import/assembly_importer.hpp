@@ -1,10 +1,16 @@
 #pragma once
 /// The assembly importer's state and steps (internal to io; import_assembly in
-/// io/assembly_reader.hpp is the interface). One Importer reads one assembly document; its sections
-/// are implemented in assembly_reader.cpp (mesh, regions, constraints, loads, gaps and contact
-/// surfaces, the model reader's check) and assembly_thermal.cpp (the thermal section by group).
+/// io/import/assembly_reader.hpp is the interface). One Importer reads one assembly document; its
+/// methods are defined a concept a file: the entry point, which runs the steps in order
+/// (assembly_reader.cpp), the shape checks every section makes (assembly_checks.cpp), the mesh and
+/// its physical groups (assembly_mesh.cpp), materials and the regions that give them to the
+/// surfaces (assembly_regions.cpp), constraints (assembly_constraints.cpp), loads
+/// (assembly_loads.cpp), gap face pairs as gap elements (assembly_gaps.cpp) or as contact surfaces
+/// (assembly_contact.cpp), and the thermal section by group (assembly_thermal.cpp). The files an
+/// assembly names are AssemblyFiles' (assembly_files.hpp), and the model reader's findings on the
+/// generated model find their way back to the assembly through GeneratedOrigins
+/// (generated_origins.hpp).
 
-#include <array>
 #include <filesystem>
 #include <initializer_list>
 #include <map>
@@ -17,8 +23,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/import/assembly_files.hpp"
 #include "io/import/assembly_reader.hpp"
 #include "io/import/gap_generator.hpp"
+#include "io/import/generated_origins.hpp"
 #include "io/import/mesh_groups.hpp"
 #include "io/json/value_rules.hpp"
 #include "io/mesher/gmsh_mesh.hpp"
@@ -38,28 +46,20 @@ struct GroupUse {
 
 class Importer {
  public:
-  Importer(const json& assembly, fs::path base, FileAccess access)
-      : doc_(assembly), base_(std::move(base)), access_(access) {}
+  Importer(const json& assembly, fs::path base, FileAccess access) : doc_(assembly), files_(std::move(base), access) {}
 
   json run();
 
  private:
   void report(std::string pointer, std::string detail) {
-    // An upload's files sit in a private directory the client never saw: name them as uploaded.
-    if (access_ == FileAccess::base_only) {
-      const std::string directory = (base_ / "").string();
-      for (std::size_t at = detail.find(directory); at != std::string::npos; at = detail.find(directory, at)) {
-        detail.erase(at, directory.size());
-      }
-    }
-    issues_.push_back({std::move(pointer), std::move(detail)});
+    issues_.push_back({std::move(pointer), files_.as_named(std::move(detail))});
   }
   /// report() as a callable, for the shared checks of value_rules.hpp.
   auto reporter() {
     return [this](const std::string& pointer, std::string detail) { report(pointer, std::move(detail)); };
   }
 
-  // ---- shape checks
+  // ---- shape checks, and the files values name (assembly_checks.cpp)
   bool object(const json& v, const std::string& p, std::initializer_list<std::string_view> required,
               std::initializer_list<std::string_view> optional);
   /// parent[key] when it is an array (non-empty if asked); nullptr when absent (object() reports a
@@ -68,12 +68,15 @@ class Importer {
   std::optional<double> number(const json& o, const std::string& p, std::string_view key,
                                const Range& range = any_number);
   std::optional<std::string> string(const json& o, const std::string& p, std::string_view key);
-
   /// The file `name` (the value at `pointer`) names, or nullopt (reported) when it may not be read.
   std::optional<fs::path> resolve_file(const std::string& name, const std::string& pointer);
 
-  // ---- the mesh and its groups
+  // ---- the mesh and its groups (assembly_mesh.cpp)
   void load_mesh();
+  /// The mesh's nodes as the model's, by their Gmsh tags.
+  void nodes(json& model) const;
+  /// The largest |r| or |z| of the mesh's nodes: the scale of round-off and of position tolerances.
+  double extent() const;
   /// The group o["group"] names (reported at <p>/group when missing, misspelt or of the wrong dimension).
   const PhysicalGroup* group(const json& o, const std::string& p, const GroupUse& use);
   const PhysicalGroup* named_group(const json& name, const std::string& at, const GroupUse& use);
@@ -92,32 +95,48 @@ class Importer {
   std::optional<std::vector<BoundaryEdge>> boundary_edges(const PhysicalGroup& g, const std::string& p,
                                                           std::string_view use);
 
-  // ---- sections
+  // ---- materials and regions (assembly_regions.cpp)
+  /// The ids of /materials, which regions and thermal sources name.
+  void read_material_ids();
   void regions(json& model);
+
+  // ---- constraints (assembly_constraints.cpp)
   void constraints(json& model);
+
+  // ---- loads (assembly_loads.cpp)
   void loads(json& model);
   void pressures(const json& loads, const std::string& p, json& out);
   void nodal_forces(const json& loads, const std::string& p, json& out);
   void temperatures(const json& loads, const std::string& p, json& out);
   void temperature_file(const json& file, const std::string& p, std::vector<std::optional<double>>& T,
                         std::vector<std::string>& source);
+
+  // ---- gap face pairs (assembly_gaps.cpp) and contact surfaces (assembly_contact.cpp)
   void gaps(json& model);
+  /// Whether face pair o (at p) is an object; a key of `foreign`, which belongs to the other method,
+  /// is reported with `why` after its name.
+  bool pair_keys(const json& o, const std::string& p, std::initializer_list<const char*> foreign, std::string_view why);
+  /// o["faces"] when it is an array of two; nullptr when absent (object() reports it) or reported.
+  const json* pair_faces(const json& o, const std::string& p);
+  /// The face pairs as gap elements, appended to `elements`.
+  void gap_elements(const json& pairs, json& elements);
   std::optional<FaceChain> face(const json& name, const std::string& p);
+  /// The face pairs of gaps.method "exact" as the model's contact pairs and their surfaces.
+  void contact_pairs(const json& pairs, json& model);
   /// An exact face pair {faces: [A, B], friction?, conductance?} (its faces at p) as a contact pair of
   /// two surfaces in `contact`.
   void contact_pair(const json& pair, const std::string& p, json& contact);
   /// Index in contact["surfaces"] of the surface made of curve group `name` (at p), defined on first use.
   std::optional<std::size_t> contact_surface(const json& name, const std::string& p, json& contact);
-  /// thermal: the model's section with boundary conditions on curve groups and sources on surface
-  /// groups (assembly_thermal.cpp).
+
+  // ---- thermal (assembly_thermal.cpp): the model's section with boundary conditions on curve
+  // groups and sources on surface groups
   void thermal(json& model);
   void thermal_boundary(const json& list, const std::string& p, json& out);
   void thermal_sources(const json& list, const std::string& p, json& out);
-  void validate(const json& model);
 
   const json& doc_;
-  fs::path base_;
-  FileAccess access_;
+  AssemblyFiles files_;
   std::vector<InputIssue> issues_;
   GmshMesh mesh_;
   bool mesh_loaded_ = false;
@@ -126,16 +145,7 @@ class Importer {
   std::optional<MeshGroups> groups_;  ///< once the mesh is loaded
   std::set<int> material_ids_;
   std::map<int, int> surface_material_;  ///< Gmsh surface tag -> material id, from regions
-  /// A generated pointer and the assembly value it comes from, so that the model reader's findings
-  /// are reported where the user wrote them: a finding at `generated` or below it is reported at
-  /// `written`, as "the generated <pointer>: ..." or, when `same_keys` (the generated object has the
-  /// assembly object's keys), at `written` with the rest of the pointer, as the reader words it.
-  struct Origin {
-    std::string generated;
-    std::string written;
-    bool same_keys = false;
-  };
-  std::vector<Origin> origins_;
+  GeneratedOrigins origins_;
 };
 
 }  // namespace saasgaps::io::assembly

@@ -27,7 +27,7 @@ enum class FileAccess {
 
 /// Builds the model document. Relative file names (the mesh, a temperature file) are resolved
 /// against `base_directory`, the assembly file's own directory. Throws ModelError, or MeshTooLarge
-/// when the mesh passes the limits of io/gmsh_mesh.hpp.
+/// when the mesh passes the limits of io/mesher/gmsh_mesh.hpp.
 nlohmann::json import_assembly(const nlohmann::json& assembly, const std::filesystem::path& base_directory,
                                FileAccess access = FileAccess::anywhere);
 

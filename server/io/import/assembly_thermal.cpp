@@ -14,10 +14,10 @@
 /// of its material, so a group holding part of one would heat more than it names). A source may
 /// name `material` instead, as in the model. The other keys (type, initial_temperature, time_step,
 /// end_time, output_times) pass through.
+#include "io/import/assembly_importer.hpp"
+
 #include <map>
 #include <set>
-
-#include "io/import/assembly_importer.hpp"
 
 #include "io/json/json_pointer.hpp"
 #include "io/json/value_quote.hpp"
@@ -65,7 +65,7 @@ void Importer::thermal_boundary(const json& list, const std::string& lp, json& o
         for (const BoundaryEdge& e : *edges) generated.push_back({tag_of(e.a), tag_of(e.b)});
       }
     }
-    origins_.push_back({pointer_append(p, "edges"), pointer_append(p, "group")});
+    origins_.add(pointer_append(p, "edges"), pointer_append(p, "group"));
     out.push_back(std::move(entry));
   }
 }
@@ -81,7 +81,7 @@ void Importer::thermal_sources(const json& list, const std::string& lp, json& ou
                      "; a source heats every element of its material, so give each material one source");
       return;
     }
-    origins_.push_back({pointer_append("/thermal/sources", out.size()), p, true});
+    origins_.add(pointer_append("/thermal/sources", out.size()), p, true);
     out.push_back({{"material", material}, {"power_density", power}});
   };
   for (std::size_t i = 0; i < list.size(); ++i) {

@@ -1,0 +1,127 @@
+/// The assembly's mesh (a Gmsh file read by the sandboxed mesher, io/mesher/gmsh_mesh.hpp), the
+/// model's nodes from it, and its physical groups as the sections name them: found by name and
+/// dimension, their nodes, and a curve group's line elements as edges of the solid elements that
+/// own them.
+#include "io/import/assembly_importer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io/json/json_pointer.hpp"
+#include "io/json/value_quote.hpp"
+#include "io/mesher/gmsh_mesh.hpp"
+
+namespace saasgaps::io::assembly {
+
+void Importer::load_mesh() {
+  const auto name = string(doc_, "", "mesh");
+  if (!name) return;
+  const auto path = resolve_file(*name, "/mesh");
+  if (!path) return;
+  try {
+    mesh_ = read_gmsh_mesh(*path);
+  } catch (const MeshTooLarge&) {
+    throw;  // a limit, not a defect of the assembly: the service answers 413
+  } catch (const MeshError& e) {
+    report("/mesh", e.what());
+    return;
+  }
+  for (const MeshFace& f : mesh_.faces) {
+    if (f.tag > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+      report("/mesh", "element tag " + std::to_string(f.tag) + " is beyond the largest element id (2147483647)");
+      return;
+    }
+  }
+  mesh_loaded_ = true;
+  groups_.emplace(mesh_);
+  positions_.reserve(mesh_.r.size());
+  for (std::size_t i = 0; i < mesh_.r.size(); ++i) {
+    positions_.emplace_back(mesh_.r[i], mesh_.z[i]);
+    ids_.push_back(static_cast<int>(mesh_.node_tags[i]));
+  }
+}
+
+void Importer::nodes(json& model) const {
+  if (!mesh_loaded_) return;
+  // On the axis of an axisymmetric section Gmsh may place a node a round-off left of r = 0.
+  const auto analysis = doc_.find("analysis");
+  const bool axisymmetric = analysis != doc_.end() && analysis->is_object() &&
+                            analysis->value("type", json()) == "axisymmetric";
+  const double scale = extent();
+  json& out = model["nodes"] = json::array();
+  for (std::size_t n = 0; n < positions_.size(); ++n) {
+    double r = positions_[n].x();
+    if (axisymmetric && r < 0.0 && r > -1e-12 * scale) r = 0.0;
+    out.push_back({{"id", ids_[n]}, {"r", r}, {"z", positions_[n].y()}});
+  }
+}
+
+double Importer::extent() const {
+  double out = 0.0;
+  for (const Vec2& x : positions_) out = std::max({out, std::fabs(x.x()), std::fabs(x.y())});
+  return out;
+}
+
+const PhysicalGroup* Importer::group(const json& o, const std::string& p, const GroupUse& use) {
+  const auto it = o.find("group");
+  if (it == o.end()) return nullptr;  // reported by object()
+  return named_group(*it, pointer_append(p, "group"), use);
+}
+
+const PhysicalGroup* Importer::named_group(const json& value, const std::string& at, const GroupUse& use) {
+  if (!value.is_string()) {
+    report(at, "a physical group name must be a string, got " + describe(value));
+    return nullptr;
+  }
+  if (!groups_) return nullptr;
+  std::string problem;
+  const PhysicalGroup* g = groups_->find(value.get<std::string>(), use.dims, use.role, use.needs, problem);
+  if (g == nullptr) report(at, problem);
+  return g;
+}
+
+std::vector<int> Importer::group_nodes(const PhysicalGroup& g, const std::string& p) {
+  bool off_mesh = false;
+  std::vector<int> nodes = groups_->nodes(g, off_mesh);
+  if (off_mesh) {
+    report(pointer_append(p, "group"), "physical group \"" + g.name + "\" has nodes (or unmeshed points) that no "
+                                       "surface element uses; it must lie on the meshed surfaces");
+  } else if (nodes.empty()) {
+    report(pointer_append(p, "group"), "physical group \"" + g.name + "\" holds no mesh nodes");
+  }
+  return nodes;
+}
+
+std::optional<std::vector<Importer::BoundaryEdge>> Importer::boundary_edges(const PhysicalGroup& g, const std::string& p,
+                                                                            std::string_view use) {
+  const auto edges = groups_->edges(g);
+  if (edges.empty()) {
+    report(pointer_append(p, "group"), "physical group \"" + g.name + "\" has no line elements");
+    return std::nullopt;
+  }
+  std::vector<BoundaryEdge> out;
+  for (const auto& [a, b] : edges) {
+    const std::vector<int> owner = a < 0 || b < 0 ? std::vector<int>{} : groups_->owners(a, b);
+    if (owner.size() != 1) {
+      report(pointer_append(p, "group"),
+             "curve group \"" + g.name + "\" is not on the boundary of the meshed surfaces" +
+                 (a >= 0 && b >= 0 ? " (edge " + std::to_string(tag_of(a)) + "-" + std::to_string(tag_of(b)) + " has " +
+                                         std::to_string(owner.size()) + " elements; " + std::string(use) +
+                                         " acts on an edge of exactly one)"
+                                   : std::string()));
+      return std::nullopt;
+    }
+    const MeshFace& f = mesh_.faces[static_cast<std::size_t>(owner.front())];
+    const auto k = static_cast<int>(std::find(f.nodes.begin(), f.nodes.begin() + f.count, a) - f.nodes.begin());
+    const bool along = f.nodes[static_cast<std::size_t>((k + 1) % f.count)] == b;
+    out.push_back(along ? BoundaryEdge{a, b, owner.front()} : BoundaryEdge{b, a, owner.front()});
+  }
+  return out;
+}
+
+}  // namespace saasgaps::io::assembly
