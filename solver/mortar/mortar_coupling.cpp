@@ -10,21 +10,12 @@
 #include <optional>
 #include <span>
 
-#include <Eigen/LU>
+#include "solver/mortar/dual_basis.hpp"
+#include "solver/mortar/normal_projection.hpp"
 
 namespace saasgaps {
 
 namespace {
-
-/// 3-point Gauss-Legendre on [-1, 1]: exact to degree 5. On a straight overlap the integrands are
-/// psi N^B w: linear x linear x linear (w = 2 pi r) = cubic, so 2 points would do; the third keeps
-/// curved sides (where N^B(eta(xi)) is only close to linear) accurate too.
-constexpr std::array<double, 3> gauss_point{-0.7745966692414834, 0.0, 0.7745966692414834};
-constexpr std::array<double, 3> gauss_weight{5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
-
-/// Pieces shorter than this (in a segment's parameter) are round-off slivers where nodes project onto
-/// nodes.
-constexpr double parameter_round_off = 1.0e-12;
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -32,65 +23,6 @@ Vec2 position(const std::vector<Node>& nodes, int i) {
   const Node& n = nodes[static_cast<std::size_t>(i)];
   return {n.r, n.z};
 }
-
-/// Calls f(xi, weight) at the Gauss points of [lo, hi] on segment x1 -> x2; weight includes ds and w(r).
-template <class F>
-void integrate(const Vec2& x1, const Vec2& x2, const ParameterInterval& piece, const SurfaceMeasure& measure, F&& f) {
-  const double length = (x2 - x1).norm();
-  const double half = 0.5 * (piece.hi - piece.lo);
-  for (std::size_t g = 0; g < gauss_point.size(); ++g) {
-    const double xi = piece.lo + half * (1.0 + gauss_point[g]);
-    const double r = (1.0 - xi) * x1.x() + xi * x2.x();
-    f(xi, gauss_weight[g] * half * length * measure.weight(r));
-  }
-}
-
-/// The segment parameter xi at which the line from x(xi) = x1 + xi (x2 - x1) along the normal field
-/// n(xi) = n1 + xi (n2 - n1) passes through y:  (x(xi) - y) x n(xi) = 0, a quadratic
-/// c2 xi^2 + c1 xi + c0 = 0. Of its real roots, the one nearest [0, 1] (the other, on a nearly
-/// straight side, lies where the normals of the two ends would cross, far outside).
-std::optional<double> project_onto_segment(const Vec2& x1, const Vec2& x2, const Vec2& n1, const Vec2& n2,
-                                           const Vec2& y) {
-  const Vec2 d = x2 - x1;
-  const Vec2 dn = n2 - n1;
-  const Vec2 e = x1 - y;
-  const double c0 = cross(e, n1);
-  const double c1 = cross(e, dn) + cross(d, n1);
-  const double c2 = cross(d, dn);
-  std::array<double, 2> roots{};
-  std::size_t count = 0;
-  if (c2 == 0.0) {
-    if (c1 == 0.0) return std::nullopt;
-    roots[count++] = -c0 / c1;
-  } else {
-    const double disc = c1 * c1 - 4.0 * c2 * c0;
-    if (disc < 0.0) return std::nullopt;
-    // The cancellation-free pair of roots: q / c2 and c0 / q.
-    const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
-    roots[count++] = q / c2;
-    if (q != 0.0) roots[count++] = c0 / q;
-  }
-  const auto outside = [](double xi) { return std::max({0.0, -xi, xi - 1.0}); };
-  double best = roots[0];
-  for (std::size_t i = 1; i < count; ++i) {
-    if (outside(roots[i]) < outside(best)) best = roots[i];
-  }
-  return best;
-}
-
-/// Where the line x + t n meets the line b1 + eta (b2 - b1): (eta, t), or nothing when parallel.
-std::optional<std::pair<double, double>> meet(const Vec2& x, const Vec2& n, const Vec2& b1, const Vec2& b2) {
-  // x + t n = b1 + eta e  <=>  t n - eta e = b1 - x; Cramer's rule on [n, -e].
-  const Vec2 e = b2 - b1;
-  const Vec2 rhs = b1 - x;
-  const double det = cross(n, -e);
-  if (det == 0.0) return std::nullopt;
-  const double t = cross(rhs, -e) / det;
-  const double eta = cross(n, rhs) / det;
-  return std::make_pair(eta, t);
-}
-
-Vec2 normal_at(const Vec2& n1, const Vec2& n2, double xi) { return ((1.0 - xi) * n1 + xi * n2).normalized(); }
 
 /// A row's entry for one node: the scalar mortar weight (int psi_j N_k dA, with D_j's sign on A) and
 /// the gap's gradient with respect to the node's displacement.
@@ -409,28 +341,6 @@ Vec2 bend_gradient(const Vec2& d, const Vec2& nu, double w, const Vec2& v) {
 }
 
 }  // namespace
-
-double SurfaceMeasure::weight(double r) const {
-  return analysis == AnalysisType::axisymmetric ? 2.0 * std::numbers::pi * r : thickness;
-}
-
-DualBasis dual_basis(const Vec2& x1, const Vec2& x2, std::span<const ParameterInterval> covered,
-                     const SurfaceMeasure& measure) {
-  // Biorthogonality int psi_i N_k dA = delta_ik d_i with psi = A N reads A Me = diag(d); Me is the
-  // (weighted) mass matrix of the covered part, symmetric positive definite when that part has length,
-  // and d = Me 1 (N_1 + N_2 = 1), which also gives sum_i psi_i = 1^T diag(d) Me^-1 N = 1^T N = 1.
-  Eigen::Matrix2d me = Eigen::Matrix2d::Zero();
-  for (const ParameterInterval& piece : covered) {
-    integrate(x1, x2, piece, measure, [&](double xi, double w) {
-      const Vec2 n(1.0 - xi, xi);
-      me += w * n * n.transpose();
-    });
-  }
-  DualBasis basis;
-  basis.d = me.rowwise().sum();
-  basis.A = basis.d.asDiagonal() * me.inverse();
-  return basis;
-}
 
 double MortarRows::gap(std::size_t row, std::span<const double> displacement) const {
   double g = g0[row];
