@@ -6,7 +6,6 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <numbers>
 #include <optional>
 #include <span>
 
@@ -16,13 +15,6 @@
 namespace saasgaps {
 
 namespace {
-
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-Vec2 position(const std::vector<Node>& nodes, int i) {
-  const Node& n = nodes[static_cast<std::size_t>(i)];
-  return {n.r, n.z};
-}
 
 /// A row's entry for one node: the scalar mortar weight (int psi_j N_k dA, with D_j's sign on A) and
 /// the gap's gradient with respect to the node's displacement.
@@ -53,8 +45,8 @@ std::vector<Overlap> overlaps(const std::vector<Node>& nodes, const Vec2& x1, co
   for (const std::size_t m : near) {
     if (ns.dot(master.normal[m]) >= 0.0) continue;  // not facing: the back of a closed surface
     const auto [b1, b2] = master.segment(m);
-    const auto xa = project_onto_segment(x1, x2, n1, n2, position(nodes, b1));
-    const auto xb = project_onto_segment(x1, x2, n1, n2, position(nodes, b2));
+    const auto xa = project_onto_segment(x1, x2, n1, n2, node_position(nodes, b1));
+    const auto xb = project_onto_segment(x1, x2, n1, n2, node_position(nodes, b2));
     if (!xa || !xb) continue;
     const double lo = std::max(0.0, std::min(*xa, *xb));
     const double hi = std::min(1.0, std::max(*xa, *xb));
@@ -83,7 +75,7 @@ std::vector<Overlap> overlaps(const std::vector<Node>& nodes, const Vec2& x1, co
     for (const Overlap& c : candidates) {
       if (mid < c.piece.lo || mid > c.piece.hi) continue;
       const auto [b1, b2] = master.segment(c.master);
-      const auto hit = meet(x, n, position(nodes, b1), position(nodes, b2));
+      const auto hit = meet(x, n, node_position(nodes, b1), node_position(nodes, b2));
       if (hit && std::abs(hit->second) < nearest) {
         nearest = std::abs(hit->second);
         pick = c.master;
@@ -102,21 +94,24 @@ std::vector<Overlap> overlaps(const std::vector<Node>& nodes, const Vec2& x1, co
 /// The master side's segments with a search over them (bins), or all-against-all without.
 class MasterSegments {
  public:
-  MasterSegments(const std::vector<Node>& nodes, const ContactSurface& master, Pairing pairing) {
+  MasterSegments(const SurfaceGeometry& master, Pairing pairing) : master_(&master) {
+    const ContactSurface& surface = master.surface();
     if (pairing == Pairing::all_against_all) {
-      all_.resize(master.segment_count());
+      all_.resize(surface.segment_count());
       for (std::size_t m = 0; m < all_.size(); ++m) all_[m] = m;
       return;
     }
     std::vector<std::array<Vec2, 2>> ends;
-    for (std::size_t m = 0; m < master.segment_count(); ++m) {
-      const auto [b1, b2] = master.segment(m);
-      ends.push_back({position(nodes, b1), position(nodes, b2)});
+    for (std::size_t m = 0; m < surface.segment_count(); ++m) {
+      const auto [b1, b2] = surface.segment(m);
+      ends.push_back({node_position(master.nodes(), b1), node_position(master.nodes(), b2)});
     }
     boxes_.reserve(ends.size());
     for (const auto& e : ends) boxes_.push_back(box_of(e[0], e[1]));
     bins_.emplace(ends);
   }
+
+  [[nodiscard]] const SurfaceGeometry& master() const { return *master_; }
 
   /// Calls found(near, reach, final) with the master segments near `box` inflated by `reach`, the
   /// reach doubling each time, until found returns true; after max_doublings, or once the box would
@@ -143,7 +138,6 @@ class MasterSegments {
     found(std::span<const std::size_t>(near_), reach, true);
   }
   [[nodiscard]] const Box& box(std::size_t m) const { return boxes_[m]; }
-  [[nodiscard]] bool searching() const { return bins_.has_value(); }
   /// Master segments handed to the callers so far (each query's, summed).
   [[nodiscard]] std::size_t candidates() const { return candidates_; }
 
@@ -152,6 +146,7 @@ class MasterSegments {
   /// doublings the lines' own bins are cheaper than a box of 2^max_doublings segment lengths.
   static constexpr int max_doublings = 4;
 
+  const SurfaceGeometry* master_;
   std::vector<std::size_t> all_;
   std::vector<Box> boxes_;
   std::optional<SegmentBins> bins_;
@@ -187,146 +182,24 @@ std::vector<Overlap> facing_pieces(const std::vector<Node>& nodes, const Vec2& x
   return pieces;
 }
 
-/// A master node where the chain turns by at least `sharp_corner_angle` is a corner, not a sample of
-/// a smooth curve; so is one turning by more than `corner_angle` when that is well above (more than
-/// `corner_contrast` times) the turns at both neighbouring nodes. The second rule keeps a coarse ring
-/// (12 segments turn by exactly 30 degrees at every node, which round-off puts either side of any
-/// fixed threshold) smooth, and finds a corner where an arc meets a flat.
-constexpr double corner_angle = 30.0 * std::numbers::pi / 180.0;
-constexpr double sharp_corner_angle = 60.0 * std::numbers::pi / 180.0;
-constexpr double corner_contrast = 1.5;
-
-/// Per node of the chain: whether it is a corner by the rules above (an open chain's ends are not).
-std::vector<bool> corners(const ContactSurface& surface) {
-  const std::size_t n = surface.nodes.size();
-  const std::size_t segments = surface.segment_count();
-  std::vector<double> turn(n, 0.0);
-  for (std::size_t j = 0; j < n; ++j) {
-    const bool inner = surface.closed || (j > 0 && j + 1 < n);
-    if (!inner) continue;
-    const std::size_t before = (j + segments - 1) % segments;
-    const std::size_t after = j % segments;
-    turn[j] = std::acos(std::clamp(surface.normal[before].dot(surface.normal[after]), -1.0, 1.0));
-  }
-  std::vector<bool> corner(n, false);
-  for (std::size_t j = 0; j < n; ++j) {
-    const double left = surface.closed || j > 0 ? turn[(j + n - 1) % n] : 0.0;
-    const double right = surface.closed || j + 1 < n ? turn[(j + 1) % n] : 0.0;
-    corner[j] = turn[j] >= sharp_corner_angle ||
-                (turn[j] > corner_angle && turn[j] > corner_contrast * std::max(left, right));
-  }
-  return corner;
+/// The distance t along the unit direction n from x to the master's smooth curve (x + t n on it,
+/// t < 0 behind x; distance_to_curve()), searched like facing_pieces() with the curves' largest offset
+/// from their chords as the margin; nothing when the line meets no facing segment.
+std::optional<double> curve_distance(const Vec2& x, const Vec2& n, const MasterSegments& master_segments) {
+  const SurfaceGeometry& curve = master_segments.master();
+  const double bend = curve.bend();
+  const double length = curve.mean_length();
+  // A curve segment lies within its chord's box inflated by max |w| <= bend; one meeting the line
+  // nearer than the best hit so far comes within |t| of x. So a hit with |t| <= reach settles it.
+  std::optional<double> best;
+  // The final query: chords within bend (their curves' largest offset) of the line.
+  master_segments.search(box_of(x, x), 2.0 * bend + length, SweptLines{x, x, n, n}, bend + length * 1e-9,
+                         [&](std::span<const std::size_t> near, double reach, bool) {
+                           best = distance_to_curve(curve, x, n, near);
+                           return best && std::abs(*best) + bend <= reach;
+                         });
+  return best;
 }
-
-/// A surface as a smooth curve through its nodes: on segment y1 -> y2 (length L, unit tangent tau,
-/// outward chord normal nu) the curve is y1 + eta (y2 - y1) + w(eta) nu, with the offset whose normals
-/// at the ends are (to first order) the nodal normals, turned by beta_1, beta_2 from nu (the curve's
-/// normal is nu - w'(s) tau, so w'(0) = -tan beta_1, w'(L) = -tan beta_2): a circular arc of
-/// half-angle (beta_2 - beta_1) / 2 plus a cubic for the rest (offset()). On a circle of radius R
-/// and chord angle a the nodal normals are radial, beta = -+a / 2, and the curve is the circle itself:
-/// an interference of 1e-4 R is then measured exactly, where a cubic's O(R a^4) error would be a few
-/// per cent of it. At a corner (corners()) the curve keeps the segment's direction (beta = 0). An open
-/// chain's end segments are arcs.
-class SmoothCurve {
- public:
-  SmoothCurve(const std::vector<Node>& nodes, const ContactSurface& surface) : nodes_(nodes), surface_(surface) {
-    const std::vector<Vec2> nodal = nodal_normals(surface, nodes);
-    const std::vector<bool> corner = corners(surface);
-    const std::size_t n = surface.nodes.size();
-    tan_beta_.assign(surface.segment_count(), {0.0, 0.0});
-    for (std::size_t s = 0; s < surface.segment_count(); ++s) {
-      const Vec2& nu = surface.normal[s];
-      for (std::size_t end = 0; end < 2; ++end) {
-        const std::size_t j = (s + end) % n;
-        // The other segment at node j (none at an open chain's ends).
-        const bool has_other = surface.closed || (end == 0 ? s > 0 : s + 1 < surface.segment_count());
-        if (!has_other || corner[j]) continue;
-        tan_beta_[s][end] = cross(nu, nodal[j]) / nu.dot(nodal[j]);
-      }
-    }
-    // An open chain's end segment continues the curvature of its inner end (a circular arc:
-    // beta_1 = -beta_2), unless the chain has one segment.
-    if (!surface.closed && surface.segment_count() > 1) {
-      tan_beta_.front()[0] = -tan_beta_.front()[1];
-      tan_beta_.back()[1] = -tan_beta_.back()[0];
-    }
-    for (std::size_t s = 0; s < surface.segment_count(); ++s) {
-      const auto [a, b] = surface.segment(s);
-      const double length = (position(nodes, b) - position(nodes, a)).norm();
-      // |w| <= L (|tan beta_1| + |tan beta_2|) / 4 (arc and cubic together), doubled for safety.
-      bend_ = std::max(bend_, 0.5 * length * (std::abs(tan_beta_[s][0]) + std::abs(tan_beta_[s][1])));
-      length_ += length / static_cast<double>(surface.segment_count());
-    }
-  }
-
-  /// The distance t along the unit direction n from x to the nearest facing curve segment
-  /// (x + t n on the curve; t < 0 behind x), or nothing when the line meets no segment.
-  [[nodiscard]] std::optional<double> distance(const Vec2& x, const Vec2& n, const MasterSegments& segments) const {
-    // A curve segment lies within its chord's box inflated by max |w| <= bend_; one meeting the line
-    // nearer than the best hit so far comes within |t| of x. So a hit with |t| <= reach settles it.
-    std::optional<double> best;
-    // The final query: chords within bend_ (their curves' largest offset) of the line.
-    segments.search(box_of(x, x), 2.0 * bend_ + length_, SweptLines{x, x, n, n}, bend_ + length_ * 1e-9,
-                    [&](std::span<const std::size_t> near, double reach, bool) {
-                      best = nearest(x, n, near);
-                      return best && std::abs(*best) + bend_ <= reach;
-                    });
-    return best;
-  }
-
-  /// distance() among the segments `near`.
-  [[nodiscard]] std::optional<double> nearest(const Vec2& x, const Vec2& n, std::span<const std::size_t> near) const {
-    std::optional<double> best;
-    for (const std::size_t s : near) {
-      const Vec2& nu = surface_.normal[s];
-      if (n.dot(nu) >= 0.0) continue;
-      const auto [a, b] = surface_.segment(s);
-      const Vec2 y1 = position(nodes_, a);
-      const Vec2 y2 = position(nodes_, b);
-      const double length = (y2 - y1).norm();
-      const Vec2 tau = (y2 - y1) / length;
-      // Fixed point: the line meets the chord offset by w(eta) at t; each pass shrinks the change in t
-      // by about the chord's angle, so a few passes reach round-off (the interference of a press fit
-      // can be 1e-4 of the radius, a sag's 1e-2: t must be exact to far better than a sag).
-      double eta = 0.0;
-      double t = (0.0 - nu.dot(x - y1)) / nu.dot(n);
-      for (int pass = 0; pass < 60; ++pass) {
-        // Beyond its ends a segment's curve is not defined (nor needed): hold eta in [0, 1].
-        eta = std::clamp(tau.dot(x + t * n - y1) / length, 0.0, 1.0);
-        const double next = (offset(s, eta, length) - nu.dot(x - y1)) / nu.dot(n);
-        const bool settled = std::abs(next - t) <= 1e-15 * (std::abs(t) + length);
-        t = next;
-        if (settled) break;
-      }
-      eta = tau.dot(x + t * n - y1) / length;
-      if (!std::isfinite(t) || !(eta >= -parameter_round_off && eta <= 1.0 + parameter_round_off)) continue;
-      if (!best || std::abs(t) < std::abs(*best)) best = t;
-    }
-    return best;
-  }
-
-  /// w(eta) on segment s (length L): the curve's offset from the chord along its outward normal.
-  [[nodiscard]] double offset(std::size_t s, double eta, double length) const {
-    const auto& tb = tan_beta_[s];
-    // The circular arc of half-angle theta = (beta_2 - beta_1) / 2 (exact on a circle, where the
-    // nodal normals are symmetric about the chord's), in the cancellation-free form
-    //   w = 2 L sin(theta) eta (1 - eta) / (sqrt(1 - (2 eta - 1)^2 sin^2(theta)) + cos(theta)),
-    // plus the cubic of the antisymmetric part mu = (beta_1 + beta_2) / 2 (a curvature that changes
-    // along the segment): L eta (1 - eta) (2 eta - 1) tan(mu).
-    const double beta1 = std::atan(tb[0]), beta2 = std::atan(tb[1]);
-    const double theta = 0.5 * (beta2 - beta1), mu = 0.5 * (beta1 + beta2);
-    const double sine = std::sin(theta), c = 2.0 * eta - 1.0;
-    const double arc = 2.0 * length * sine * eta * (1.0 - eta) / (std::sqrt(1.0 - c * c * sine * sine) + std::cos(theta));
-    return arc + length * eta * (1.0 - eta) * c * std::tan(mu);
-  }
-
- private:
-  const std::vector<Node>& nodes_;
-  const ContactSurface& surface_;
-  std::vector<std::array<double, 2>> tan_beta_;  ///< per segment: tan beta at its two ends
-  double bend_ = 0.0;    ///< bound on |w| over every segment
-  double length_ = 0.0;  ///< mean segment length
-};
 
 /// A curve point at offset w along the chord normal nu of segment p_1 -> p_2 (d = p_2 - p_1) moves
 /// with the chord's interpolated displacement plus the offset carried by the chord's own stretch s and
@@ -351,28 +224,31 @@ double MortarRows::gap(std::size_t row, std::span<const double> displacement) co
   return g;
 }
 
-MortarRows mortar_rows(const std::vector<Node>& nodes, const SurfaceMeasure& measure, const ContactSurface& slave,
-                       const ContactSurface& master, Pairing pairing, std::size_t* candidate_checks) {
-  const MasterSegments master_segments(nodes, master, pairing);
+MortarRows mortar_rows(const SurfaceMeasure& measure, const SurfaceGeometry& slave_geometry,
+                       const SurfaceGeometry& master_geometry, Pairing pairing, std::size_t* candidate_checks) {
+  // Both sides are of one model: a row's entries index its nodes.
+  assert(&slave_geometry.nodes() == &master_geometry.nodes());
+  const std::vector<Node>& nodes = slave_geometry.nodes();
+  const ContactSurface& slave = slave_geometry.surface();
+  const ContactSurface& master = master_geometry.surface();
+  const MasterSegments master_segments(master_geometry, pairing);
   // Normals: the nodal (averaged) normals of A, interpolated along each segment. Segment normals would
   // jump at A's nodes: near a convex node of a curved A the two segments' normals fan apart and leave
   // a wedge of B that no point of A sees (near a concave node a wedge seen twice), so sum_k M_jk != D_j
   // and a rigid motion of B would open gaps. The continuous field covers B once, and n_j is the one
   // normal of row j.
-  const std::vector<Vec2> normal = nodal_normals(slave, nodes);
+  const std::vector<Vec2>& normal = slave_geometry.nodal_normals();
   const std::size_t n = slave.nodes.size();
   std::vector<double> D(n, 0.0);
   std::vector<std::map<int, Term>> M(n);
-  const SmoothCurve slave_curve(nodes, slave);
-  const SmoothCurve curve(nodes, master);
 
   for (std::size_t s = 0; s < slave.segment_count(); ++s) {
     const std::size_t i1 = s;
     const std::size_t i2 = (s + 1) % n;
     const int a1 = slave.nodes[i1];
     const int a2 = slave.nodes[i2];
-    const Vec2 x1 = position(nodes, a1);
-    const Vec2 x2 = position(nodes, a2);
+    const Vec2 x1 = node_position(nodes, a1);
+    const Vec2 x2 = node_position(nodes, a2);
     const std::vector<Overlap> pieces =
         facing_pieces(nodes, x1, x2, normal[i1], normal[i2], slave.normal[s], master_segments, master);
     double covered_length = 0.0;
@@ -391,8 +267,8 @@ MortarRows mortar_rows(const std::vector<Node>& nodes, const SurfaceMeasure& mea
     D[i2] += basis.d[1];
     for (const Overlap& o : pieces) {
       const auto [b1, b2] = master.segment(o.master);
-      const Vec2 y1 = position(nodes, b1);
-      const Vec2 y2 = position(nodes, b2);
+      const Vec2 y1 = node_position(nodes, b1);
+      const Vec2 y2 = node_position(nodes, b2);
       integrate(x1, x2, o.piece, measure, [&](double xi, double w) {
         const Vec2 x = (1.0 - xi) * x1 + xi * x2;
         const Vec2 nx = normal_at(normal[i1], normal[i2], xi);
@@ -404,8 +280,8 @@ MortarRows mortar_rows(const std::vector<Node>& nodes, const SurfaceMeasure& mea
         // node of both segments gets a vector coefficient (A's neighbour too: psi_j N_i n(xi) does not
         // vanish for i != j, only its scalar part does, by biorthogonality).
         const Vec2 v = gap_direction(normal[i1], normal[i2], xi);
-        const Vec2 bend_b = bend_gradient(y2 - y1, master.normal[o.master], curve.offset(o.master, eta, (y2 - y1).norm()), v);
-        const Vec2 bend_a = bend_gradient(x2 - x1, slave.normal[s], slave_curve.offset(s, xi, (x2 - x1).norm()), v);
+        const Vec2 bend_b = bend_gradient(y2 - y1, master.normal[o.master], master_geometry.offset(o.master, eta, (y2 - y1).norm()), v);
+        const Vec2 bend_a = bend_gradient(x2 - x1, slave.normal[s], slave_geometry.offset(s, xi, (x2 - x1).norm()), v);
         for (std::size_t j = 0; j < 2; ++j) {
           std::map<int, Term>& row = M[j == 0 ? i1 : i2];
           const double pw = w * psi[j];
@@ -435,18 +311,18 @@ MortarRows mortar_rows(const std::vector<Node>& nodes, const SurfaceMeasure& mea
     add(slave_node, own);
     // sum_k m_k x_k = sum_k m_k (x_k - x_j) + (sum_k m_k) x_j: the second sum is round-off
     // (consistency), the first has no cancellation of coordinates far larger than the gap.
-    const Vec2 xj = position(nodes, slave_node);
+    const Vec2 xj = node_position(nodes, slave_node);
     Vec2 weighted = Vec2::Zero();
     double total = own.mortar;
     for (const auto& [k, t] : entries) {
       add(k, t);
-      weighted += t.mortar * (position(nodes, k) - xj);
+      weighted += t.mortar * (node_position(nodes, k) - xj);
       total += t.mortar;
     }
     weighted += total * xj;
     // The initial gap: D_j times the nodal gap to B's smooth curve (see the header); where node j's
     // normal meets no segment of B (a partly covered end), the polygons' own weighted gap.
-    const std::optional<double> nodal_gap = curve.distance(xj, nj, master_segments);
+    const std::optional<double> nodal_gap = curve_distance(xj, nj, master_segments);
     rows.slave_node.push_back(slave_node);
     rows.normal.push_back(nj);
     rows.g0.push_back(nodal_gap ? D[j] * *nodal_gap : nj.dot(weighted));
@@ -455,6 +331,13 @@ MortarRows mortar_rows(const std::vector<Node>& nodes, const SurfaceMeasure& mea
   }
   if (candidate_checks != nullptr) *candidate_checks += master_segments.candidates();
   return rows;
+}
+
+MortarRows mortar_rows(const std::vector<Node>& nodes, const SurfaceMeasure& measure, const ContactSurface& slave,
+                       const ContactSurface& master, Pairing pairing, std::size_t* candidate_checks) {
+  const SurfaceGeometry slave_geometry(nodes, slave);
+  const SurfaceGeometry master_geometry(nodes, master);
+  return mortar_rows(measure, slave_geometry, master_geometry, pairing, candidate_checks);
 }
 
 }  // namespace saasgaps

@@ -8,8 +8,8 @@
 ///   N_1 = 1 - xi, N_2 = xi               (x = (1 - xi) x_1 + xi x_2 on a segment, 0 <= xi <= 1)
 ///   psi_i = A_i1 N_1 + A_i2 N_2           (dual: int_S psi_i N_k dA = delta_ik d_i on every segment)
 /// with dA = w ds, w = t or 2 pi r. The gap of a point of A is measured along A's normal field
-/// n(xi) = normalize((1 - xi) n_1 + xi n_2), n_j the nodal normals (contact_surface.hpp). Then node j of
-/// A gives ONE constraint row, its weighted gap
+/// n(xi) = normalize((1 - xi) n_1 + xi n_2), n_j the nodal normals (surface_geometry.hpp). Then node j
+/// of A gives ONE constraint row, its weighted gap
 ///   g_j = int_A psi_j n(xi) . (x_B - x_A) dA,
 ///   D_j  = int_A psi_j N_j dA = int_A N_j dA    (diagonal: biorthogonality),
 ///   M_jk = int_A psi_j N_k^B dA                 (k over B's nodes),
@@ -36,6 +36,7 @@
 #include "solver/mortar/contact_surface.hpp"
 #include "solver/mortar/segment_bins.hpp"
 #include "solver/mortar/segment_quadrature.hpp"
+#include "solver/mortar/surface_geometry.hpp"
 
 namespace saasgaps {
 
@@ -68,18 +69,23 @@ struct MortarRows {
 /// a sliver of length delta has condition number ~ 12 / delta^2, and at 1e-3 it keeps 9 digits.
 inline constexpr double min_covered_fraction = 1.0e-3;
 
-/// The rows coupling side A (slave) to side B (master). Each piece of A is paired with the nearest
-/// (along n) segment of B that faces it (segment normals opposed); no distance limit, so a row whose
-/// initial gap is large just never becomes active. Nodes of A that face nothing give no row.
-///
-/// Pairing: master segments are found by a search over bins (segment_bins.hpp), O(1) per slave
-/// segment and node where the sides face each other, and the bins its normal lines cross where a
-/// piece faces nothing; all_against_all tries every master segment (the reference the search is
-/// tested against: both give the same rows).
+/// How the pairing finds master segments. Each piece of A is paired with the nearest (along n) segment
+/// of B that faces it (segment normals opposed); no distance limit, so a row whose initial gap is large
+/// just never becomes active. search: over bins (segment_bins.hpp), O(1) per slave segment and node
+/// where the sides face each other, and the bins its normal lines cross where a piece faces nothing;
+/// all_against_all tries every master segment (the reference the search is tested against: both give
+/// the same rows).
 enum class Pairing { search, all_against_all };
 
+/// The rows coupling side A (slave) to side B (master), from each side's geometry (computed once per
+/// surface: surface_contact(), mortar_method.hpp). Nodes of A that face nothing give no row.
+///
 /// candidate_checks (optional): add the number of master segments the pairing examined (a segment
 /// examined for several slave segments or nodes counts each time).
+MortarRows mortar_rows(const SurfaceMeasure& measure, const SurfaceGeometry& slave, const SurfaceGeometry& master,
+                       Pairing pairing = Pairing::search, std::size_t* candidate_checks = nullptr);
+
+/// The same for one pair on its own (tests, the benchmark): each side's geometry computed here.
 MortarRows mortar_rows(const std::vector<Node>& nodes, const SurfaceMeasure& measure, const ContactSurface& slave,
                        const ContactSurface& master, Pairing pairing = Pairing::search,
                        std::size_t* candidate_checks = nullptr);

@@ -52,4 +52,36 @@ std::optional<std::pair<double, double>> meet(const Vec2& x, const Vec2& n, cons
   return std::make_pair(eta, t);
 }
 
+std::optional<double> distance_to_curve(const SurfaceGeometry& surface, const Vec2& x, const Vec2& n,
+                                        std::span<const std::size_t> near) {
+  const ContactSurface& chain = surface.surface();
+  std::optional<double> best;
+  for (const std::size_t s : near) {
+    const Vec2& nu = chain.normal[s];
+    if (n.dot(nu) >= 0.0) continue;
+    const auto [a, b] = chain.segment(s);
+    const Vec2 y1 = node_position(surface.nodes(), a);
+    const Vec2 y2 = node_position(surface.nodes(), b);
+    const double length = (y2 - y1).norm();
+    const Vec2 tau = (y2 - y1) / length;
+    // Fixed point: the line meets the chord offset by w(eta) at t; each pass shrinks the change in t
+    // by about the chord's angle, so a few passes reach round-off (the interference of a press fit
+    // can be 1e-4 of the radius, a sag's 1e-2: t must be exact to far better than a sag).
+    double eta = 0.0;
+    double t = (0.0 - nu.dot(x - y1)) / nu.dot(n);
+    for (int pass = 0; pass < 60; ++pass) {
+      // Beyond its ends a segment's curve is not defined (nor needed): hold eta in [0, 1].
+      eta = std::clamp(tau.dot(x + t * n - y1) / length, 0.0, 1.0);
+      const double next = (surface.offset(s, eta, length) - nu.dot(x - y1)) / nu.dot(n);
+      const bool settled = std::abs(next - t) <= 1e-15 * (std::abs(t) + length);
+      t = next;
+      if (settled) break;
+    }
+    eta = tau.dot(x + t * n - y1) / length;
+    if (!std::isfinite(t) || !(eta >= -parameter_round_off && eta <= 1.0 + parameter_round_off)) continue;
+    if (!best || std::abs(t) < std::abs(*best)) best = t;
+  }
+  return best;
+}
+
 }  // namespace saasgaps
