@@ -27,6 +27,10 @@
 /// for a node whose normal meets no segment of B (an end only partly facing B). The integrals run over the
 /// overlaps of A's segments with the projections of B's segments (each split where the facing
 /// B segment changes), 3 Gauss points per overlap, exact for the cubic psi N r on straight sides.
+///
+/// The rows are built in the order the concepts come: each side's geometry (surface_geometry.hpp),
+/// the pieces of A facing B (overlap_search.hpp, along normal_projection.hpp's projections), the
+/// integrals over them (segment_quadrature.hpp, dual_basis.hpp), then the rows.
 
 #include <span>
 #include <vector>
@@ -34,7 +38,7 @@
 #include "solver/base/voigt.hpp"
 #include "solver/model/model.hpp"
 #include "solver/mortar/contact_surface.hpp"
-#include "solver/mortar/segment_bins.hpp"
+#include "solver/mortar/overlap_search.hpp"
 #include "solver/mortar/segment_quadrature.hpp"
 #include "solver/mortar/surface_geometry.hpp"
 
@@ -69,16 +73,10 @@ struct MortarRows {
 /// a sliver of length delta has condition number ~ 12 / delta^2, and at 1e-3 it keeps 9 digits.
 inline constexpr double min_covered_fraction = 1.0e-3;
 
-/// How the pairing finds master segments. Each piece of A is paired with the nearest (along n) segment
-/// of B that faces it (segment normals opposed); no distance limit, so a row whose initial gap is large
-/// just never becomes active. search: over bins (segment_bins.hpp), O(1) per slave segment and node
-/// where the sides face each other, and the bins its normal lines cross where a piece faces nothing;
-/// all_against_all tries every master segment (the reference the search is tested against: both give
-/// the same rows).
-enum class Pairing { search, all_against_all };
-
 /// The rows coupling side A (slave) to side B (master), from each side's geometry (computed once per
-/// surface: surface_contact(), mortar_method.hpp). Nodes of A that face nothing give no row.
+/// surface: surface_contact(), mortar_method.hpp): the pieces of A facing B (overlap_search.hpp; no
+/// distance limit, so a row whose initial gap is large just never becomes active), the integrals over
+/// them, then one row per node of A with a share of them. Nodes of A that face nothing give no row.
 ///
 /// candidate_checks (optional): add the number of master segments the pairing examined (a segment
 /// examined for several slave segments or nodes counts each time).
