@@ -22,17 +22,12 @@ std::uint64_t side_key(int a, int b) {
   return (std::uint64_t{lo} << 32U) | hi;
 }
 
-Vec2 position(const std::vector<Node>& nodes, int i) {
-  const Node& n = nodes[static_cast<std::size_t>(i)];
-  return {n.r, n.z};
-}
-
 /// Twice the signed area of an element's polygon (shoelace): > 0 when counter-clockwise.
 double twice_polygon_area(const Model& model, const Element& e) {
   double sum = 0.0;
   for (int k = 0; k < e.node_count; ++k) {
-    const Vec2 a = position(model.nodes, e.nodes[static_cast<std::size_t>(k)]);
-    const Vec2 b = position(model.nodes, e.nodes[static_cast<std::size_t>((k + 1) % e.node_count)]);
+    const Vec2 a = node_position(model.nodes, e.nodes[static_cast<std::size_t>(k)]);
+    const Vec2 b = node_position(model.nodes, e.nodes[static_cast<std::size_t>((k + 1) % e.node_count)]);
     sum += a.x() * b.y() - b.x() * a.y();
   }
   return sum;
@@ -172,7 +167,7 @@ ContactSurface contact_surface(const Model& model, std::span<const std::array<in
   while (!visited[current]) {
     visited[current] = true;
     const SideOwner& o = owner[current];
-    const Vec2 t = position(model.nodes, o.to) - position(model.nodes, o.from);
+    const Vec2 t = node_position(model.nodes, o.to) - node_position(model.nodes, o.from);
     surface.nodes.push_back(o.from);
     surface.element.push_back(o.element);
     surface.edge.push_back(current);
@@ -193,23 +188,6 @@ ContactSurface contact_surface(const Model& model, std::span<const std::array<in
     }
   }
   return surface;
-}
-
-std::vector<Vec2> nodal_normals(const ContactSurface& surface, const std::vector<Node>& nodes) {
-  const std::size_t n = surface.nodes.size();
-  const std::size_t segments = surface.segment_count();
-  std::vector<Vec2> sum(n, Vec2::Zero());
-  for (std::size_t s = 0; s < segments; ++s) {
-    const auto [a, b] = surface.segment(s);
-    const double length = (position(nodes, b) - position(nodes, a)).norm();
-    assert(length > 0.0);
-    // 1 / L weights: on a circle the two chord normals' tangential parts cancel exactly.
-    const Vec2 w = surface.normal[s] / length;
-    sum[s] += w;
-    sum[(s + 1) % n] += w;
-  }
-  for (Vec2& v : sum) v.normalize();
-  return sum;
 }
 
 }  // namespace saasgaps

@@ -1,6 +1,8 @@
 #pragma once
 /// A contact surface (model format `contact.surfaces`): a chain of boundary edges of solid elements,
-/// given as node-index pairs [a, b] in any order and direction. Geometry only; docs/contact-surfaces.md.
+/// given as node-index pairs [a, b] in any order and direction: the chain, validated and oriented. Its
+/// geometry (nodal normals, corners, the smooth curve through the nodes) is surface_geometry.hpp's;
+/// docs/contact-surfaces.md.
 ///
 /// Each edge must be a side of exactly one solid element (gap elements do not count: a face of a
 /// solid that touches a gap element is still a boundary of the solid mesh). The edges must form one
@@ -70,17 +72,14 @@ struct ContactSurface {
   }
 };
 
+/// The position (r, z) of node i.
+inline Vec2 node_position(const std::vector<Node>& nodes, int i) {
+  const Node& n = nodes[static_cast<std::size_t>(i)];
+  return {n.r, n.z};
+}
+
 /// Validates and orients the chain. Node indices must be valid (the io layer resolves ids).
 /// Throws ContactSurfaceError naming every refused edge.
 ContactSurface contact_surface(const Model& model, std::span<const std::array<int, 2>> edges);
-
-/// Unit normal at each node of the chain (same order as surface.nodes): the adjacent segments'
-/// normals weighted by the inverse of their lengths,
-///   n_j = normalize(n_{s-1} / L_{s-1} + n_s / L_s)    (an open chain's end nodes: their one segment's),
-/// which for nodes on a circle is exactly radial however unequal the two chords are (chord s of angle
-/// a_s has its normal at its mid angle and L_s = 2 R sin(a_s / 2): the tangential parts
-/// sin(a_s / 2) / L_s cancel; equal weights would tilt it by about (L_s - L_{s-1}) / 4R). At a
-/// corner it lies between the two faces' normals, nearer the shorter segment's.
-std::vector<Vec2> nodal_normals(const ContactSurface& surface, const std::vector<Node>& nodes);
 
 }  // namespace saasgaps

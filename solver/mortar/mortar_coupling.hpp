@@ -8,8 +8,8 @@
 ///   N_1 = 1 - xi, N_2 = xi               (x = (1 - xi) x_1 + xi x_2 on a segment, 0 <= xi <= 1)
 ///   psi_i = A_i1 N_1 + A_i2 N_2           (dual: int_S psi_i N_k dA = delta_ik d_i on every segment)
 /// with dA = w ds, w = t or 2 pi r. The gap of a point of A is measured along A's normal field
-/// n(xi) = normalize((1 - xi) n_1 + xi n_2), n_j the nodal normals (contact_surface.hpp). Then node j of
-/// A gives ONE constraint row, its weighted gap
+/// n(xi) = normalize((1 - xi) n_1 + xi n_2), n_j the nodal normals (surface_geometry.hpp). Then node j
+/// of A gives ONE constraint row, its weighted gap
 ///   g_j = int_A psi_j n(xi) . (x_B - x_A) dA,
 ///   D_j  = int_A psi_j N_j dA = int_A N_j dA    (diagonal: biorthogonality),
 ///   M_jk = int_A psi_j N_k^B dA                 (k over B's nodes),
@@ -27,6 +27,10 @@
 /// for a node whose normal meets no segment of B (an end only partly facing B). The integrals run over the
 /// overlaps of A's segments with the projections of B's segments (each split where the facing
 /// B segment changes), 3 Gauss points per overlap, exact for the cubic psi N r on straight sides.
+///
+/// The rows are built in the order the concepts come: each side's geometry (surface_geometry.hpp),
+/// the pieces of A facing B (overlap_search.hpp, along normal_projection.hpp's projections), the
+/// integrals over them (segment_quadrature.hpp, dual_basis.hpp), then the rows.
 
 #include <span>
 #include <vector>
@@ -34,37 +38,11 @@
 #include "solver/base/voigt.hpp"
 #include "solver/model/model.hpp"
 #include "solver/mortar/contact_surface.hpp"
-#include "solver/mortar/segment_bins.hpp"
+#include "solver/mortar/overlap_search.hpp"
+#include "solver/mortar/segment_quadrature.hpp"
+#include "solver/mortar/surface_geometry.hpp"
 
 namespace saasgaps {
-
-/// The measure of a surface: dA = w(r) ds, w = thickness (plane) or 2 pi r (axisymmetric, full ring).
-struct SurfaceMeasure {
-  AnalysisType analysis = AnalysisType::plane_stress;
-  double thickness = 1.0;
-  [[nodiscard]] double weight(double r) const;
-};
-
-/// A piece [lo, hi] of a segment's parameter range [0, 1].
-struct ParameterInterval {
-  double lo = 0.0;
-  double hi = 1.0;
-};
-
-/// The dual basis of one segment x_1 -> x_2 over the part of it that `covered` (disjoint pieces) gives:
-///   psi_i = A(i, 0) N_1 + A(i, 1) N_2,   A = diag(d) Me^-1,
-///   Me_kl = int_covered N_k N_l dA,      d_k = int_covered N_k dA,
-/// so that int_covered psi_i N_k dA = delta_ik d_i (and sum_i psi_i = 1). On a whole plane segment
-/// A = [[2, -1], [-1, 2]]; on a whole axisymmetric one (radii r_1, r_2, q = r_1^2 + 4 r_1 r_2 + r_2^2)
-///   psi_1 = (2 r_1 + r_2) ((r_1 + 3 r_2) N_1 - (r_1 + r_2) N_2) / q,
-///   psi_2 = (r_1 + 2 r_2) ((3 r_1 + r_2) N_2 - (r_1 + r_2) N_1) / q.
-struct DualBasis {
-  Eigen::Matrix2d A = Eigen::Matrix2d::Zero();
-  Vec2 d = Vec2::Zero();  ///< d_i = int_covered N_i dA (area: length x thickness, or the ring's)
-};
-
-DualBasis dual_basis(const Vec2& x1, const Vec2& x2, std::span<const ParameterInterval> covered,
-                     const SurfaceMeasure& measure);
 
 /// The constraint rows of one pair of surfaces, in CSR form, one row per node of A that faces B,
 /// in the order of A's chain. Row r holds entries [start[r], start[r + 1]): the node of A first
@@ -95,18 +73,17 @@ struct MortarRows {
 /// a sliver of length delta has condition number ~ 12 / delta^2, and at 1e-3 it keeps 9 digits.
 inline constexpr double min_covered_fraction = 1.0e-3;
 
-/// The rows coupling side A (slave) to side B (master). Each piece of A is paired with the nearest
-/// (along n) segment of B that faces it (segment normals opposed); no distance limit, so a row whose
-/// initial gap is large just never becomes active. Nodes of A that face nothing give no row.
+/// The rows coupling side A (slave) to side B (master), from each side's geometry (computed once per
+/// surface: surface_contact(), mortar_method.hpp): the pieces of A facing B (overlap_search.hpp; no
+/// distance limit, so a row whose initial gap is large just never becomes active), the integrals over
+/// them, then one row per node of A with a share of them. Nodes of A that face nothing give no row.
 ///
-/// Pairing: master segments are found by a search over bins (segment_bins.hpp), O(1) per slave
-/// segment and node where the sides face each other, and the bins its normal lines cross where a
-/// piece faces nothing; all_against_all tries every master segment (the reference the search is
-/// tested against: both give the same rows).
-enum class Pairing { search, all_against_all };
-
 /// candidate_checks (optional): add the number of master segments the pairing examined (a segment
 /// examined for several slave segments or nodes counts each time).
+MortarRows mortar_rows(const SurfaceMeasure& measure, const SurfaceGeometry& slave, const SurfaceGeometry& master,
+                       Pairing pairing = Pairing::search, std::size_t* candidate_checks = nullptr);
+
+/// The same for one pair on its own (tests, the benchmark): each side's geometry computed here.
 MortarRows mortar_rows(const std::vector<Node>& nodes, const SurfaceMeasure& measure, const ContactSurface& slave,
                        const ContactSurface& master, Pairing pairing = Pairing::search,
                        std::size_t* candidate_checks = nullptr);

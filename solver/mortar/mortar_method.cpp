@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "solver/base/errors.hpp"
 #include "solver/base/plural.hpp"
+#include "solver/mortar/surface_geometry.hpp"
 
 namespace saasgaps {
 
@@ -13,10 +15,16 @@ SurfaceContact surface_contact(const Model& model) {
   SurfaceContact out;
   if (!model.contact) return out;
   for (const SurfaceDefinition& s : model.contact->surfaces) out.surfaces.push_back(contact_surface(model, s.edges));
+  // Each surface's geometry once, however many pairs it is in (and none for a surface in no pair).
+  std::vector<std::optional<SurfaceGeometry>> geometry(out.surfaces.size());
+  const auto geometry_of = [&](int surface) -> const SurfaceGeometry& {
+    std::optional<SurfaceGeometry>& g = geometry[static_cast<std::size_t>(surface)];
+    if (!g) g.emplace(model.nodes, out.surfaces[static_cast<std::size_t>(surface)]);
+    return *g;
+  };
   const SurfaceMeasure measure{model.analysis, model.thickness};
   for (const SurfacePair& pair : model.contact->pairs) {
-    MortarRows rows = mortar_rows(model.nodes, measure, out.surfaces[static_cast<std::size_t>(pair.surfaces[0])],
-                                  out.surfaces[static_cast<std::size_t>(pair.surfaces[1])]);
+    MortarRows rows = mortar_rows(measure, geometry_of(pair.surfaces[0]), geometry_of(pair.surfaces[1]));
     for (std::size_t r = 0; r < rows.size(); ++r) {
       // Divided by D_j: a gap in length units whose multiplier is a force (mortar_method.hpp).
       ContactPair p;

@@ -1,6 +1,6 @@
 #pragma once
 /// A uniform grid of bins over the segments of a contact surface, for the mortar pairing's search
-/// (mortar_coupling.cpp): which segments come near a box. Building is O(m) for m segments of
+/// (overlap_search.hpp): which segments come near a box. Building is O(m) for m segments of
 /// comparable length; a query costs the bins it overlaps plus the segments it returns.
 ///
 /// Bins are square, of side about the mean segment length, but never more than max_bins_per_segment

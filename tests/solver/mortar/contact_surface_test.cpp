@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "solver/mortar/surface_geometry.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/stacked_blocks.hpp"
 

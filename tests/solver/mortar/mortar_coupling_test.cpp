@@ -11,6 +11,7 @@
 #include <numbers>
 #include <random>
 
+#include "solver/mortar/dual_basis.hpp"
 #include "support/mesh_builder.hpp"
 #include "support/stacked_blocks.hpp"
 
