@@ -2,8 +2,21 @@
 // solved as given and, when it has classic gaps, once more with "gaps.method": "exact"; nodal
 // displacements, element stresses, gap closures and stresses, and the contact points' pressure and
 // shear (runs with contact surfaces) must equal the values committed in
-// data/example_regression/<example>[.method-exact].txt to 1e-9 of each field's scale, and the status and
-// iteration counts exactly. This holds the solver's results in place while its code is rearranged.
+// data/example_regression/<example>[.method-exact].txt to 1e-7 of each field's scale, the status and
+// the iteration count exactly, and the last iteration's active-set count within 2. This holds the
+// solver's results in place while its code is rearranged.
+//
+// What the committed digits carry (docs/verification.md, "Regression values"): the same model solved
+// on other x86-64 processors, BLAS kernels and compilations differs by round-off, measured at up to
+// 2.2e-9 of a field's scale (the ring shrink fit, whose nine gap iterations amplify the round-off of
+// each solve) over OpenBLAS's core types from Prescott to Cooperlake, 1 and 2 threads, -O2 with and
+// without -march=native, and -O0. The tolerance is 1e-7, about 45 times that: a change of the
+// results (an algorithm or a formula) moves them by far more, round-off on a processor not measured
+// stays inside. The active-set count of exact contact is a path, not a result: which rows the
+// look-ahead's early stop judges violated depends on round-off near zero gaps (the heat shield takes
+// 2 or 4 sets to the same answer depending on the BLAS kernel); a look-ahead that stops working
+// shows as many more (17 on the report's problem 3 without it). Bit-identical results are claimed
+// where they hold: a resumed run against an uninterrupted one on the same machine (restart tests).
 //
 // A field's scale is the largest |value| of that field over the whole model (committed with it). A
 // field that is zero up to round-off (plane stress sigma_theta, tau_rz of a uniform block) has no
@@ -36,7 +49,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double relative_tolerance = 1e-9;
+/// Of each field's scale: about 45 times the largest round-off measured across machines (see above).
+constexpr double relative_tolerance = 1e-7;
+/// The exact-contact solve's active sets in the last iteration: a path that round-off can shorten or
+/// lengthen by a set or two (see above).
+constexpr int active_set_slack = 2;
 constexpr std::size_t sample_size = 200;
 
 /// One run: an example file, as given or switched to exact contact.
@@ -202,7 +219,9 @@ TEST_P(ExampleRegression, SameResultsAsCommitted) {
   const Committed c = read(run);
   EXPECT_EQ(to_string(s.status), c.status);
   EXPECT_EQ(s.iterations, c.iterations);
-  EXPECT_EQ(s.history.empty() ? 0 : s.history.back().active_set_iterations, c.active_set_iterations);
+  EXPECT_LE(std::abs((s.history.empty() ? 0 : s.history.back().active_set_iterations) - c.active_set_iterations),
+            active_set_slack)
+      << "active sets of the last iteration against the committed " << c.active_set_iterations;
 
   const std::vector<Field> fields = fields_of(s);
   std::map<Kind, double> kind_scale;
