@@ -34,7 +34,8 @@ std::optional<GapSettings> effective_gap_settings(const Model& model, const Resu
 
 /// Everything derived from one iteration's displacements.
 struct Evaluation {
-  std::vector<ElementState> solids;
+  std::vector<ElementState> points;   ///< per material point (fe/material_points.hpp)
+  std::vector<ElementState> centres;  ///< per solid element: the state elements[] reports
   MaterialUpdate materials;
   ContactOutcome contact;
   bool converged = false;  ///< the materials' verdict AND the contact method's
@@ -169,7 +170,7 @@ class GapContactAnalysis {
   bool next_increment(RestartState& state) {
     if (!state.position) return false;
     // The peaks of this increment's yielded elements go into the state the next one starts from.
-    if (now_->materials.nonlinear()) now_->materials.record_peaks(state.materials, eval_.solids, eval_.materials.next);
+    if (now_->materials.nonlinear()) now_->materials.record_peaks(state.materials, eval_.points, eval_.materials.next);
     if (!schedule_.advance(*state.position, state.displacement)) return false;
     begin_increment(state);
     solved_in_increment_ = false;
@@ -246,7 +247,9 @@ class GapContactAnalysis {
     }
     if (!now.assembled_solids || state.materials != now.assembled_materials) {
       SolidMaterials::LawMemo memo;
-      now.system.assemble_solids([&](std::size_t e) { return now.materials.law(e, state.materials, memo); });
+      now.system.assemble_solids([&](std::size_t e, std::span<Constitutive> scratch) {
+        return now.materials.laws(e, state.materials, memo, scratch);
+      });
       now.assembled_materials = state.materials;
       now.assembled_solids = true;
     }
@@ -295,14 +298,19 @@ class GapContactAnalysis {
   /// The same code runs after a solve and after a resume, which is what makes a restart exact.
   void evaluate(RestartState& state, Evaluation& v) const {
     const IncrementSystem& now = *now_;
-    v.solids.resize(model_.elements.size());
+    const MaterialPoints& points = now.materials.points();
+    v.points.resize(points.size());
+    v.centres.resize(model_.elements.size());
     SolidMaterials::LawMemo memo;
+    std::array<Constitutive, max_material_points> laws;
     for (std::size_t e = 0; e < model_.elements.size(); ++e) {
       const Element& el = model_.elements[e];
-      const ElementData data = solid_element_data(now.model, e, now.materials.law(e, state.materials, memo));
-      v.solids[e] = element_state(data, element_displacements(state.displacement, el.nodes, el.node_count));
+      const ElementData data = solid_element_data(now.model, e, now.materials.laws(e, state.materials, memo, laws));
+      const ElementStates s = element_states(data, values(element_displacements(state.displacement, el.node_span())));
+      std::copy_n(s.point.begin(), s.point_count, v.points.begin() + static_cast<std::ptrdiff_t>(points.first(e)));
+      v.centres[e] = s.centre;
     }
-    now.materials.update(state.materials, v.solids, model_.solver.plastic_tolerance, v.materials);
+    now.materials.update(state.materials, v.points, model_.solver.plastic_tolerance, v.materials);
     const bool materials_converged = v.materials.nonconverged_count == 0 && v.materials.bimodulus_changes == 0;
     now.contact->evaluate(state, v.contact);
     v.converged = materials_converged && v.contact.converged();
@@ -329,7 +337,7 @@ class GapContactAnalysis {
     for (const GapResult& g : c.gaps) row.gap_closures.push_back(g.closure);
     now_->contact->add_columns(state, row);
     for (int e : model_.output.watch_elements) {
-      const Vec4& s = v.solids[e].stress;
+      const Vec4& s = v.centres[static_cast<std::size_t>(e)].stress;
       row.watch_elements.push_back({model_.elements[e].id, s[rr], s[zz], s[rz], s[th], von_mises(s)});
     }
     for (int g : model_.output.watch_gaps) {
@@ -352,12 +360,20 @@ class GapContactAnalysis {
     }
     if (state.iteration > 0) {
       // Every element's principal stresses, on the cores (the run's last work before its result).
+      const MaterialPoints& points = now_->materials.points();
       s.elements.resize(model_.elements.size());
       for_each_range(model_.elements.size(), [&](std::size_t begin, std::size_t end, unsigned) {
         for (std::size_t e = begin; e < end; ++e) {
-          const ElementState& es = v.solids[e];
+          const ElementState& es = v.centres[e];
+          // An element has yielded when any of its points has, converged when all have.
+          bool yielded = false;
+          bool converged = true;
+          for (std::size_t p = points.first(e), last = p + static_cast<std::size_t>(points.count(e)); p < last; ++p) {
+            yielded = yielded || v.materials.yielded[p];
+            converged = converged && v.materials.converged[p];
+          }
           s.elements[e] = {model_.elements[e].id, es.stress, es.strain, principal_in_plane(es.stress),
-                           von_mises(es.stress), v.materials.yielded[e], v.materials.converged[e]};
+                           von_mises(es.stress), yielded, converged};
         }
       });
       s.gaps = v.contact.gaps;
@@ -378,13 +394,19 @@ class GapContactAnalysis {
     SolidMaterials::LawMemo memo;
     if (solved_in_increment_) {
       const IncrementSystem& now = *now_;
-      return support_reactions(now.model, now.dofs, [&](std::size_t e) { return now.materials.law(e, state.materials, memo); },
+      return support_reactions(now.model, now.dofs,
+                               [&](std::size_t e, std::span<Constitutive> scratch) {
+                                 return now.materials.laws(e, state.materials, memo, scratch);
+                               },
                                state.displacement, contact);
     }
     const Model solved = schedule_.increment_model(schedule_.previous(*state.position));
     const DofMap dofs(solved);
     const SolidMaterials materials(solved);
-    return support_reactions(solved, dofs, [&](std::size_t e) { return materials.law(e, state.materials, memo); },
+    return support_reactions(solved, dofs,
+                             [&](std::size_t e, std::span<Constitutive> scratch) {
+                               return materials.laws(e, state.materials, memo, scratch);
+                             },
                              state.displacement, contact);
   }
 

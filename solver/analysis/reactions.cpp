@@ -10,6 +10,12 @@ namespace saasgaps {
 std::vector<NodeReaction> support_reactions(const Model& model, const DofMap& dofs, const LawOf& solid_law,
                                             std::span<const double> displacement,
                                             std::span<const double> contact_forces) {
+  return support_reactions(model, dofs, at_every_point(solid_law), displacement, contact_forces);
+}
+
+std::vector<NodeReaction> support_reactions(const Model& model, const DofMap& dofs, const PointLawsOf& solid_laws,
+                                            std::span<const double> displacement,
+                                            std::span<const double> contact_forces) {
   const std::size_t n = model.nodes.size();
   assert(displacement.size() == 2 * n);
   assert(contact_forces.empty() || contact_forces.size() == 2 * n);
@@ -19,24 +25,24 @@ std::vector<NodeReaction> support_reactions(const Model& model, const DofMap& do
     constrained[a] = dofs.equation(node, 0) < 0 || dofs.equation(node, 1) < 0;
   }
   std::vector<double> residual(2 * n, 0.0);  // written at constrained nodes only
-  const auto touches = [&constrained](const std::array<int, 4>& nodes, int count) {
-    for (int a = 0; a < count; ++a) {
-      if (constrained[nodes[a]]) return true;
+  const auto touches = [&constrained](std::span<const int> nodes) {
+    for (const int a : nodes) {
+      if (constrained[static_cast<std::size_t>(a)]) return true;
     }
     return false;
   };
 
+  std::array<Constitutive, max_material_points> scratch;
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
     const Element& el = model.elements[e];
-    if (!touches(el.nodes, el.node_count)) continue;
-    const ElementMatrices m = element_matrices(solid_element_data(model, e, solid_law(e)));
-    // The kernel fills the upper triangle (the assembler reads no more): K_e u_e from it alone.
-    const Vec8 u = element_displacements(displacement, el.nodes, el.node_count);
-    const Mat8 K = m.K.selfadjointView<Eigen::Upper>();
-    const Vec8 internal = K * u - m.f;
+    if (!touches(el.node_span())) continue;
+    const ElementMatrices m = element_matrices(solid_element_data(model, e, solid_laws(e, scratch)));
+    const ElementVector u = element_displacements(displacement, el.node_span());
+    const ElementVector internal = internal_forces(m, u);
     for (int a = 0; a < el.node_count; ++a) {
-      residual[2 * el.nodes[a]] += internal[2 * a];
-      residual[2 * el.nodes[a] + 1] += internal[2 * a + 1];
+      const auto node = static_cast<std::size_t>(el.nodes[static_cast<std::size_t>(a)]);
+      residual[2 * node] += internal[2 * a];
+      residual[2 * node + 1] += internal[2 * a + 1];
     }
   }
   for_each_external_load(model, [&](int node, const Vec2& force) {

@@ -23,8 +23,12 @@
 namespace saasgaps {
 
 /// The reactions at every node with a prescribed component (dofs: the state's numbering), in node
-/// order. displacement: (u_r, u_z) per node, prescribed ones included; solid_law: the law each solid
+/// order. displacement: (u_r, u_z) per node, prescribed ones included; solid_laws: the laws each solid
 /// element was solved with; contact_forces: f_contact, 2 per node (empty: none).
+std::vector<NodeReaction> support_reactions(const Model& model, const DofMap& dofs, const PointLawsOf& solid_laws,
+                                            std::span<const double> displacement,
+                                            std::span<const double> contact_forces);
+/// The same with one law per element (at every point).
 std::vector<NodeReaction> support_reactions(const Model& model, const DofMap& dofs, const LawOf& solid_law,
                                             std::span<const double> displacement,
                                             std::span<const double> contact_forces);

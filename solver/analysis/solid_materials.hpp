@@ -5,12 +5,17 @@
 ///  - the tension or compression table per material direction, by the sign of its stress (bimodulus);
 ///    a direction whose stress is below the plastic tolerance of the element's largest keeps its table.
 /// Across the increments of a stepped run, yielded elements unload elastically (plastic_history.hpp).
+///
+/// The state lives at material points (fe/material_points.hpp): the report's elements have one, at
+/// their centre, read at the mean temperature of their nodes; the other families one per
+/// integration point, read at the temperature their shape functions interpolate there.
 
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "solver/fe/element_kernel.hpp"
+#include "solver/fe/material_points.hpp"
 #include "solver/materials/material.hpp"
 #include "solver/materials/material_state.hpp"
 #include "solver/materials/plastic_history.hpp"
@@ -18,13 +23,13 @@
 
 namespace saasgaps {
 
-/// Per-element verdicts on one solution, and the state for the next iteration.
+/// Per-point verdicts on one solution, and the state for the next iteration.
 struct MaterialUpdate {
   MaterialState next;
-  std::vector<bool> yielded;    ///< YIELD?: effective stress above the yield stress
-  std::vector<bool> converged;  ///< N-L/CONV?: the secant modulus no longer changes
-  int yielded_count = 0;
-  int nonconverged_count = 0;
+  std::vector<bool> yielded;    ///< per material point, YIELD?: effective stress above the yield stress
+  std::vector<bool> converged;  ///< per material point, N-L/CONV?: the secant modulus no longer changes
+  int yielded_count = 0;        ///< elements with a yielded point
+  int nonconverged_count = 0;   ///< elements with a point not converged
   int bimodulus_changes = 0;    ///< elements whose choice changed (only stressed directions change)
 };
 
@@ -35,8 +40,11 @@ class SolidMaterials {
   /// Every element elastic and in tension: the state of iteration 1.
   [[nodiscard]] MaterialState initial() const;
 
-  /// The law of solid element e under state s (on the unloading branch: with its plastic strain).
+  /// The law of solid element e's first material point (the report's elements: its only one)
+  /// under state s (on the unloading branch: with its plastic strain).
   [[nodiscard]] Constitutive law(std::size_t e, const MaterialState& s) const;
+  /// The law at material point `point` of element e.
+  [[nodiscard]] Constitutive law(std::size_t e, int point, const MaterialState& s) const;
 
   /// The last law computed and what it depended on: neighbouring elements usually share material,
   /// temperature, angle and state, and then share the law (a 4x4 inversion and rotation saved).
@@ -48,11 +56,18 @@ class SolidMaterials {
   };
   /// law(e, s), reusing memo when element e needs the same law as the last one.
   [[nodiscard]] const Constitutive& law(std::size_t e, const MaterialState& s, LawMemo& memo) const;
+  /// The laws of every material point of element e into out (at least max_material_points long);
+  /// returns the leading count(e) of them.
+  std::span<const Constitutive> laws(std::size_t e, const MaterialState& s, LawMemo& memo,
+                                     std::span<Constitutive> out) const;
+
+  [[nodiscard]] const MaterialPoints& points() const { return points_; }
 
   /// Strain invariance: from the element stresses of a solution built with `used`, read the secant
   /// modulus off the bilinear curve at the same effective strain, and the bimodulus choice from
   /// the stress signs. tolerance: relative change of E_s that still counts as converged. Writes into
   /// `out`, whose buffers are reused from one iteration to the next.
+  /// `states`: one per material point.
   void update(const MaterialState& used, std::span<const ElementState> states, double tolerance,
               MaterialUpdate& out) const;
 
@@ -65,11 +80,15 @@ class SolidMaterials {
   [[nodiscard]] bool nonlinear() const { return nonlinear_; }
 
  private:
-  /// Elastic constants of element e for a direction choice, before any secant scaling.
-  [[nodiscard]] ElasticConstants constants(std::size_t e, DirectionChoice choice) const;
+  /// Elastic constants at material point p of element e for a direction choice, before any secant scaling.
+  [[nodiscard]] ElasticConstants constants(std::size_t e, std::size_t p, DirectionChoice choice) const;
+  [[nodiscard]] Constitutive point_law(std::size_t e, std::size_t p, const MaterialState& s) const;
+  [[nodiscard]] const Constitutive& point_law(std::size_t e, std::size_t p, const MaterialState& s,
+                                              LawMemo& memo) const;
 
   const Model& model_;
-  std::vector<double> temperature_;  // per solid element: mean of its nodes
+  MaterialPoints points_;
+  std::vector<double> temperature_;  // per material point
   bool nonlinear_ = false;
 };
 

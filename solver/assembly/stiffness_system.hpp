@@ -23,6 +23,14 @@ namespace saasgaps {
 /// The constitutive law of element (or gap) number i.
 using LawOf = std::function<Constitutive(std::size_t)>;
 
+/// The laws of every material point of solid element e (fe/material_points.hpp), in the element's
+/// point order: written into `scratch` (max_material_points long) or held elsewhere; one law stands
+/// for every point.
+using PointLawsOf = std::function<std::span<const Constitutive>(std::size_t e, std::span<Constitutive> scratch)>;
+
+/// One law per element, at every point.
+PointLawsOf at_every_point(const LawOf& law_of);
+
 /// The model's nodal forces and the consistent nodal loads of its edge tractions, one add(node index,
 /// (f_r, f_z)) per node and load, in assembly order: f_loads of K u = f (element loads apart).
 void for_each_external_load(const Model& model, const std::function<void(int node, const Vec2& force)>& add);
@@ -36,6 +44,8 @@ class StiffnessSystem {
   /// Solid elements with law_of(e): K_solid, and f = external loads + element loads (thermal, body
   /// force) - K_fp u_p for prescribed displacements u_p.
   void assemble_solids(const LawOf& law_of);
+  /// The same with a law per material point.
+  void assemble_solids(const PointLawsOf& laws_of);
 
   /// Gap elements with law_of(g), on top of the last solid assembly.
   void assemble_gaps(const LawOf& law_of);

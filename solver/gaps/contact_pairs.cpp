@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "solver/assembly/element_data.hpp"
+#include "solver/fe/edge_loads.hpp"
 #include "solver/fe/element_kernel.hpp"
 #include "solver/gaps/gap_faces.hpp"
 

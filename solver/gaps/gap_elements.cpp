@@ -76,7 +76,7 @@ void GapElements::measure(const GapHistory& history, std::span<const double> dis
   for (std::size_t g = 0; g < elements.size(); ++g) {
     const GapElement& gap = elements[g];
     const ElementData data = gap_element_data(model_, g, closure_.law(g, history.used, model_.analysis));
-    const ElementState es = element_state(data, element_displacements(displacement, gap.nodes, gap.node_count));
+    const ElementState es = element_state(data, values(element_displacements(displacement, gap.node_span())));
     GapResult& r = outcome.gaps[g];
     r.id = gap.id;
     r.eps_m = normal_component(es.strain, gap.angle_deg, 1.0);
@@ -93,9 +93,7 @@ void GapElements::add_nodal_forces(const GapHistory& history, std::span<const do
     const GapElement& gap = elements[g];
     const ElementMatrices m =
         element_matrices(gap_element_data(model_, g, closure_.law(g, history.used, model_.analysis)));
-    // The upper triangle is what the system assembles.
-    const Mat8 K = m.K.selfadjointView<Eigen::Upper>();
-    const Vec8 internal = K * element_displacements(displacement, gap.nodes, gap.node_count) - m.f;
+    const ElementVector internal = internal_forces(m, element_displacements(displacement, gap.node_span()));
     for (int a = 0; a < gap.node_count; ++a) {
       forces[2 * static_cast<std::size_t>(gap.nodes[a])] -= internal[2 * a];
       forces[2 * static_cast<std::size_t>(gap.nodes[a]) + 1] -= internal[2 * a + 1];

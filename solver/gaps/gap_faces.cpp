@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "solver/assembly/element_data.hpp"
+#include "solver/fe/edge_loads.hpp"
+#include "solver/fe/element_geometry.hpp"
 #include "solver/fe/element_kernel.hpp"
 
 namespace saasgaps {

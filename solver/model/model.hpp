@@ -7,10 +7,12 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "solver/base/name_table.hpp"
+#include "solver/model/element_type.hpp"
 #include "solver/model/loads.hpp"
 
 namespace saasgaps {
@@ -63,14 +65,18 @@ struct Material {
   bool stores_heat = false;  ///< every row of `table` gives c
 };
 
-/// A solid element: 3 nodes (constant-strain triangle) or 4 nodes (SAAS quadrilateral of four
-/// triangles around a condensed centre node), counter-clockwise, by node index.
+/// A solid element of any family (fe/element_family.hpp): its nodes by index, corners
+/// counter-clockwise first, then the mid-side nodes in the order of the edges, then the centre.
 struct Element {
   int id = 0;
-  std::array<int, 4> nodes{-1, -1, -1, -1};
+  std::array<int, max_element_nodes> nodes{-1, -1, -1, -1, -1, -1, -1, -1, -1};
   int node_count = 4;
+  ElementType type = ElementType::saas;        ///< the family (default by node count: tri3, saas, tri6, quad8, quad9)
+  Integration integration = Integration::full;  ///< quad8, quad9: full 3 x 3 or reduced 2 x 2
   int material = 0;          ///< index into Model::materials
   double angle_deg = 0.0;    ///< material axis 1, counter-clockwise from +r
+
+  [[nodiscard]] std::span<const int> node_span() const { return std::span<const int>(nodes).first(static_cast<std::size_t>(node_count)); }
 };
 
 /// A gap element: geometry like a solid element; its properties are set by the program. angle_deg
@@ -80,6 +86,8 @@ struct GapElement {
   std::array<int, 4> nodes{-1, -1, -1, -1};
   int node_count = 4;
   double angle_deg = 0.0;
+
+  [[nodiscard]] std::span<const int> node_span() const { return std::span<const int>(nodes).first(static_cast<std::size_t>(node_count)); }
 };
 
 /// How a gap passes the convergence test of section II (e).

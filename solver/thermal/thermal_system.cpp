@@ -26,10 +26,10 @@ std::vector<DofMap::Prescribed> prescribed_temperatures(const Model& model) {
 bool conducting_gaps(const Model& model) { return model.gaps && model.gaps->conductance && !model.gaps->elements.empty(); }
 
 /// The mean of an element's corner temperatures: where its properties are taken.
-double mean_temperature(const std::array<int, 4>& nodes, int count, std::span<const double> T) {
+double mean_temperature(std::span<const int> nodes, std::span<const double> T) {
   double sum = 0.0;
-  for (int k = 0; k < count; ++k) sum += T[static_cast<std::size_t>(nodes[k])];
-  return sum / count;
+  for (const int n : nodes) sum += T[static_cast<std::size_t>(n)];
+  return sum / static_cast<int>(nodes.size());
 }
 
 /// Position of node n among an element's corners.
@@ -122,7 +122,7 @@ std::vector<Conductivity> ThermalSystem::conductivities(std::span<const double> 
   k.reserve(model_.elements.size());
   for (const Element& el : model_.elements) {
     const Material& m = model_.materials[static_cast<std::size_t>(el.material)];
-    const ThermalConstants c = interpolate_thermal(m.table, mean_temperature(el.nodes, el.node_count, T));
+    const ThermalConstants c = interpolate_thermal(m.table, mean_temperature(el.node_span(), T));
     k.push_back({c.k1, c.k2, el.angle_deg});
   }
   return k;
@@ -134,7 +134,7 @@ std::vector<double> ThermalSystem::capacity_rates(double inverse_dt, std::span<c
   rates.reserve(model_.elements.size());
   for (const Element& el : model_.elements) {
     const Material& m = model_.materials[static_cast<std::size_t>(el.material)];
-    const double c = interpolate_thermal(m.table, mean_temperature(el.nodes, el.node_count, previous)).c;
+    const double c = interpolate_thermal(m.table, mean_temperature(el.node_span(), previous)).c;
     rates.push_back(m.density * c * inverse_dt);
   }
   return rates;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "solver/fe/edge_loads.hpp"
 #include "solver/fe/element_kernel.hpp"
 
 namespace saasgaps::testing {

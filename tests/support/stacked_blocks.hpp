@@ -58,7 +58,7 @@ std::vector<std::array<int, 2>> row_edges(const Grid& grid, int j);
 /// The edges of grid column i (nodes (i, j) - (i, j + 1)), j = 0..nj-1.
 std::vector<std::array<int, 2>> column_edges(const Grid& grid, int i);
 
-/// Adds the consistent nodal loads (element_kernel.hpp's edge_traction_loads) of a uniform traction
+/// Adds the consistent nodal loads (fe/edge_loads.hpp's edge_traction_loads) of a uniform traction
 /// (force per unit area, along r and z) on the given edges, as nodal forces.
 void add_traction(Model& model, const std::vector<std::array<int, 2>>& edges, const Vec2& traction);
 

@@ -27,6 +27,7 @@
 #include "io/restart/state_codec.hpp"
 #include "solver/analysis/analysis.hpp"
 #include "solver/base/errors.hpp"
+#include "solver/fe/edge_loads.hpp"
 #include "solver/fe/element_kernel.hpp"
 #include "support/examples.hpp"
 #include "support/hertz_line_contact.hpp"

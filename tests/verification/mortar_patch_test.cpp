@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "solver/assembly/element_data.hpp"
+#include "solver/fe/edge_loads.hpp"
 #include "solver/fe/element_kernel.hpp"
 #include "solver/materials/material.hpp"
 #include "solver/mortar/mortar_coupling.hpp"
@@ -158,7 +159,7 @@ Outcome pressed(const StackedBlocks& b, const Constraints& c) {
     const Element& el = m.elements[e];
     Vec8 ue = Vec8::Zero();
     for (int a = 0; a < 2 * el.node_count; ++a) ue[a] = u[2 * el.nodes[static_cast<std::size_t>(a / 2)] + a % 2];
-    const Vec4 s = element_state(data[e], ue).stress;
+    const Vec4 s = element_state(data[e], std::span<const double>(ue.data(), 8)).stress;
     for (const double d : {s[rr], s[zz] + pressure, s[rz]}) out.stress_error = std::max(out.stress_error, std::abs(d) / pressure);
   }
   for (Eigen::Index r = 0; r < R; ++r) {

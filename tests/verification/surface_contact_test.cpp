@@ -198,7 +198,7 @@ FitErrors plane_fit_errors(AnalysisType type, int radial, std::array<int, 2> aro
   const std::size_t first_hub = static_cast<std::size_t>(radial * around[0]);
   for (std::size_t k = first_hub; k < first_hub + static_cast<std::size_t>(around[1]); ++k) {
     Vec2 c = Vec2::Zero();
-    for (const int n : m.elements[k].nodes) c += position(m, n) / static_cast<double>(m.elements[k].nodes.size());
+    for (const int n : m.elements[k].node_span()) c += position(m, n) / static_cast<double>(m.elements[k].node_count);
     const double r = c.norm();
     const double cs = c.x() / r, sn = c.y() / r;
     const Vec4& st = s.elements[k].stress;  // (xx, yy, xy, zz) in the plane

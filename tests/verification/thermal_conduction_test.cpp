@@ -50,7 +50,7 @@ std::vector<ThermalEdge> side(const Model& m, const testing::Grid& g, bool along
     const int a = along_i ? g.at(k, fixed) : g.at(fixed, k);
     const int b = along_i ? g.at(k + 1, fixed) : g.at(fixed, k + 1);
     for (std::size_t e = 0; e < m.elements.size(); ++e) {
-      const auto& nodes = m.elements[e].nodes;
+      const std::span<const int> nodes = m.elements[e].node_span();
       const bool has_a = std::find(nodes.begin(), nodes.end(), a) != nodes.end();
       const bool has_b = std::find(nodes.begin(), nodes.end(), b) != nodes.end();
       if (has_a && has_b) edges.push_back({static_cast<int>(e), a, b});

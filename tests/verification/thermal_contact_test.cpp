@@ -38,7 +38,7 @@ std::vector<ThermalEdge> column(const Model& m, const testing::Grid& g, int i) {
   std::vector<ThermalEdge> edges;
   for (const auto& [a, b] : testing::column_edges(g, i)) {
     for (std::size_t e = 0; e < m.elements.size(); ++e) {
-      const auto& nodes = m.elements[e].nodes;
+      const std::span<const int> nodes = m.elements[e].node_span();
       if (std::find(nodes.begin(), nodes.end(), a) != nodes.end() &&
           std::find(nodes.begin(), nodes.end(), b) != nodes.end()) {
         edges.push_back({static_cast<int>(e), a, b});

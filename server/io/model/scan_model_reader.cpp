@@ -32,7 +32,7 @@ bool element_item(JsonScan& scan, ElementValues& v) {
     if (k == 3) return scan.number(v.angle.emplace());
     v.node_count = 0;
     return scan_items(scan, [&] {
-             return v.node_count < 4 && scan.number(v.nodes[static_cast<std::size_t>(v.node_count++)]);
+             return v.node_count < max_element_nodes && scan.number(v.nodes[static_cast<std::size_t>(v.node_count++)]);
            }) &&
            v.node_count >= 3;
   });

@@ -74,7 +74,7 @@ bool element_values(dom::element item, ElementValues& v) {
     if (value.get(ids) != simdjson::SUCCESS) return false;
     v.node_count = 0;
     for (const dom::element id : ids) {
-      if (v.node_count == 4 || !number_of(id, v.nodes[static_cast<std::size_t>(v.node_count)])) return false;
+      if (v.node_count == max_element_nodes || !number_of(id, v.nodes[static_cast<std::size_t>(v.node_count)])) return false;
       ++v.node_count;
     }
     return v.node_count >= 3;

@@ -10,7 +10,8 @@ namespace saasgaps::io {
 namespace {
 
 /// User ids of an element's corner nodes.
-void write_node_ids(JsonWriter& out, const Model& model, const std::array<int, 4>& nodes, int count) {
+template <std::size_t N>
+void write_node_ids(JsonWriter& out, const Model& model, const std::array<int, N>& nodes, int count) {
   out.begin_array();
   for (int a = 0; a < count; ++a) out.value(model.nodes[nodes[a]].id);
   out.end_array();

@@ -4,7 +4,7 @@
 // the item back (false) before anything changes, so read_item judges it and words the issue.
 
 #include "io/sections/section_reader.hpp"
-#include "solver/fe/element_kernel.hpp"
+#include "solver/fe/element_shape.hpp"
 
 namespace saasgaps::io {
 
@@ -21,7 +21,8 @@ bool SectionReader::read_node_values(const NodeValues& item, std::size_t index) 
 
 bool SectionReader::read_element_values(const ElementValues& item, std::size_t index) {
   const auto id = item.id.id();
-  if (!id || elements_.contains(*id) || item.node_count < 3 || item.node_count > 4) return false;
+  const auto type = default_element_type(item.node_count);
+  if (!id || elements_.contains(*id) || !type) return false;
   NodeList corners;
   corners.count = item.node_count;
   const auto n = static_cast<std::size_t>(item.node_count);
@@ -36,19 +37,20 @@ bool SectionReader::read_element_values(const ElementValues& item, std::size_t i
     corners.nodes[k] = node;
     placed = placed && node_placed_[static_cast<std::size_t>(node)];
   }
-  if (placed) {  // read_corners judges the shape only when every corner has valid coordinates
-    std::array<Vec2, 4> x;
+  if (placed) {  // read_element judges the shape only when every node has valid coordinates
+    std::array<Vec2, max_element_nodes> x;
     x.fill(Vec2::Zero());
     for (std::size_t k = 0; k < n; ++k) {
       const Node& node = model_.nodes[static_cast<std::size_t>(corners.nodes[k])];
       x[k] = Vec2(node.r, node.z);
     }
-    if (!(min_twice_area(corners.count, x) > 0.0)) return false;
+    if (element_shape_problem(*type, Integration::full, x)) return false;
   }
   Element e;
   e.id = *id;
   e.nodes = corners.nodes;
   e.node_count = corners.count;
+  e.type = *type;
   const auto material_id = item.material.id();
   const Entry* material = material_id ? materials_.find(*material_id) : nullptr;
   if (material == nullptr) return false;

@@ -283,13 +283,15 @@ void SectionReader::read_materials(const Obj& root) {
   }
 }
 
-/// One of a non-empty array of {id, nodes, material, angle?}; ids unique among all elements.
+/// One of a non-empty array of {id, nodes, material, angle?, type?, integration?}; ids unique among
+/// all elements; the family's node count and shape (element_families.cpp).
 void SectionReader::read_element(const json& item, const std::string& pointer) {
-  if (!object(item, pointer, {"id", "nodes", "material"}, {"angle"})) return;
+  if (!object(item, pointer, {"id", "nodes", "material"}, {"angle", "type", "integration"})) return;
   const Obj o{&item, pointer};
   Element e;
   const auto id = new_element_id(o);
-  const auto corners = read_corners(o);
+  const auto corners = read_element_nodes(o);
+  if (corners && !read_element_family(o, corners->count, e)) return;
   const json* material = o.find("material");
   const Entry* m = material == nullptr ? nullptr
                                        : resolve(materials_, materials_complete_, *material, Where(o.pointer, "material"),
@@ -300,6 +302,10 @@ void SectionReader::read_element(const json& item, const std::string& pointer) {
   if (corners) {
     e.nodes = corners->nodes;
     e.node_count = corners->count;
+    const bool placed = corners->complete() &&
+                        std::all_of(corners->nodes.begin(), corners->nodes.begin() + corners->count,
+                                    [&](int n) { return node_placed_[static_cast<std::size_t>(n)]; });
+    if (placed) check_element_shape(e, *o.find("nodes"), Where(o.pointer, "nodes"));
   }
   if (m != nullptr) e.material = m->index;
   elements_.emplace(*id, Entry{as_index(model_.elements.size()), false, as_index(item_)});
@@ -354,7 +360,7 @@ void SectionReader::read_gaps(const Obj& root) {
     if (!id) continue;
     e.id = *id;
     if (corners) {
-      e.nodes = corners->nodes;
+      std::copy_n(corners->nodes.begin(), e.nodes.size(), e.nodes.begin());
       e.node_count = corners->count;
     }
     if (angle && corners && gap_axis_judgeable(*corners)) {

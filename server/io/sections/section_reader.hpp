@@ -135,7 +135,7 @@ class Registry {
 /// Up to four node indices of an element, a gap element or a pressure edge; -1 where an id did not
 /// resolve (the rest still serve, e.g. as edges that a pressure may name).
 struct NodeList {
-  std::array<int, 4> nodes{-1, -1, -1, -1};
+  std::array<int, max_element_nodes> nodes{-1, -1, -1, -1, -1, -1, -1, -1, -1};
   int count = 0;
   [[nodiscard]] bool complete() const {
     return std::none_of(nodes.begin(), nodes.begin() + count, [](int n) { return n < 0; });
@@ -197,7 +197,7 @@ struct NodeValues {
 };
 struct ElementValues {
   Number id;
-  std::array<Number, 4> nodes;
+  std::array<Number, max_element_nodes> nodes;
   int node_count = 0;
   Number material;
   std::optional<Number> angle;
@@ -314,6 +314,12 @@ class SectionReader {
                                          std::string_view expectation);
   /// An element's 3 or 4 corners, with their shape checked when all are placed.
   std::optional<NodeList> read_corners(const Obj& o);
+  /// A solid element's 3, 4, 6, 8 or 9 nodes (a gap element's: 3 or 4).
+  std::optional<NodeList> read_element_nodes(const Obj& o);
+  /// elements[].type and .integration, checked against the node count; nullopt when they do not fit.
+  bool read_element_family(const Obj& o, int node_count, Element& e);
+  /// The family's shape rules (fe/element_shape.hpp) on an element whose nodes are all placed.
+  void check_element_shape(const Element& e, const json& ids, const Where& pointer);
   /// Counter-clockwise with positive area; for a quadrilateral, each triangle around the centre.
   void check_shape(const NodeList& corners, const json& ids, const Where& pointer);
   /// A gap element's M axis can be judged: its corners are placed and its shape is valid.

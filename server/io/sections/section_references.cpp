@@ -2,6 +2,7 @@
 
 #include "io/json/value_quote.hpp"
 #include "solver/assembly/element_data.hpp"
+#include "solver/fe/element_geometry.hpp"
 #include "solver/fe/element_kernel.hpp"
 #include "solver/gaps/gap_faces.hpp"
 
@@ -70,7 +71,7 @@ std::optional<NodeList> SectionReader::read_node_list(const Obj& o, std::size_t 
 }
 
 std::optional<NodeList> SectionReader::read_corners(const Obj& o) {
-  auto corners = read_node_list(o, 3, 4, "an element has 3 (triangle) or 4 (quadrilateral) nodes");
+  auto corners = read_node_list(o, 3, 4, "a gap element has 3 (triangle) or 4 (quadrilateral) nodes");
   if (!corners || !corners->complete()) return corners;
   const bool placed = std::all_of(corners->nodes.begin(), corners->nodes.begin() + corners->count,
                                   [&](int n) { return node_placed_[static_cast<std::size_t>(n)]; });
@@ -134,10 +135,10 @@ SectionReader::EdgeOwners SectionReader::solid_edge_owners() const {
   EdgeOwners owners;
   for (std::size_t e = 0; e < model_.elements.size(); ++e) {
     const Element& element = model_.elements[e];
-    const auto corners = static_cast<std::size_t>(element.node_count);
-    for (std::size_t k = 0; k < corners; ++k) {
-      const int a = element.nodes[k];
-      const int b = element.nodes[(k + 1) % corners];
+    // An edge is named by its end corners; a quadratic edge's mid-side node goes with it.
+    for (const EdgeNodes& edge : family(element.type).edges) {
+      const int a = element.nodes[static_cast<std::size_t>(edge.first())];
+      const int b = element.nodes[static_cast<std::size_t>(edge.last())];
       if (a >= 0 && b >= 0) owners[std::minmax(a, b)].push_back(as_index(e));
     }
   }

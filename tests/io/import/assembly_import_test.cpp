@@ -89,9 +89,9 @@ InputIssue single_issue(const json& assembly, const fs::path& dir) {
 
 // ---- the same model, imported and hand-written
 
-std::vector<int> node_ids(const Model& m, const std::array<int, 4>& nodes, int count) {
+std::vector<int> node_ids(const Model& m, std::span<const int> nodes) {
   std::vector<int> ids;
-  for (int k = 0; k < count; ++k) ids.push_back(m.nodes[static_cast<std::size_t>(nodes[static_cast<std::size_t>(k)])].id);
+  for (int n : nodes) ids.push_back(m.nodes[static_cast<std::size_t>(n)].id);
   return ids;
 }
 
@@ -111,7 +111,7 @@ TEST(AssemblyImport, ImportedMshEqualsTheHandWrittenModel) {
     const Element& a = imported.elements[e];
     const Element& b = hand.elements[e];
     EXPECT_EQ(a.id, b.id);
-    EXPECT_EQ(node_ids(imported, a.nodes, a.node_count), node_ids(hand, b.nodes, b.node_count)) << "element " << b.id;
+    EXPECT_EQ(node_ids(imported, a.node_span()), node_ids(hand, b.node_span())) << "element " << b.id;
     EXPECT_EQ(a.material, b.material);
     EXPECT_EQ(a.angle_deg, b.angle_deg);
   }
@@ -121,7 +121,7 @@ TEST(AssemblyImport, ImportedMshEqualsTheHandWrittenModel) {
     const GapElement& a = imported.gaps->elements[g];
     const GapElement& b = hand.gaps->elements[g];
     EXPECT_EQ(a.id, b.id);
-    EXPECT_EQ(node_ids(imported, a.nodes, a.node_count), node_ids(hand, b.nodes, b.node_count)) << "gap " << b.id;
+    EXPECT_EQ(node_ids(imported, a.node_span()), node_ids(hand, b.node_span())) << "gap " << b.id;
     EXPECT_NEAR(a.angle_deg, b.angle_deg, 1e-12);
   }
   EXPECT_EQ(imported.gaps->tensile_schedule, hand.gaps->tensile_schedule);
@@ -177,22 +177,22 @@ TEST(AssemblyImport, RingFromGeoEqualsTheHandMadeRing) {
     std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
     return c;
   };
-  const auto mapped = [&](const std::array<int, 4>& nodes, int count) {
+  const auto mapped = [&](std::span<const int> nodes) {
     std::vector<int> c;
-    for (int k = 0; k < count; ++k) c.push_back(to_hand[static_cast<std::size_t>(nodes[static_cast<std::size_t>(k)])]);
+    for (int n : nodes) c.push_back(to_hand[static_cast<std::size_t>(n)]);
     return cycle(c);
   };
-  const auto own = [&](const std::array<int, 4>& nodes, int count) {
-    return cycle(std::vector<int>(nodes.begin(), nodes.begin() + count));
+  const auto own = [&](std::span<const int> nodes) {
+    return cycle(std::vector<int>(nodes.begin(), nodes.end()));
   };
   std::set<std::vector<int>> hand_elements, imported_elements;
-  for (const Element& e : hand.elements) hand_elements.insert(own(e.nodes, e.node_count));
-  for (const Element& e : imported.elements) imported_elements.insert(mapped(e.nodes, e.node_count));
+  for (const Element& e : hand.elements) hand_elements.insert(own(e.node_span()));
+  for (const Element& e : imported.elements) imported_elements.insert(mapped(e.node_span()));
   EXPECT_EQ(imported_elements, hand_elements);
 
   std::map<std::vector<int>, double> hand_gaps, imported_gaps;
-  for (const GapElement& g : hand.gaps->elements) hand_gaps[own(g.nodes, g.node_count)] = g.angle_deg;
-  for (const GapElement& g : imported.gaps->elements) imported_gaps[mapped(g.nodes, g.node_count)] = g.angle_deg;
+  for (const GapElement& g : hand.gaps->elements) hand_gaps[own(g.node_span())] = g.angle_deg;
+  for (const GapElement& g : imported.gaps->elements) imported_gaps[mapped(g.node_span())] = g.angle_deg;
   ASSERT_EQ(imported_gaps.size(), hand_gaps.size());
   for (const auto& [corners, angle] : hand_gaps) {
     const auto found = imported_gaps.find(corners);

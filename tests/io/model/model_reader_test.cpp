@@ -224,13 +224,13 @@ TEST(ModelReader, ValidModelIsReadWithIdsResolvedToIndices) {
   ASSERT_EQ(m.elements.size(), 3U);
   EXPECT_EQ(m.elements[0].id, 1);
   EXPECT_EQ(m.elements[0].node_count, 4);
-  EXPECT_EQ(m.elements[0].nodes, (std::array<int, 4>{0, 1, 4, 3}));
+  EXPECT_EQ(m.elements[0].nodes, (std::array<int, 9>{0, 1, 4, 3, -1, -1, -1, -1, -1}));
   EXPECT_EQ(m.elements[0].material, 0);
   EXPECT_DOUBLE_EQ(m.elements[0].angle_deg, 0.0);
   EXPECT_EQ(m.elements[1].material, 1);
   EXPECT_DOUBLE_EQ(m.elements[1].angle_deg, 30.0);
   EXPECT_EQ(m.elements[2].node_count, 3);
-  EXPECT_EQ(m.elements[2].nodes, (std::array<int, 4>{2, 9, 5, -1}));
+  EXPECT_EQ(m.elements[2].nodes, (std::array<int, 9>{2, 9, 5, -1, -1, -1, -1, -1, -1}));
 
   ASSERT_TRUE(m.gaps.has_value());
   const GapSettings& g = *m.gaps;
@@ -532,9 +532,9 @@ TEST(ModelReaderRules, WatchListsDoNotRepeatAnId) {
 // ------------------------------------------------------------------------------------------------
 // elements and gap elements
 
-TEST(ModelReaderRules, ElementsHave3Or4Nodes) {
+TEST(ModelReaderRules, ElementsHaveTheNodeCountOfAFamily) {
   EXPECT_TRUE(rejects(with(valid_model(), "/elements/0/nodes", json::array({1, 2})), "/elements/0/nodes",
-                      {"[1, 2]", "3 (triangle) or 4"}));
+                      {"[1, 2]", "3, 4, 6, 8 or 9 nodes"}));
   EXPECT_TRUE(rejects(with(valid_model(), "/elements/0/nodes", json::array({1, 2, 5, 4, 3})), "/elements/0/nodes",
                       {"[1, 2, 5, 4, 3]"}));
   EXPECT_TRUE(rejects(with(valid_model(), "/gaps/elements/0/nodes", json::array({7, 8})), "/gaps/elements/0/nodes",

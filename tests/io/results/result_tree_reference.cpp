@@ -19,17 +19,17 @@ const char* analysis_name(AnalysisType type) {
 }
 
 /// User ids of an element's corner nodes.
-json node_ids(const Model& model, const std::array<int, 4>& nodes, int count) {
+json node_ids(const Model& model, std::span<const int> nodes) {
   json ids = json::array();
-  for (int a = 0; a < count; ++a) ids.push_back(model.nodes[nodes[a]].id);
+  for (int n : nodes) ids.push_back(model.nodes[n].id);
   return ids;
 }
 
 json element_json(const Model& model, const Element& el, const ElementResult& e) {
   return {{"id", e.id},
-          {"nodes", node_ids(model, el.nodes, el.node_count)},
+          {"nodes", node_ids(model, el.node_span())},
           {"material", model.materials[el.material].id},
-          {"temperature", element_temperature(model, el.nodes, el.node_count)},
+          {"temperature", element_temperature(model, el.node_span())},
           {"sigma_r", e.stress[rr]},
           {"sigma_z", e.stress[zz]},
           {"tau_rz", e.stress[rz]},
@@ -48,7 +48,7 @@ json element_json(const Model& model, const Element& el, const ElementResult& e)
 
 json gap_json(const Model& model, const GapElement& gap, const GapResult& g) {
   json j = {{"id", g.id},
-            {"nodes", node_ids(model, gap.nodes, gap.node_count)},
+            {"nodes", node_ids(model, gap.node_span())},
             {"angle", gap.angle_deg},
             {"eps_m", g.eps_m},
             {"closure", g.closure},

@@ -59,9 +59,10 @@ void dense_assembly(const Model& m, const DofMap& dofs, const LawOf& solid, cons
                     Eigen::VectorXd& f) {
   K = Eigen::MatrixXd::Zero(dofs.size(), dofs.size());
   f = Eigen::VectorXd::Zero(dofs.size());
-  const auto add = [&](const std::array<int, 4>& nodes, int count, const ElementMatrices& em) {
-    std::array<Index, 8> eq{};
-    dofs.equations(std::span(nodes.data(), static_cast<std::size_t>(count)), eq);
+  const auto add = [&](std::span<const int> nodes, const ElementMatrices& em) {
+    const int count = static_cast<int>(nodes.size());
+    std::array<Index, max_element_dofs> eq{};
+    dofs.equations(nodes, eq);
     for (int a = 0; a < 2 * count; ++a) {
       if (eq[a] < 0) continue;
       f[eq[a]] += em.f[a];
@@ -72,10 +73,10 @@ void dense_assembly(const Model& m, const DofMap& dofs, const LawOf& solid, cons
     }
   };
   for (std::size_t e = 0; e < m.elements.size(); ++e) {
-    add(m.elements[e].nodes, 4, element_matrices(solid_element_data(m, e, solid(e))));
+    add(m.elements[e].node_span(), element_matrices(solid_element_data(m, e, solid(e))));
   }
   for (std::size_t g = 0; g < m.gap_count(); ++g) {
-    add(m.gaps->elements[g].nodes, 4, element_matrices(gap_element_data(m, g, gap(g))));
+    add(m.gaps->elements[g].node_span(), element_matrices(gap_element_data(m, g, gap(g))));
   }
   for (const NodalForce& nf : m.loads.nodal_forces) {
     if (dofs.equation(nf.node, 0) >= 0) f[dofs.equation(nf.node, 0)] += nf.f_r;

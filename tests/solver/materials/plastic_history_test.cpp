@@ -48,13 +48,13 @@ TEST_P(PeakContinuity, ElasticBranchWithThePlasticStrainGivesTheSecantStateAtThe
   const ElasticConstants loaded = secant(elastic, ratio);
   const ElementData on_curve = quad(analysis, constitutive(loaded, analysis, angle));
   const Vec8 u = uniform_strain(on_curve, 0.004, -0.003, g);
-  const ElementState peak = element_state(on_curve, u);
+  const ElementState peak = element_state(on_curve, std::span<const double>(u.data(), 8));
 
   Constitutive unloading = constitutive(elastic, analysis, angle);
   unloading.initial_strain = plastic_strain(elastic, loaded, angle, peak.stress);
   ASSERT_TRUE(unloading.has_initial_strain());
   const ElementData off_curve = quad(analysis, unloading);
-  const ElementState back = element_state(off_curve, u);
+  const ElementState back = element_state(off_curve, std::span<const double>(u.data(), 8));
   const double scale = peak.stress.cwiseAbs().maxCoeff();
   for (int i = 0; i < 4; ++i) {
     EXPECT_NEAR(back.stress[i], peak.stress[i], 1e-10 * scale) << "stress component " << i;

@@ -1,0 +1,61 @@
+#pragma once
+/// The isoparametric solid kernel of tri6, quad8 and quad9 (and the bilinear part of quad4i): at each
+/// point of the family's rule (element_family.hpp)
+///   J = sum_a x_a (dN_a/dxi, dN_a/deta)^T,  (dN/dr, dN/dz) = J^-T (dN/dxi, dN/deta),  r = sum_a N_a r_a,
+///   B rows (rr, zz, rz, th): dN_a/dr on u_r; dN_a/dz on u_z; dN_a/dz on u_r + dN_a/dr on u_z;
+///                            N_a / r on u_r (axisymmetric; 0 in plane analyses),
+///   dV = w det J t (plane) or w det J 2 pi r (axisymmetric, the full ring),
+///   K = sum B^T D B dV,  f = sum B^T (beta dT + D eps0) dV + sum N_a (b + spin r e_r) dV,
+/// with dT = sum_a N_a dT_a the temperature rise interpolated by the element's own shape functions and
+/// D, beta, eps0 the law of that point. Stresses: sigma = D (B u - eps0) - beta dT at each point;
+/// plane stress reports eps_th = out_of_plane . sigma + alpha3 dT (+ eps0_th). The centre state is the
+/// polynomial through the points' states evaluated at the centre (element_family.hpp).
+
+#include <span>
+
+#include "solver/fe/element_kernel.hpp"
+
+namespace saasgaps {
+
+/// The geometry of one point of an element: shape functions, their (r, z) derivatives, r, det J.
+struct PointGeometry {
+  ShapeValues shape;
+  std::array<double, max_element_nodes> dN_dr{};
+  std::array<double, max_element_nodes> dN_dz{};
+  double r = 0.0;
+  double z = 0.0;
+  /// J = [dr/dxi dr/deta; dz/dxi dz/deta] and its determinant.
+  double j11 = 0.0, j12 = 0.0, j21 = 0.0, j22 = 0.0;
+  double det_J = 0.0;
+
+  /// (d/dr, d/dz) of a function whose reference derivatives are (d/dxi, d/deta): J^-T times them.
+  [[nodiscard]] Vec2 gradient(double d_dxi, double d_deta) const {
+    return Vec2(j22 * d_dxi - j21 * d_deta, -j12 * d_dxi + j11 * d_deta) / det_J;
+  }
+};
+
+/// Geometry at reference point (xi, eta) of element e's family and nodes.
+PointGeometry point_geometry(const ElementData& e, double xi, double eta);
+
+/// The volume weight of a rule point: weight det J t, or weight det J 2 pi r.
+double volume_weight(const ElementData& e, const PointGeometry& g, double weight);
+
+/// Strain of one point from the element's displacements (B u, rows rr, zz, rz, th).
+Vec4 point_strain(const ElementData& e, const PointGeometry& g, std::span<const double> u);
+
+/// The state at a point from its total strain B u: stress and (plane stress) eps_th.
+ElementState point_state(const ElementData& e, const Constitutive& law, const Vec4& strain, double dT);
+
+/// Temperature rise at a point: sum_a N_a dT_a.
+double point_temperature_rise(const ElementData& e, const PointGeometry& g);
+
+/// The centre state from the points' states (centre_weights of the family and rule).
+ElementState centre_of(const ElementData& e, const ElementStates& s);
+
+/// K and f of an isoparametric element.
+ElementMatrices isoparametric_matrices(const ElementData& e);
+
+/// Its states at the rule's points and at the centre.
+ElementStates isoparametric_states(const ElementData& e, std::span<const double> u);
+
+}  // namespace saasgaps
