@@ -2,6 +2,7 @@
 
 #include "io/json/value_quote.hpp"
 #include "io/sections/contact_check.hpp"
+#include "io/sections/family_limits.hpp"
 #include "io/sections/run_limits.hpp"
 
 namespace saasgaps::io {
@@ -170,6 +171,10 @@ void SectionReader::end_items(Section s, std::size_t count) {
 
 Model SectionReader::finish() {
   if (issues_.empty()) {
+    // What the quadratic families do not carry yet (gap elements, contact surfaces, conduction).
+    if (std::vector<InputIssue> limits = element_family_input_issues(model_); !limits.empty()) {
+      throw ModelError(std::move(limits));
+    }
     // Exact contact mode: the gap elements must give node pairs (checked on a model otherwise valid).
     if (std::vector<InputIssue> pairing = contact_pairing_input_issues(model_); !pairing.empty()) {
       throw ModelError(std::move(pairing));
