@@ -1,8 +1,11 @@
 #include "io/results/vtu_writer.hpp"
 
+#include "solver/fe/element_family.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 #include <unordered_map>
@@ -37,8 +40,6 @@ const ResultSelection& vtu_result_selection() {
 
 namespace {
 
-constexpr std::uint8_t vtk_triangle = 5;
-constexpr std::uint8_t vtk_quad = 9;
 
 /// The mesh of a result: the solids (typed), the gaps (from the tree), the piece's geometry arrays.
 struct Mesh {
@@ -80,8 +81,11 @@ Mesh read_mesh(const ResultArrays& result) {
   std::vector<std::int64_t> connectivity, offsets;
   std::vector<std::uint8_t> types;
   const auto cell = [&](const std::string& id, const auto& node_ids) {
-    if (node_ids.size() != 3 && node_ids.size() != 4) {
-      throw std::invalid_argument("element " + id + " has " + std::to_string(node_ids.size()) + " nodes; 3 or 4 expected");
+    // The node count names the VTK cell: the families that share one (saas and quad4i) share the cell.
+    const std::optional<ElementType> type = default_element_type(static_cast<int>(node_ids.size()));
+    if (!type) {
+      throw std::invalid_argument("element " + id + " has " + std::to_string(node_ids.size()) +
+                                  " nodes; 3, 4, 6, 8 or 9 expected");
     }
     for (const auto& node : node_ids) {
       const int node_id = static_cast<int>(node);
@@ -93,7 +97,7 @@ Mesh read_mesh(const ResultArrays& result) {
       connectivity.push_back(found->second);
     }
     offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-    types.push_back(node_ids.size() == 4 ? vtk_quad : vtk_triangle);
+    types.push_back(static_cast<std::uint8_t>(family(*type).vtk_type));
   };
   const ResultElements& solids = *m.solids;
   for (std::size_t e = 0; e < solids.size(); ++e) {

@@ -4,8 +4,9 @@
 /// document alone (the result document of docs/results.md), so any stored result can be exported.
 ///
 /// Points: every node at (r, z, 0) (in plane analyses (r, z) = (x, y)).
-/// Cells: the solid elements, then the gap elements, in document order; 4 nodes VTK_QUAD (9),
-/// 3 nodes VTK_TRIANGLE (5).
+/// Cells: the solid elements, then the gap elements, in document order, each as its family's VTK
+/// cell (element_family.hpp): 3 nodes VTK_TRIANGLE (5), 4 VTK_QUAD (9), 6 VTK_QUADRATIC_TRIANGLE
+/// (22), 8 VTK_QUADRATIC_QUAD (23), 9 VTK_BIQUADRATIC_QUAD (28); the node order of the model is VTK's.
 /// Point data:
 ///   displacement  (u_r, u_z, 0), the active vector: Warp By Vector shows the deformed shape
 ///   temperature   T

@@ -54,6 +54,19 @@ ClippedTriangle clip_at_least(const ValueTriangle& triangle, double level) {
 }
 
 void triangulate(std::span<const ValuePoint> c, std::vector<ValueTriangle>& out) {
+  if (c.size() == 6 || c.size() == 8) {
+    // A quadratic element's outline (corner, mid-side, corner, ...): a triangle at each corner
+    // between its two mid-side nodes, then the polygon of the mid-side nodes, so that values are
+    // interpolated through the mid-side nodes as the element does along its edges.
+    const std::size_t n = c.size();
+    std::array<ValuePoint, 4> middle{};
+    for (std::size_t k = 0; k < n; k += 2) {
+      out.push_back({c[(k + n - 1) % n], c[k], c[k + 1]});
+      middle[k / 2] = c[k + 1];
+    }
+    triangulate(std::span<const ValuePoint>(middle.data(), n / 2), out);
+    return;
+  }
   if (c.size() == 3) {
     out.push_back({c[0], c[1], c[2]});
     return;

@@ -32,7 +32,9 @@ ValuePolygon clip_at_most(const ValuePolygon& polygon, double level);
 ValuePolygon band(const ValuePolygon& polygon, double lo, double hi);
 
 /// The triangles of a 3- or 4-node element (corners in counter-clockwise order): the quad a b c d
-/// splits along its shorter diagonal, so that a distorted quad does not get a sliver triangle.
+/// splits along its shorter diagonal, so that a distorted quad does not get a sliver triangle. A
+/// quadratic element's outline of 6 or 8 points (corner, mid-side, ...) gives a triangle at each
+/// corner and the triangles of its mid-side nodes' polygon (4 for a tri6, 6 for a quad8 or quad9).
 std::vector<ValuePolygon> triangulate(std::span<const ValuePoint> corners);
 
 /// For meshes of 10^6 elements: a triangle held by value (no heap per triangle), the same

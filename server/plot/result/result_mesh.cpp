@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <optional>
 #include <unordered_map>
+
+#include "solver/fe/element_family.hpp"
 
 namespace saasgaps::plot {
 
@@ -21,7 +24,8 @@ int node_id(int n) { return n; }
 
 /// Node ids (a JSON array of them, or ints) as indices into the result's nodes.
 template <class Ids>
-std::vector<int> node_indices(const Ids& ids, const std::unordered_map<int, int>& index, const char* what, int id) {
+std::vector<int> node_indices(const Ids& ids, const std::unordered_map<int, int>& index, const char* what, int id,
+                              std::size_t outline = 0) {
   std::vector<int> nodes;
   for (const auto& n : ids) {
     const int node = node_id(n);
@@ -32,11 +36,30 @@ std::vector<int> node_indices(const Ids& ids, const std::unordered_map<int, int>
     }
     nodes.push_back(found->second);
   }
-  if (nodes.size() != 3 && nodes.size() != 4) {
+  if (nodes.size() != outline && nodes.size() != 3 && nodes.size() != 4) {
     throw std::invalid_argument(std::string(what) + " " + std::to_string(id) + " has " +
                                 std::to_string(nodes.size()) + " nodes; 3 or 4 expected");
   }
   return nodes;
+}
+
+/// A solid element's node indices as its outline: counter-clockwise around the boundary, each
+/// edge's mid-side node between its corners (a curved edge drawn as two segments); a quad9's
+/// centre node is not on the outline.
+template <class Ids>
+std::vector<int> outline_indices(const Ids& ids, const std::unordered_map<int, int>& index, int id) {
+  std::vector<int> nodes;
+  for (const auto& n : ids) nodes.push_back(node_id(n));
+  const std::optional<ElementType> type = default_element_type(static_cast<int>(nodes.size()));
+  if (!type) {
+    throw std::invalid_argument("element " + std::to_string(id) + " has " + std::to_string(nodes.size()) +
+                                " nodes; 3, 4, 6, 8 or 9 expected");
+  }
+  std::vector<int> outline;
+  for (const EdgeNodes& edge : family(*type).edges) {
+    for (int k = 0; k + 1 < edge.count; ++k) outline.push_back(nodes[static_cast<std::size_t>(edge.node[static_cast<std::size_t>(k)])]);
+  }
+  return node_indices(outline, index, "element", id, outline.size());
 }
 
 }  // namespace
@@ -99,7 +122,7 @@ ResultMesh ResultMesh::from_result(const json& result) {
     }
     for (const json& e : result.at("elements")) {
       const int id = e.at("id").get<int>();
-      mesh.solids.push_back({id, e.value("material", 0), node_indices(e.at("nodes"), index, "element", id)});
+      mesh.solids.push_back({id, e.value("material", 0), outline_indices(e.at("nodes"), index, id)});
     }
     read_gaps(result, index, mesh);
     return mesh;
@@ -131,7 +154,7 @@ ResultMesh ResultMesh::from_arrays(const io::ResultArrays& result) {
       const auto first = elements.node_ids.begin() + static_cast<std::ptrdiff_t>(elements.first_node[e]);
       const auto last = elements.node_ids.begin() + static_cast<std::ptrdiff_t>(elements.first_node[e + 1]);
       mesh.solids.push_back({elements.id[e], elements.material[e],
-                             node_indices(std::vector<int>(first, last), index, "element", elements.id[e])});
+                             outline_indices(std::vector<int>(first, last), index, elements.id[e])});
     }
     read_gaps(result.document, index, mesh);
     return mesh;

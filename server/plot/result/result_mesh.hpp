@@ -25,7 +25,9 @@ struct MeshNode {
 struct SolidElement {
   int id = 0;
   int material = 0;
-  std::vector<int> nodes;  ///< 3 or 4 node indices, counter-clockwise
+  /// Node indices of the outline, counter-clockwise: the corners of a linear element; for a
+  /// quadratic one corner, mid-side, corner, ... (6 or 8; a quad9's centre node is left out).
+  std::vector<int> nodes;
 };
 
 enum class GapState { open, partial, closed, overclosed };
@@ -40,7 +42,9 @@ inline std::string_view to_string(GapState state) { return gap_state_names.name(
 
 struct GapElement {
   int id = 0;
-  std::vector<int> nodes;  ///< 3 or 4 node indices, counter-clockwise
+  /// Node indices of the outline, counter-clockwise: the corners of a linear element; for a
+  /// quadratic one corner, mid-side, corner, ... (6 or 8; a quad9's centre node is left out).
+  std::vector<int> nodes;
   double angle_deg = 0.0;  ///< direction M across the gap, from +r
   double closure = 0.0;    ///< percent; 100 = faces touching
   double sigma_m = 0.0;    ///< normal stress across the gap, negative in compression
