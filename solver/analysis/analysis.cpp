@@ -183,6 +183,7 @@ class GapContactAnalysis {
     if (schedule_.stepped()) s.position = schedule_.first();
     s.node_count = model_.nodes.size();
     s.element_count = model_.elements.size();
+    s.material_point_count = MaterialPoints(model_).size();
     s.gap_count = model_.gap_count();
     return s;
   }
@@ -200,10 +201,11 @@ class GapContactAnalysis {
         (saved.position && !schedule_.holds(*saved.position, model_.nodes.size()))) {
       throw SolverError("the restart state does not belong to this model (its load steps differ)");
     }
+    const std::size_t points = MaterialPoints(model_).size();
     if (saved.node_count != model_.nodes.size() || saved.element_count != model_.elements.size() ||
-        saved.gap_count != model_.gap_count() || saved.displacement.size() != 2 * model_.nodes.size() ||
-        saved.materials.secant_ratio.size() != model_.elements.size() ||
-        saved.materials.compression.size() != model_.elements.size() ||
+        saved.material_point_count != points || saved.gap_count != model_.gap_count() ||
+        saved.displacement.size() != 2 * model_.nodes.size() || saved.materials.secant_ratio.size() != points ||
+        saved.materials.compression.size() != points ||
         saved.gaps.strain.size() != model_.gap_count() || saved.gaps.used.normal.size() != model_.gap_count()) {
       throw SolverError("the restart state does not belong to this model (its dimensions differ)");
     }

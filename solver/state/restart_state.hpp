@@ -41,6 +41,9 @@ struct RestartState {
   /// Model dimensions the state belongs to, checked on resume.
   std::size_t node_count = 0;
   std::size_t element_count = 0;
+  /// Material points of the solid elements (fe/material_points.hpp), the length of the material
+  /// state's vectors: element_count when every element is one of the report's (one point each).
+  std::size_t material_point_count = 0;
   std::size_t gap_count = 0;
 };
 

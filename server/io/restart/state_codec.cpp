@@ -53,6 +53,15 @@ json plastic_branches(const MaterialState& m) {
   return {{"peaks", peaks}, {"unloading", unloading}};
 }
 
+/// The model's dimensions; "material_points" only when they are not one per element (an element
+/// family with several), so that the states of the report's elements keep their bytes and a state
+/// without the member reads as one point per element.
+json dimensions_json(const RestartState& s) {
+  json d = {{"nodes", s.node_count}, {"elements", s.element_count}, {"gaps", s.gap_count}};
+  if (s.material_point_count != s.element_count) d["material_points"] = s.material_point_count;
+  return d;
+}
+
 /// The inverse of plastic_branches for `elements` solid elements (empty vectors when none is listed).
 void read_plastic_branches(const json& j, std::size_t elements, MaterialState& m) {
   const auto index = [elements](const json& value) {
@@ -109,7 +118,7 @@ json state_to_json(const RestartState& s, const std::string& digest) {
           {"model_digest", digest},
           {"iteration", s.iteration},
           {"attempt", s.attempt},
-          {"dimensions", {{"nodes", s.node_count}, {"elements", s.element_count}, {"gaps", s.gap_count}}},
+          {"dimensions", dimensions_json(s)},
           {"materials",
            {{"secant_ratio", sparse(s.materials.secant_ratio, 1.0)},
             {"compression", sparse(s.materials.compression, all_tension)}}},
@@ -176,9 +185,10 @@ RestartState state_from_json(const json& j, const std::string& expected_digest) 
     s.node_count = dims.at("nodes").get<std::size_t>();
     s.element_count = dims.at("elements").get<std::size_t>();
     s.gap_count = dims.at("gaps").get<std::size_t>();
+    s.material_point_count = dims.value("material_points", s.element_count);
     const json& m = j.at("materials");
-    s.materials.secant_ratio = dense(m.at("secant_ratio"), s.element_count, 1.0);
-    s.materials.compression = dense<DirectionChoice>(m.at("compression"), s.element_count, all_tension);
+    s.materials.secant_ratio = dense(m.at("secant_ratio"), s.material_point_count, 1.0);
+    s.materials.compression = dense<DirectionChoice>(m.at("compression"), s.material_point_count, all_tension);
     const json& g = j.at("gaps");
     s.gaps.used.normal = g.at("normal").get<std::vector<double>>();
     s.gaps.used.tensile = g.at("tensile").get<double>();
@@ -199,7 +209,7 @@ RestartState state_from_json(const json& j, const std::string& expected_digest) 
     }
     if (const auto friction = j.find("friction"); friction != j.end()) read_friction(*friction, s.friction);
     if (s.version == RestartState::plastic_steps_version) {
-      read_plastic_branches(j.at("plastic"), s.element_count, s.materials);
+      read_plastic_branches(j.at("plastic"), s.material_point_count, s.materials);
     } else if (j.contains("plastic")) {
       throw SolverError("malformed restart state: version " + std::to_string(s.version) + " has no plastic peaks");
     }
