@@ -176,7 +176,7 @@ def schema_expressible_cases(base):
         ("no gap elements", edits(m, ("/gaps/elements", [])), "/gaps/elements"),
         ("no constraints", edits(m, ("/constraints", [])), "/constraints"),
         ("constraint of neither r nor z", edits(m, ("/constraints/3", {"node": 1})), "/constraints/3"),
-        ("pressure on 3 nodes", edits(m, ("/loads/pressures/0/nodes", [7, 8, 9])), "/loads/pressures/0/nodes"),
+        ("pressure on 4 nodes", edits(m, ("/loads/pressures/0/nodes", [7, 8, 9, 10])), "/loads/pressures/0/nodes"),
         ("pressure on one node twice", edits(m, ("/loads/pressures/0/nodes", [8, 8])), "/loads/pressures/0/nodes/1"),
         ("omega with plane strain", edits(m, ("/loads/body_force/omega", 10.0)), "/loads/body_force/omega"),
         ("nodal force as a string", edits(m, ("/loads/nodal_forces/0/fr", "10")), "/loads/nodal_forces/0/fr"),

@@ -3,11 +3,25 @@
 #include "io/json/value_quote.hpp"
 #include "io/sections/contact_check.hpp"
 #include "io/sections/family_limits.hpp"
+#include "solver/fe/element_family.hpp"
 #include "io/sections/run_limits.hpp"
 
 namespace saasgaps::io {
 
 namespace {
+
+/// The mid-side node of element el's edge between corners a and b (either order); none on a
+/// straight edge. The edge exists: the caller found el as its owner.
+std::optional<int> edge_middle(const Element& el, int a, int b) {
+  for (const EdgeNodes& edge : family(el.type).edges) {
+    const int first = el.nodes[static_cast<std::size_t>(edge.first())];
+    const int last = el.nodes[static_cast<std::size_t>(edge.last())];
+    if (std::minmax(first, last) != std::minmax(a, b)) continue;
+    if (edge.count == 3) return el.nodes[static_cast<std::size_t>(edge.node[1])];
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
 
 constexpr std::array<std::string_view, section_count> section_keys{
     "schema_version", "title", "description", "units", "analysis", "nodes", "materials",
@@ -462,14 +476,16 @@ void SectionReader::read_pressures(const Obj& loads, Loads& into) {
     EdgePressure p;
     p.normal = number_field(o, "normal").value_or(0.0);
     p.shear = number_field(o, "shear").value_or(0.0);
-    const auto edge = read_node_list(o, 2, 2, "a pressure edge has exactly 2 nodes");
+    const auto edge = read_node_list(o, 2, 3, "a pressure edge has 2 nodes, its corners [a, b] (or [a, m, b] with the mid-side node of a quadratic element's edge)");
     if (!edge || !edge->complete() || !solids_complete_) continue;
     const json& ids = *o.find("nodes");
-    const auto found = owners.find(std::minmax(edge->nodes[0], edge->nodes[1]));
+    const bool middle_named = edge->count == 3;
+    const int last = edge->nodes[middle_named ? 2 : 1];
+    const auto found = owners.find(std::minmax(edge->nodes[0], last));
     if (found == owners.end()) {
       report(o.at("nodes"), "no solid element has the edge " + quote(ids) +
-                                ": the two nodes must be consecutive corners of one solid element (gap elements "
-                                "carry no pressure)");
+                                (middle_named ? ": its end nodes" : ": the two nodes") +
+                                " must be consecutive corners of one solid element (gap elements carry no pressure)");
       continue;
     }
     if (found->second.size() > 1) {
@@ -482,8 +498,20 @@ void SectionReader::read_pressures(const Obj& loads, Loads& into) {
       continue;
     }
     p.element = found->second.front();
+    if (middle_named) {
+      const std::optional<int> middle = edge_middle(model_.elements[static_cast<std::size_t>(p.element)], edge->nodes[0], last);
+      if (middle != edge->nodes[1]) {
+        const Element& el = model_.elements[static_cast<std::size_t>(p.element)];
+        report(o.at("nodes"), "the middle node of " + quote(ids) + " is not the mid-side node of element " +
+                                  std::to_string(el.id) + "'s edge between its corners" +
+                                  (middle ? " (that is node " + std::to_string(model_.nodes[static_cast<std::size_t>(*middle)].id) + ")"
+                                          : " (a straight edge of a " + std::string(element_type_names.name(el.type)) +
+                                                " element, which has none: name its two corners)"));
+        continue;
+      }
+    }
     p.node_a = edge->nodes[0];
-    p.node_b = edge->nodes[1];
+    p.node_b = last;
     into.pressures.push_back(p);
   }
 }

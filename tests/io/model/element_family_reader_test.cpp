@@ -119,5 +119,22 @@ TEST(ElementFamilyReader, HeatConductionOnQuadraticElementsIsNotAvailableYet) {
   expect_issue(d, "/elements/0/nodes", {"element 1 (quad8)", "heat conduction", "3- and 4-node"});
 }
 
+TEST(ElementFamilyReader, APressureEdgeMayNameItsMidSideNode) {
+  json d = two_bodies();
+  d["loads"]["pressures"] = json::parse(R"([{"nodes": [3, 4], "normal": 5}])");
+  const Model corners = read_model(d);
+  d["loads"]["pressures"][0]["nodes"] = json::array({3, 7, 4});
+  const Model named = read_model(d);
+  ASSERT_EQ(named.loads.pressures.size(), 1U);
+  EXPECT_EQ(named.loads.pressures[0].element, corners.loads.pressures[0].element);
+  EXPECT_EQ(named.loads.pressures[0].node_a, corners.loads.pressures[0].node_a);
+  EXPECT_EQ(named.loads.pressures[0].node_b, corners.loads.pressures[0].node_b);
+
+  d["loads"]["pressures"][0]["nodes"] = json::array({3, 6, 4});
+  expect_issue(d, "/loads/pressures/0/nodes", {"[3, 6, 4]", "not the mid-side node of element 1", "node 7"});
+  d["loads"]["pressures"][0]["nodes"] = json::array({11, 3, 12});  // the saas element's straight edge
+  expect_issue(d, "/loads/pressures/0/nodes", {"[11, 3, 12]", "element 2", "straight edge of a saas element"});
+}
+
 }  // namespace
 }  // namespace saasgaps::io
