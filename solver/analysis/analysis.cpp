@@ -219,10 +219,10 @@ class GapContactAnalysis {
     return s;
   }
 
-  /// Peaks and unloading branches of a saved state: none, or one per element; an element unloads
+  /// Peaks and unloading branches of a saved state: none, or one per material point; a point unloads
   /// only from a peak it reached, and only in a plastic stepped model.
   void check_plastic_branches(const MaterialState& m) const {
-    const std::size_t n = model_.elements.size();
+    const std::size_t n = MaterialPoints(model_).size();
     const bool kept = restart_version(model_) == RestartState::plastic_steps_version;
     const auto fits = [&](std::size_t size) { return size == 0 || (kept && size == n); };
     if (!fits(m.peaks.size()) || !fits(m.unloading.size())) {
