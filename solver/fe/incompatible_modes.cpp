@@ -34,15 +34,7 @@ ModePoints mode_points(const ElementData& e) {
     const PointGeometry& g = m.g[p] = point_geometry(e, xi, eta);
     m.w[p] = volume_weight(e, g, rule[p].weight);
     Mat48& B = m.B[p];
-    B.setZero();
-    for (int a = 0; a < 4; ++a) {
-      const auto k = static_cast<std::size_t>(a);
-      B(rr, 2 * a) = g.dN_dr[k];
-      B(zz, 2 * a + 1) = g.dN_dz[k];
-      B(rz, 2 * a) = g.dN_dz[k];
-      B(rz, 2 * a + 1) = g.dN_dr[k];
-      if (axisymmetric) B(th, 2 * a) = g.shape.N[k] / g.r;
-    }
+    strain_displacement(g, 4, axisymmetric, B);
     // The bubbles' derivatives through the point's own Jacobian (the same J^-T as the shape functions).
     const std::array<double, 2> P{1.0 - xi * xi, 1.0 - eta * eta};
     const std::array<double, 2> dP_dxi{-2.0 * xi, 0.0};

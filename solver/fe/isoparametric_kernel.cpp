@@ -101,15 +101,8 @@ ElementMatrices matrices(const ElementData& e) {
   for (std::size_t p = 0; p < rule.size(); ++p) {
     const PointGeometry g = point_geometry(e, rule[p].xi, rule[p].eta);
     const double w = volume_weight(e, g, rule[p].weight);
-    MatB B = MatB::Zero();
-    for (int a = 0; a < N; ++a) {
-      const auto k = static_cast<std::size_t>(a);
-      B(rr, 2 * a) = g.dN_dr[k];
-      B(zz, 2 * a + 1) = g.dN_dz[k];
-      B(rz, 2 * a) = g.dN_dz[k];
-      B(rz, 2 * a + 1) = g.dN_dr[k];
-      if (axisymmetric) B(th, 2 * a) = g.shape.N[k] / g.r;
-    }
+    MatB B;
+    strain_displacement(g, N, axisymmetric, B);
     const Constitutive& law = e.law_at(static_cast<int>(p));
     const Eigen::Matrix<double, 4, n> DB = law.D * B;
     K.noalias() += (w * B.transpose()) * DB;

@@ -40,6 +40,22 @@ PointGeometry point_geometry(const ElementData& e, double xi, double eta);
 /// The volume weight of a rule point: weight det J t, or weight det J 2 pi r.
 double volume_weight(const ElementData& e, const PointGeometry& g, double weight);
 
+/// The strain-displacement matrix of the first `nodes` shape functions at a point, into the first
+/// 2 x nodes columns of B (zeroed first): rows (rr, zz, rz, th), columns [u_r0, u_z0, u_r1, ...];
+/// eps_th = u_r / r in axisymmetry.
+template <class Matrix>
+void strain_displacement(const PointGeometry& g, int nodes, bool axisymmetric, Matrix& B) {
+  B.setZero();
+  for (int a = 0; a < nodes; ++a) {
+    const auto k = static_cast<std::size_t>(a);
+    B(rr, 2 * a) = g.dN_dr[k];
+    B(zz, 2 * a + 1) = g.dN_dz[k];
+    B(rz, 2 * a) = g.dN_dz[k];
+    B(rz, 2 * a + 1) = g.dN_dr[k];
+    if (axisymmetric) B(th, 2 * a) = g.shape.N[k] / g.r;
+  }
+}
+
 /// Strain of one point from the element's displacements (B u, rows rr, zz, rz, th).
 Vec4 point_strain(const ElementData& e, const PointGeometry& g, std::span<const double> u);
 

@@ -10,15 +10,7 @@ namespace saasgaps {
 
 namespace {
 
-constexpr std::array<EdgeNodes, 4> edges{{{{0, 4, 1}, 3}, {{1, 5, 2}, 3}, {{2, 6, 3}, 3}, {{3, 7, 0}, 3}}};
-constexpr std::array<std::array<double, 2>, 8> nodes{{{-1.0, -1.0},
-                                                      {1.0, -1.0},
-                                                      {1.0, 1.0},
-                                                      {-1.0, 1.0},
-                                                      {0.0, -1.0},
-                                                      {1.0, 0.0},
-                                                      {0.0, 1.0},
-                                                      {-1.0, 0.0}}};
+constexpr auto& nodes = quadratic_quad_nodes;
 
 void shape(double xi, double eta, ShapeValues& v) {
   for (std::size_t a = 0; a < 4; ++a) {
@@ -52,7 +44,8 @@ std::span<const ReferencePoint> points(Integration integration) {
 
 }  // namespace
 
-const ElementFamily quad8_family{ElementType::quad8, CellShape::quadrilateral, 8, 4, 2, edges, nodes, 16, 23,
+const ElementFamily quad8_family{ElementType::quad8, CellShape::quadrilateral, 8, 4, 2,
+                                 quadratic_quad_edges, std::span(quadratic_quad_nodes).first<8>(), 16, 23,
                                  shape, points, points, isoparametric_matrices, isoparametric_states};
 
 }  // namespace saasgaps

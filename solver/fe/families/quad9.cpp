@@ -9,16 +9,7 @@ namespace saasgaps {
 
 namespace {
 
-constexpr std::array<EdgeNodes, 4> edges{{{{0, 4, 1}, 3}, {{1, 5, 2}, 3}, {{2, 6, 3}, 3}, {{3, 7, 0}, 3}}};
-constexpr std::array<std::array<double, 2>, 9> nodes{{{-1.0, -1.0},
-                                                      {1.0, -1.0},
-                                                      {1.0, 1.0},
-                                                      {-1.0, 1.0},
-                                                      {0.0, -1.0},
-                                                      {1.0, 0.0},
-                                                      {0.0, 1.0},
-                                                      {-1.0, 0.0},
-                                                      {0.0, 0.0}}};
+constexpr auto& nodes = quadratic_quad_nodes;
 
 /// l(s) and l'(s) of the 1D quadratic through -1, 0, 1 for the node at `at`.
 void lagrange(double s, double at, double& l, double& dl) {
@@ -51,7 +42,8 @@ std::span<const ReferencePoint> points(Integration integration) {
 
 }  // namespace
 
-const ElementFamily quad9_family{ElementType::quad9, CellShape::quadrilateral, 9, 4, 2, edges, nodes, 10, 28,
+const ElementFamily quad9_family{ElementType::quad9, CellShape::quadrilateral, 9, 4, 2,
+                                 quadratic_quad_edges, quadratic_quad_nodes, 10, 28,
                                  shape, points, points, isoparametric_matrices, isoparametric_states};
 
 }  // namespace saasgaps
