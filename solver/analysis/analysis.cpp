@@ -230,7 +230,7 @@ class GapContactAnalysis {
     }
     for (std::size_t e = 0; e < m.unloading.size(); ++e) {
       if (m.unloads(e) && (m.peaks.empty() || !m.peaks[e].reached())) {
-        throw SolverError("the restart state does not belong to this model (element index " + std::to_string(e) +
+        throw SolverError("the restart state does not belong to this model (material point " + std::to_string(e) +
                           " unloads from no peak)");
       }
     }

@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <unordered_map>
 
+#include "solver/fe/element_family.hpp"
+
 namespace saasgaps {
 
 namespace {
@@ -22,12 +24,13 @@ std::uint64_t side_key(int a, int b) {
   return (std::uint64_t{lo} << 32U) | hi;
 }
 
-/// Twice the signed area of an element's polygon (shoelace): > 0 when counter-clockwise.
+/// Twice the signed area of an element's corner polygon (shoelace): > 0 when counter-clockwise.
 double twice_polygon_area(const Model& model, const Element& e) {
+  const int corners = family(e.type).corner_count;
   double sum = 0.0;
-  for (int k = 0; k < e.node_count; ++k) {
+  for (int k = 0; k < corners; ++k) {
     const Vec2 a = node_position(model.nodes, e.nodes[static_cast<std::size_t>(k)]);
-    const Vec2 b = node_position(model.nodes, e.nodes[static_cast<std::size_t>((k + 1) % e.node_count)]);
+    const Vec2 b = node_position(model.nodes, e.nodes[static_cast<std::size_t>((k + 1) % corners)]);
     sum += a.x() * b.y() - b.x() * a.y();
   }
   return sum;
@@ -61,6 +64,7 @@ const char* describe(SurfaceEdgeProblem problem) {
     case SurfaceEdgeProblem::branch: return "a third edge at one node: the edges are not a chain";
     case SurfaceEdgeProblem::opposite_side: return "its element is on the other side of the chain";
     case SurfaceEdgeProblem::disconnected: return "not connected to the chain of the first edge";
+    case SurfaceEdgeProblem::quadratic: return "a quadratic element: contact surfaces on quadratic elements are not available yet";
   }
   return "invalid edge";
 }
@@ -84,9 +88,9 @@ ContactSurface contact_surface(const Model& model, std::span<const std::array<in
   for (std::size_t i = 0; i < model.elements.size(); ++i) {
     const Element& el = model.elements[i];
     const bool ccw = twice_polygon_area(model, el) > 0.0;
-    for (int k = 0; k < el.node_count; ++k) {
-      const int a = el.nodes[static_cast<std::size_t>(k)];
-      const int b = el.nodes[static_cast<std::size_t>((k + 1) % el.node_count)];
+    for (const EdgeNodes& side : family(el.type).edges) {
+      const int a = el.nodes[static_cast<std::size_t>(side.first())];
+      const int b = el.nodes[static_cast<std::size_t>(side.last())];
       if (a == b) continue;  // a quad with a repeated node is a triangle
       const auto it = owners.find(side_key(a, b));
       if (it == owners.end()) continue;
@@ -119,6 +123,11 @@ ContactSurface contact_surface(const Model& model, std::span<const std::array<in
                             std::to_string(model.elements[static_cast<std::size_t>(found[0].element)].id) +
                             " and " +
                             std::to_string(model.elements[static_cast<std::size_t>(found[1].element)].id)});
+    } else if (const Element& el = model.elements[static_cast<std::size_t>(found.front().element)];
+               family(el.type).quadratic()) {
+      issues.push_back({i, SurfaceEdgeProblem::quadratic,
+                        name + ": an edge of element " + std::to_string(el.id) + ", " +
+                            describe(SurfaceEdgeProblem::quadratic)});
     } else {
       owner[i] = found.front();
     }

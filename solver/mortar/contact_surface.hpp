@@ -33,6 +33,7 @@ enum class SurfaceEdgeProblem {
   branch,         ///< a third edge at one node: the edges do not form a chain
   opposite_side,  ///< its element lies on the other side of the chain than its neighbour's
   disconnected,   ///< not on the chain of the first edge: the edges form more than one chain
+  quadratic,      ///< a side of a quadratic element (tri6, quad8, quad9): not available yet
 };
 
 /// The name of a problem as the io layer words it ("not a boundary edge", ...).

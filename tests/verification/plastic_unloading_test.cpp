@@ -320,7 +320,7 @@ TEST(PlasticUnloading, MalformedPlasticMembersAreRefused) {
   refused(short_peak, "not 7 numbers");
   nlohmann::json far = good;
   far["plastic"]["unloading"].push_back(8);
-  refused(far, "plastic element index 8 out of range");
+  refused(far, "plastic material point index 8 out of range");
   nlohmann::json v2 = good;
   v2["version"] = RestartState::stepped_version;
   refused(v2, "version 2 has no plastic peaks");

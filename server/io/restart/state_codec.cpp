@@ -66,7 +66,7 @@ json dimensions_json(const RestartState& s) {
 void read_plastic_branches(const json& j, std::size_t elements, MaterialState& m) {
   const auto index = [elements](const json& value) {
     const auto i = value.get<std::size_t>();
-    if (i >= elements) throw SolverError("restart state: plastic element index " + std::to_string(i) + " out of range");
+    if (i >= elements) throw SolverError("restart state: plastic material point index " + std::to_string(i) + " out of range");
     return i;
   };
   for (const json& p : j.at("peaks")) {

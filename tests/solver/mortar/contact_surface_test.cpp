@@ -126,6 +126,28 @@ TEST(ContactSurface, RefusesAnEdgeThatIsNoSide) {
   EXPECT_NE(issue.detail.find("[10, 7]"), std::string::npos) << issue.detail;  // user ids
 }
 
+TEST(ContactSurface, RefusesAnEdgeOfAQuadraticElement) {
+  // A quad8 built in code: its sides run corner to corner (through the mid-side nodes, which a
+  // contact surface does not carry yet), so the surface names the element instead of "no side".
+  Model m;
+  m.materials = {testing::isotropic_material(1, 1.0e6, 0.3)};
+  const std::array<Vec2, 8> x{Vec2(0, 0), Vec2(2, 0), Vec2(2, 1), Vec2(0, 1),
+                              Vec2(1, 0), Vec2(2, 0.5), Vec2(1, 1), Vec2(0, 0.5)};
+  Element e;
+  e.id = 7;
+  e.type = ElementType::quad8;
+  e.node_count = 8;
+  for (int k = 0; k < 8; ++k) {
+    m.nodes.push_back({k + 1, x[static_cast<std::size_t>(k)].x(), x[static_cast<std::size_t>(k)].y()});
+    e.nodes[static_cast<std::size_t>(k)] = k;
+  }
+  m.elements = {e};
+  const SurfaceEdgeIssue issue = refusal(m, {{2, 3}});
+  EXPECT_EQ(issue.problem, SurfaceEdgeProblem::quadratic);
+  EXPECT_NE(issue.detail.find("edge [3, 4]: an edge of element 7"), std::string::npos) << issue.detail;
+  EXPECT_NE(issue.detail.find("not available yet"), std::string::npos) << issue.detail;
+}
+
 TEST(ContactSurface, RefusesAnEdgeOfTwoElements) {
   const Block b = block();
   const Grid& g = b.grid;
