@@ -80,7 +80,8 @@ class GapContactAnalysis {
         gap_settings_(effective_gap_settings(model, options)),
         surfaces_(surface_contact(model)),
         make_contact_(make_contact),
-        schedule_(model) {
+        schedule_(model),
+        material_points_(MaterialPoints(model).size()) {
     schedule_changed_ = options.tensile_schedule.has_value() && options.restart_schedule;
   }
 
@@ -183,7 +184,7 @@ class GapContactAnalysis {
     if (schedule_.stepped()) s.position = schedule_.first();
     s.node_count = model_.nodes.size();
     s.element_count = model_.elements.size();
-    s.material_point_count = MaterialPoints(model_).size();
+    s.material_point_count = material_points_;
     s.gap_count = model_.gap_count();
     return s;
   }
@@ -201,7 +202,7 @@ class GapContactAnalysis {
         (saved.position && !schedule_.holds(*saved.position, model_.nodes.size()))) {
       throw SolverError("the restart state does not belong to this model (its load steps differ)");
     }
-    const std::size_t points = MaterialPoints(model_).size();
+    const std::size_t points = material_points_;
     if (saved.node_count != model_.nodes.size() || saved.element_count != model_.elements.size() ||
         saved.material_point_count != points || saved.gap_count != model_.gap_count() ||
         saved.displacement.size() != 2 * model_.nodes.size() || saved.materials.secant_ratio.size() != points ||
@@ -222,7 +223,7 @@ class GapContactAnalysis {
   /// Peaks and unloading branches of a saved state: none, or one per material point; a point unloads
   /// only from a peak it reached, and only in a plastic stepped model.
   void check_plastic_branches(const MaterialState& m) const {
-    const std::size_t n = MaterialPoints(model_).size();
+    const std::size_t n = material_points_;
     const bool kept = restart_version(model_) == RestartState::plastic_steps_version;
     const auto fits = [&](std::size_t size) { return size == 0 || (kept && size == n); };
     if (!fits(m.peaks.size()) || !fits(m.unloading.size())) {
@@ -476,6 +477,7 @@ class GapContactAnalysis {
   bool schedule_changed_ = false;
   ContactMethodFactory make_contact_;
   LoadSchedule schedule_;
+  std::size_t material_points_;           // of the model's solid elements: the material state's length
   Model increment_model_;                 // stepped models: the current increment's
   std::unique_ptr<IncrementSystem> now_;  // the current increment's system
   bool solved_in_increment_ = false;      // the state's displacements were solved with now_ (not the increment before)

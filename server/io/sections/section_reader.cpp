@@ -3,25 +3,12 @@
 #include "io/json/value_quote.hpp"
 #include "io/sections/contact_check.hpp"
 #include "io/sections/family_limits.hpp"
-#include "solver/fe/element_family.hpp"
+#include "solver/assembly/element_data.hpp"
 #include "io/sections/run_limits.hpp"
 
 namespace saasgaps::io {
 
 namespace {
-
-/// The mid-side node of element el's edge between corners a and b (either order); none on a
-/// straight edge. The edge exists: the caller found el as its owner.
-std::optional<int> edge_middle(const Element& el, int a, int b) {
-  for (const EdgeNodes& edge : family(el.type).edges) {
-    const int first = el.nodes[static_cast<std::size_t>(edge.first())];
-    const int last = el.nodes[static_cast<std::size_t>(edge.last())];
-    if (std::minmax(first, last) != std::minmax(a, b)) continue;
-    if (edge.count == 3) return el.nodes[static_cast<std::size_t>(edge.node[1])];
-    return std::nullopt;
-  }
-  return std::nullopt;
-}
 
 constexpr std::array<std::string_view, section_count> section_keys{
     "schema_version", "title", "description", "units", "analysis", "nodes", "materials",
@@ -499,7 +486,9 @@ void SectionReader::read_pressures(const Obj& loads, Loads& into) {
     }
     p.element = found->second.front();
     if (middle_named) {
-      const std::optional<int> middle = edge_middle(model_.elements[static_cast<std::size_t>(p.element)], edge->nodes[0], last);
+      // The owner has this edge (found above); a straight one has no mid-side node.
+      const ElementEdge side = element_edge(model_, static_cast<std::size_t>(p.element), edge->nodes[0], last);
+      const std::optional<int> middle = side.count == 3 ? std::optional<int>(side.node[1]) : std::nullopt;
       if (middle != edge->nodes[1]) {
         const Element& el = model_.elements[static_cast<std::size_t>(p.element)];
         report(o.at("nodes"), "the middle node of " + quote(ids) + " is not the mid-side node of element " +
