@@ -18,7 +18,7 @@ BUILD_PACKAGES=(
 # service walk-through (curl).
 EXAMPLE_PACKAGES=(python3 curl)
 # What the tests need on top.
-TEST_PACKAGES=(googletest libgtest-dev python3-jsonschema python3-pil python3-meshio chromium chromium-driver
+TEST_PACKAGES=(googletest libgtest-dev python3-jsonschema python3-pil python3-meshio chromium chromium-driver calculix-ccx
   slurm-wlm munge)
 
 # install_packages PKG...: apt-get installs the ones dpkg does not report as installed.
