@@ -1,9 +1,11 @@
 // saasgaps_bench: times the solver's stages on a generated structured plane-strain model.
 //
 //   build/tests/bench/saasgaps_bench --dofs 1000000 [--gaps] [--baseline] [--end-to-end]
+//   build/tests/bench/saasgaps_bench --dofs 1000000 --family quad8
 //
 // The model is an n x n block of SAAS quads, fixed at the bottom, pressed on the top, heated; with
-// --gaps it is cut in two at mid height by a row of gap elements. Reported per stage: wall time and
+// --gaps it is cut in two at mid height by a row of gap elements; with --family quad8 or quad9 the
+// block is of those elements (n chosen for the same number of unknowns; no gaps). Reported per stage: wall time and
 // the true peak resident memory of the whole process during that stage (VmHWM of /proc/self/status,
 // reset before each stage by writing 5 to /proc/self/clear_refs; where the kernel refuses the reset
 // the column is the running peak, and the header says so). Stages: pattern construction, assembly,
@@ -37,6 +39,7 @@
 #include "solver/lac/cholmod_memory.hpp"
 #include "solver/lac/sparse_cholesky.hpp"
 #include "support/mesh_builder.hpp"
+#include "support/quadratic_grid.hpp"
 
 #include "stopwatch.hpp"
 
@@ -143,6 +146,22 @@ Model block_model(int n, bool with_gaps) {
   return m;
 }
 
+/// The block of quad8 or quad9 elements: n x n elements, fixed at the bottom, pressed on the top,
+/// heated.
+Model quadratic_block_model(int n, ElementType type) {
+  Model m;
+  m.analysis = AnalysisType::plane_strain;
+  m.materials = {testing::isotropic_material(1, 30.0e6, 0.3, 6.5e-6)};
+  const testing::QuadraticGrid g =
+      testing::add_quadratic_grid(m, n, n, [](double s, double t) { return Vec2(s, t); }, 0, type);
+  for (int i = 0; i <= 2 * n; ++i) testing::constrain(m, g.at(i, 0), 0.0, 0.0);
+  for (int i = 0; i < n; ++i) {
+    m.loads.pressures.push_back({(n - 1) * n + i, g.at(2 * i, 2 * n), g.at(2 * i + 2, 2 * n), 1000.0, 0.0});
+  }
+  testing::fill_temperatures(m, 100.0);
+  return m;
+}
+
 /// Eigen's triplet assembly of the same element matrices: the textbook baseline.
 double triplet_assembly_seconds(const Model& m, const DofMap& dofs, const SolidMaterials& materials,
                                 const MaterialState& state) {
@@ -180,11 +199,21 @@ int main(int argc, char** argv) {
                "beside the assembly; stress recovery)");
   bool huge_pages = false;
   app.add_flag("--huge-pages", huge_pages, "Advise CHOLMOD's large blocks to use transparent huge pages");
+  std::string family = "saas";
+  app.add_option("--family", family, "The block's elements: saas (the report's), quad8 or quad9")
+      ->check(CLI::IsMember({"saas", "quad8", "quad9"}));
   CLI11_PARSE(app, argc, argv);
   advise_huge_pages(huge_pages);
+  if (family != "saas" && (with_gaps || baseline)) {
+    std::fprintf(stderr, "--gaps and --baseline need the SAAS block (gap elements join linear edges)\n");
+    return 2;
+  }
 
-  const int n = std::max(2, static_cast<int>(std::lround(std::sqrt(target_dofs / 2.0))) - 1);
-  const Model m = block_model(n, with_gaps);
+  // Unknowns per element: 2 for a 4-node grid, 6 for quad8 (3 nodes per cell), 8 for quad9.
+  const double per_cell = family == "saas" ? 2.0 : family == "quad8" ? 6.0 : 8.0;
+  const int n = std::max(2, static_cast<int>(std::lround(std::sqrt(target_dofs / per_cell))) - 1);
+  const Model m = family == "saas" ? block_model(n, with_gaps)
+                                   : quadratic_block_model(n, family == "quad8" ? ElementType::quad8 : ElementType::quad9);
 
   Stages stages;
   std::vector<double> u;
@@ -249,9 +278,9 @@ int main(int argc, char** argv) {
     });
   }
 
-  std::printf("model: %d x %d SAAS quads%s, %zu nodes, %lld unknowns, nnz(K upper) %lld, nnz(L) %.3g, %.3g Gflop per "
+  std::printf("model: %d x %d %s elements%s, %zu nodes, %lld unknowns, nnz(K upper) %lld, nnz(L) %.3g, %.3g Gflop per "
               "factorization, ordering %s (%.3f s of the analysis)\n",
-              n, n, with_gaps ? " cut by a row of gap elements" : "", m.nodes.size(),
+              n, n, family.c_str(), with_gaps ? " cut by a row of gap elements" : "", m.nodes.size(),
               static_cast<long long>(dofs->size()), static_cast<long long>(system->pattern().nnz()),
               cholesky->factor_nonzeros(), cholesky->factor_flops() / 1e9, ordering_name.c_str(), ordering_s);
   // The stage objects go before solve() runs on its own, so its peak is a solve's alone.
