@@ -69,6 +69,44 @@ std::map<int, std::vector<double>> print_block(const std::string& dat, const std
   return rows;
 }
 
+/// The nodal values of the result block `name` (" -4  STRESS ...") of ccx's .frd file: rows
+/// " -1" + node (10 columns) + values of 12 columns each, until " -3".
+std::map<int, std::vector<double>> frd_block(const std::string& frd, const std::string& name) {
+  std::map<int, std::vector<double>> rows;
+  std::istringstream in(frd);
+  std::string line;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    if (line.rfind(" -4  " + name, 0) == 0) {
+      inside = true;
+      continue;
+    }
+    if (!inside) continue;
+    if (line.rfind(" -3", 0) == 0) break;
+    if (line.rfind(" -1", 0) != 0) continue;
+    const int node = std::stoi(line.substr(3, 10));
+    std::vector<double> values;
+    for (std::size_t at = 13; at + 12 <= line.size(); at += 12) values.push_back(std::stod(line.substr(at, 12)));
+    rows[node] = values;
+  }
+  return rows;
+}
+
+/// The element and face (CalculiX's P1..P4 / P1..P3: the edge from corner k to corner k + 1)
+/// of the edge a-b, as the model's pressures name it.
+std::pair<int, int> face_of(const json& model, int a, int b) {
+  for (const json& element : model.at("elements")) {
+    const std::vector<int> nodes = element.at("nodes");
+    const std::size_t corners = nodes.size() == 6 || nodes.size() == 3 ? 3 : 4;
+    for (std::size_t k = 0; k < corners; ++k) {
+      const int from = nodes[k];
+      const int to = nodes[(k + 1) % corners];
+      if ((from == a && to == b) || (from == b && to == a)) return {element.at("id").get<int>(), static_cast<int>(k) + 1};
+    }
+  }
+  throw std::invalid_argument("calculix_deck: no element has the edge " + std::to_string(a) + "-" + std::to_string(b));
+}
+
 }  // namespace
 
 std::string calculix_deck(const json& model) {
@@ -109,7 +147,18 @@ std::string calculix_deck(const json& model) {
       if (f.contains("fz")) deck << node << ", 2, " << number(f.at("fz")) << "\n";
     }
   }
-  deck << "*NODE PRINT, NSET=NALL\nU\n*NODE PRINT, NSET=NALL\nS\n*END STEP\n";
+  if (model.contains("loads") && model.at("loads").contains("pressures")) {
+    deck << "*DLOAD\n";
+    for (const json& p : model.at("loads").at("pressures")) {
+      if (p.value("shear", 0.0) != 0.0) throw std::invalid_argument("calculix_deck: shear tractions are not converted");
+      const std::vector<int> edge = p.at("nodes");
+      const auto [element, face] = face_of(model, edge.front(), edge.back());
+      // Both programs: a positive pressure pushes into the element.
+      deck << element << ", P" << face << ", " << number(p.at("normal")) << "\n";
+    }
+  }
+  // Displacements printed to the .dat; nodal stresses (extrapolated and averaged) only to the .frd.
+  deck << "*NODE PRINT, NSET=NALL\nU\n*NODE FILE\nS\n*END STEP\n";
   return deck.str();
 }
 
@@ -126,8 +175,10 @@ std::optional<CalculixNodes> run_calculix(const json& model) {
   for (const auto& [node, v] : print_block(dat, "displacements")) {
     if (v.size() >= 2) nodes.u[node] = {v[0], v[1]};
   }
-  // ccx prints sxx syy szz sxy sxz syz.
-  for (const auto& [node, v] : print_block(dat, "stresses")) {
+  std::ifstream frd_in(folder / "model.frd");
+  const std::string frd((std::istreambuf_iterator<char>(frd_in)), std::istreambuf_iterator<char>());
+  // SXX SYY SZZ SXY SYZ SZX.
+  for (const auto& [node, v] : frd_block(frd, "STRESS")) {
     if (v.size() >= 4) nodes.sigma[node] = {v[0], v[1], v[2], v[3]};
   }
   if (nodes.u.empty()) throw std::runtime_error("ccx printed no displacements: see " + folder.string());

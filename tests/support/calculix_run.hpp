@@ -12,9 +12,9 @@
 
 namespace saasgaps::testing {
 
-/// What CalculiX printed for every node (*NODE PRINT): displacements (u_r, u_z) and its nodal
+/// What CalculiX printed for every node: displacements (u_r, u_z, *NODE PRINT) and its nodal
 /// stresses, extrapolated from the integration points and averaged over the elements around the
-/// node, in the model's plane: (sigma_r, sigma_z, sigma_theta, tau_rz) = CalculiX's (S11, S22,
+/// node (*NODE FILE, read from the .frd), in the model's plane: (sigma_r, sigma_z, sigma_theta, tau_rz) = CalculiX's (S11, S22,
 /// S33, S12).
 struct CalculixNodes {
   std::map<int, std::array<double, 2>> u;
@@ -24,7 +24,8 @@ struct CalculixNodes {
 /// The model as a CalculiX deck: plane_stress or plane_strain (thickness from the analysis), the
 /// first row of the first isotropic material (E, nu), quad8 elements as CPS8/CPE8 (CPS8R/CPE8R for
 /// "integration": "reduced") and tri6 as CPS6/CPE6, constraints as *BOUNDARY (fixed or
-/// prescribed), `loads.nodal_forces` as *CLOAD. Anything else in the model is an error
+/// prescribed), `loads.nodal_forces` as *CLOAD, normal `loads.pressures` on [a, b] edges as *DLOAD
+/// on the element's face. Anything else in the model is an error
 /// (std::invalid_argument): the comparison must run the same problem.
 std::string calculix_deck(const nlohmann::json& model);
 
