@@ -18,6 +18,7 @@
 #include "solver/lac/sparse_cholesky.hpp"
 #include "solver/model/load_schedule.hpp"
 #include "solver/mortar/mortar_method.hpp"
+#include "solver/recovery/stress_recovery.hpp"
 
 namespace saasgaps {
 
@@ -379,6 +380,7 @@ class GapContactAnalysis {
                            von_mises(es.stress), yielded, converged};
         }
       });
+      recover(state, v, s);
       s.gaps = v.contact.gaps;
       s.contact = now_->contact->surface_results(state);
       s.reactions = reactions(state);
@@ -386,6 +388,22 @@ class GapContactAnalysis {
     s.steps = step_results(state, status);
     s.message = message(state, v, status);
     return s;
+  }
+
+  /// Recovered nodal stresses and the error estimate (solver/recovery) of the evaluated state, from
+  /// the laws and the material points' stresses elements[] reports.
+  void recover(const RestartState& state, const Evaluation& v, Solution& s) const {
+    const IncrementSystem& now = *now_;
+    StressRecovery r = recover_stresses(
+        now.model, state.displacement,
+        [&](std::size_t e, std::span<Constitutive> scratch) {
+          SolidMaterials::LawMemo memo;  // one per call: the recovery asks from several threads
+          return now.materials.laws(e, state.materials, memo, scratch);
+        },
+        v.points, now.materials.points());
+    for (std::size_t e = 0; e < s.elements.size(); ++e) s.elements[e].error = r.element_error[e];
+    s.recovered = std::move(r.stress);
+    s.error_estimate = r.estimate;
   }
 
   /// The supports' forces in the state's last solve (reactions.hpp). A stepped run stopped right after

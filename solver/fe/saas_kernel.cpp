@@ -148,17 +148,33 @@ Triangle6 triangle_matrices(const ElementData& e) {
 }
 
 /// Stress and total strain of one triangle with displacements u (6), temperature rise dT.
+ElementState triangle_state(const Triangle& t, const Vec6& u, double dT, const ElementData& e) {
+  ElementState s;
+  s.strain = t.B * u;
+  s.stress = e.law_at(0).D * s.strain - e.law_at(0).beta * dT;
+  if (e.law_at(0).has_initial_strain()) s.stress -= e.law_at(0).D * e.law_at(0).initial_strain;
+  if (e.analysis == AnalysisType::plane_stress) {
+    s.strain[th] = e.law_at(0).out_of_plane.dot(s.stress) + e.law_at(0).alpha3 * dT;
+    if (e.law_at(0).has_initial_strain()) s.strain[th] += e.law_at(0).initial_strain[th];
+  }
+  return s;
+}
+
 void accumulate_triangle_state(const Triangle& t, const Vec6& u, double dT, const ElementData& e,
                                ElementState& sum) {
-  Vec4 strain = t.B * u;
-  Vec4 stress = e.law_at(0).D * strain - e.law_at(0).beta * dT;
-  if (e.law_at(0).has_initial_strain()) stress -= e.law_at(0).D * e.law_at(0).initial_strain;
-  if (e.analysis == AnalysisType::plane_stress) {
-    strain[th] = e.law_at(0).out_of_plane.dot(stress) + e.law_at(0).alpha3 * dT;
-    if (e.law_at(0).has_initial_strain()) strain[th] += e.law_at(0).initial_strain[th];
-  }
-  sum.strain += t.w * strain;
-  sum.stress += t.w * stress;
+  const ElementState s = triangle_state(t, u, dT, e);
+  sum.strain += t.w * s.strain;
+  sum.stress += t.w * s.stress;
+}
+
+/// The displacements of a saas quad's corners and condensed centre (10 values).
+Vec10 quad_displacements(const ElementData& e, const Vec8& u) {
+  const QuadSystem q = quad_system(e);
+  // Kce ue + Kcc uc = fc gives the condensed centre displacement back.
+  const Vec2 uc = q.K.bottomRightCorner<2, 2>().inverse() * (q.f.tail<2>() - q.K.bottomLeftCorner<2, 8>() * u);
+  Vec10 all;
+  all << u, uc;
+  return all;
 }
 
 }  // namespace
@@ -192,12 +208,7 @@ ElementStates saas_states(const ElementData& e, std::span<const double> u_span) 
     accumulate_triangle_state(t, u.head<6>(), (e.dT[0] + e.dT[1] + e.dT[2]) / 3.0, e, sum);
     weight = t.w;
   } else {
-    const QuadSystem q = quad_system(e);
-    // Kce ue + Kcc uc = fc gives the condensed centre displacement back.
-    const Vec2 uc = q.K.bottomRightCorner<2, 2>().inverse() *
-                    (q.f.tail<2>() - q.K.bottomLeftCorner<2, 8>() * u);
-    Vec10 all;
-    all << u, uc;
+    const Vec10 all = quad_displacements(e, u);
     const auto p = quad_points(corners(e));
     const auto dT = quad_values(corner_dT(e));
     for (const auto& tri : quad_triangles) {
@@ -215,6 +226,29 @@ ElementStates saas_states(const ElementData& e, std::span<const double> u_span) 
   out.point[0] = sum;
   out.centre = sum;
   return out;
+}
+
+int saas_triangle_states(const ElementData& e, std::span<const double> u_span, std::array<TriangleState, 4>& out) {
+  Vec8 u = Vec8::Zero();
+  for (int i = 0; i < e.dof_count(); ++i) u[i] = u_span[static_cast<std::size_t>(i)];
+  if (e.node_count == 3) {
+    const Triangle t = make_triangle(e.x[0], e.x[1], e.x[2], e.analysis, e.thickness);
+    out[0] = {{0, 1, 2}, (e.x[0] + e.x[1] + e.x[2]) / 3.0, t.area, t.w,
+              triangle_state(t, u.head<6>(), (e.dT[0] + e.dT[1] + e.dT[2]) / 3.0, e)};
+    return 1;
+  }
+  const Vec10 all = quad_displacements(e, u);
+  const auto p = quad_points(corners(e));
+  const auto dT = quad_values(corner_dT(e));
+  for (std::size_t k = 0; k < quad_triangles.size(); ++k) {
+    const auto& tri = quad_triangles[k];
+    const Triangle t = make_triangle(p[tri[0]], p[tri[1]], p[tri[2]], e.analysis, e.thickness);
+    Vec6 ut;
+    for (int a = 0; a < 3; ++a) ut.segment<2>(2 * a) = all.segment<2>(2 * tri[a]);
+    out[k] = {tri, (p[tri[0]] + p[tri[1]] + p[tri[2]]) / 3.0, t.area, t.w,
+              triangle_state(t, ut, (dT[tri[0]] + dT[tri[1]] + dT[tri[2]]) / 3.0, e)};
+  }
+  return 4;
 }
 
 }  // namespace saasgaps

@@ -24,4 +24,19 @@ ElementMatrices saas_matrices(const ElementData& e);
 /// The centre state (the one material point) from the corner displacements.
 ElementStates saas_states(const ElementData& e, std::span<const double> u);
 
+/// One constant-strain triangle of a report element: its vertices (indices into the corners 0..3
+/// and, for a saas quad, the centre 4 at the mean of the corners), centroid, volume weight w (t A, or
+/// 2 pi r_c A) and its state, whose w-weighted mean is the element's centre state.
+struct TriangleState {
+  std::array<int, 3> vertex{0, 1, 2};
+  Vec2 centroid = Vec2::Zero();
+  double area = 0.0;
+  double w = 0.0;
+  ElementState state;
+};
+
+/// The triangles of a report element and their states: four for a saas quad, one for a tri3.
+/// Returns how many were written into `out`.
+int saas_triangle_states(const ElementData& e, std::span<const double> u, std::array<TriangleState, 4>& out);
+
 }  // namespace saasgaps

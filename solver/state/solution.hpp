@@ -11,6 +11,7 @@
 #include "solver/base/voigt.hpp"
 #include "solver/state/gap_history.hpp"
 #include "solver/state/iteration_record.hpp"
+#include "solver/state/recovered_field.hpp"
 
 namespace saasgaps {
 
@@ -38,6 +39,7 @@ struct ElementResult {
   double effective = 0.0;      ///< von Mises
   bool yielded = false;        ///< YIELD?
   bool plastic_converged = true;  ///< N-L/CONV?
+  double error = 0.0;  ///< estimated error in the energy norm (solver/recovery/error_estimate.hpp)
 };
 
 /// open: eps_M >= 0; partial: closing but short of contact by more than the tolerance; closed:
@@ -140,6 +142,10 @@ struct Solution {
   std::vector<NodeReaction> reactions;  ///< every node with a prescribed component, in node order (empty before iteration 1)
   std::vector<StepResult> steps;  ///< stepped models only, one per Model::steps entry; else empty
   std::optional<ThermalResult> thermal;  ///< models with `thermal` only
+  /// The recovered nodal stresses, per node and material side (rr, zz, rz, th); empty before iteration 1.
+  RecoveredField recovered;
+  /// The estimate of the stresses' error in the energy norm; none before iteration 1.
+  std::optional<ErrorEstimate> error_estimate;
 };
 
 }  // namespace saasgaps

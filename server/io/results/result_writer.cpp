@@ -19,27 +19,53 @@ void write_node_ids(JsonWriter& out, const Model& model, const std::array<int, N
 
 // Keys in alphabetical order in every object (see the header).
 
-void write_node(JsonWriter& out, const Model& model, const NodeResult& n, std::size_t index, double T) {
-  out.begin_object()
-      .field("T", T)
-      .field("id", n.id)
-      .field("r", model.nodes[index].r)
-      .field("u_r", n.u_r)
-      .field("u_z", n.u_z)
-      .field("z", model.nodes[index].z)
-      .end_object();
+/// The recovered stress keys of a node or a node side, in alphabetical order after "effective"
+/// (which the caller places): sigma_r, sigma_theta, sigma_z, tau_rz.
+void write_stress_components(JsonWriter& out, const Vec4& s) {
+  out.field("sigma_r", s[rr]).field("sigma_theta", s[th]).field("sigma_z", s[zz]).field("tau_rz", s[rz]);
+}
+
+/// recovered: the node's recovered stress (the mean of its material sides), nullptr for a node of no
+/// solid element or a result without recovery.
+void write_node(JsonWriter& out, const Model& model, const NodeResult& n, std::size_t index, double T,
+                const Vec4* recovered) {
+  out.begin_object().field("T", T);
+  if (recovered != nullptr) out.field("effective", von_mises(*recovered));
+  out.field("id", n.id).field("r", model.nodes[index].r);
+  if (recovered != nullptr) write_stress_components(out, *recovered);
+  out.field("u_r", n.u_r).field("u_z", n.u_z).field("z", model.nodes[index].z).end_object();
+}
+
+/// Nodes where elements of several materials meet: each material side's recovered stress
+/// (docs/results.md, `node_sides`).
+void write_node_sides(JsonWriter& out, const Model& model, const RecoveredField& f) {
+  out.key("node_sides").begin_array();
+  for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+    if (f.side_count(n) < 2) continue;
+    for (std::uint32_t k = f.first[n]; k < f.first[n + 1]; ++k) {
+      out.begin_object()
+          .field("effective", von_mises(f.value[k]))
+          .field("material", model.materials[static_cast<std::size_t>(f.material[k])].id)
+          .field("node", model.nodes[n].id);
+      write_stress_components(out, f.value[k]);
+      out.end_object();
+    }
+  }
+  out.end_array();
 }
 
 /// temperature: the element's mean; flux: (q_r, q_z) of thermal runs, else nullptr.
+/// with_error: the result carries an error estimate (every solved model's does).
 void write_element(JsonWriter& out, const Model& model, const Element& el, const ElementResult& e, double temperature,
-                   const Vec2* flux) {
+                   const Vec2* flux, bool with_error) {
   out.begin_object()
       .field("angle", e.principal.angle_deg)
       .field("effective", e.effective)
       .field("eps_r", e.strain[rr])
       .field("eps_theta", e.strain[th])
-      .field("eps_z", e.strain[zz])
-      .field("gamma_rz", e.strain[rz])
+      .field("eps_z", e.strain[zz]);
+  if (with_error) out.field("error", e.error);
+  out.field("gamma_rz", e.strain[rz])
       .field("id", e.id)
       .field("material", model.materials[el.material].id);
   out.key("nodes");
@@ -120,9 +146,18 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s, const 
     const Element& el = model.elements[e];
     double mean = 0.0;  // of the node temperatures, as element_temperature does for the model's loads
     for (int a = 0; a < el.node_count; ++a) mean += T[static_cast<std::size_t>(el.nodes[a])];
-    write_element(item, model, el, s.elements[e], mean / el.node_count, s.thermal ? &s.thermal->flux[e] : nullptr);
+    write_element(item, model, el, s.elements[e], mean / el.node_count, s.thermal ? &s.thermal->flux[e] : nullptr,
+                  s.error_estimate.has_value());
   }, pieces);
   out.end_array();
+  if (s.error_estimate) {
+    out.key("error_estimate")
+        .begin_object()
+        .field("energy_norm", s.error_estimate->energy_norm)
+        .field("error", s.error_estimate->error)
+        .field("relative", s.error_estimate->relative)
+        .end_object();
+  }
   out.key("gaps").begin_array();
   for (std::size_t g = 0; g < s.gaps.size(); ++g) write_gap(out, model, model.gaps->elements[g], s.gaps[g]);
   out.end_array();
@@ -130,8 +165,13 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s, const 
   for (const IterationRecord& row : s.history) write_history_row(out, row);
   out.end_array();
   out.field("iterations", s.iterations).field("message", s.message);
+  if (!s.recovered.empty()) write_node_sides(out, model, s.recovered);
   out.key("nodes").begin_array();
-  write_items(out, s.nodes.size(), [&](JsonWriter& item, std::size_t n) { write_node(item, model, s.nodes[n], n, T[n]); }, pieces);
+  write_items(out, s.nodes.size(), [&](JsonWriter& item, std::size_t n) {
+    const bool recovered = s.recovered.has(n);
+    const Vec4 stress = recovered ? s.recovered.mean(n) : Vec4::Zero();
+    write_node(item, model, s.nodes[n], n, T[n], recovered ? &stress : nullptr);
+  }, pieces);
   out.end_array();
   out.key("reaction_sum");
   write_force(out, reaction_sum(s.reactions));

@@ -1,0 +1,81 @@
+#include "solver/recovery/error_estimate.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+
+#include "solver/fe/element_geometry.hpp"
+#include "solver/fe/isoparametric_kernel.hpp"
+#include "solver/fe/saas_kernel.hpp"
+
+namespace saasgaps {
+
+double complementary_energy_density(const Mat4& D, AnalysisType analysis, const Vec4& sigma) {
+  if (analysis == AnalysisType::axisymmetric) return sigma.dot(D.partialPivLu().solve(sigma));
+  const Eigen::Matrix3d Dp = D.topLeftCorner<3, 3>();
+  const Eigen::Vector3d s = sigma.head<3>();
+  return s.dot(Dp.partialPivLu().solve(s));
+}
+
+ElementError element_error(const ElementData& e, const ElementStates& states, std::span<const double> u,
+                           std::span<const Vec4> nodal) {
+  ElementError out;
+  if (e.type == ElementType::saas || e.type == ElementType::tri3) {
+    std::array<TriangleState, 4> tri;
+    const int count = saas_triangle_states(e, u, tri);
+    // Vertex values: the corners' recovered stresses and, for a quad, their mean at the centre.
+    std::array<Vec4, 5> v{};
+    std::array<Vec2, 5> x{};
+    for (int a = 0; a < e.node_count; ++a) {
+      v[static_cast<std::size_t>(a)] = nodal[static_cast<std::size_t>(a)];
+      x[static_cast<std::size_t>(a)] = e.x[static_cast<std::size_t>(a)];
+    }
+    if (e.node_count == 4) {
+      v[4] = (v[0] + v[1] + v[2] + v[3]) / 4.0;
+      x[4] = (x[0] + x[1] + x[2] + x[3]) / 4.0;
+    }
+    const Mat4& D = e.law_at(0).D;
+    for (int k = 0; k < count; ++k) {
+      const TriangleState& t = tri[static_cast<std::size_t>(k)];
+      const Vec4& sigma_h = t.state.stress;
+      out.norm2 += t.w * complementary_energy_density(D, e.analysis, sigma_h);
+      for (int i = 0; i < 3; ++i) {
+        const auto a = static_cast<std::size_t>(t.vertex[static_cast<std::size_t>(i)]);
+        const auto b = static_cast<std::size_t>(t.vertex[static_cast<std::size_t>((i + 1) % 3)]);
+        const Vec4 diff = 0.5 * (v[a] + v[b]) - sigma_h;
+        const double w = e.analysis == AnalysisType::axisymmetric
+                             ? two_pi * 0.5 * (x[a].x() + x[b].x()) * t.area / 3.0
+                             : t.w / 3.0;
+        out.error2 += w * complementary_energy_density(D, e.analysis, diff);
+      }
+    }
+    return out;
+  }
+  const auto rule = family(e.type).material_points(e.integration);
+  for (std::size_t p = 0; p < rule.size(); ++p) {
+    const PointGeometry g = point_geometry(e, rule[p].xi, rule[p].eta);
+    const double w = volume_weight(e, g, rule[p].weight);
+    Vec4 star = Vec4::Zero();
+    for (int a = 0; a < e.node_count; ++a) star += g.shape.N[static_cast<std::size_t>(a)] * nodal[static_cast<std::size_t>(a)];
+    const Vec4& sigma_h = states.point[p].stress;
+    const Mat4& D = e.law_at(static_cast<int>(p)).D;
+    out.error2 += w * complementary_energy_density(D, e.analysis, star - sigma_h);
+    out.norm2 += w * complementary_energy_density(D, e.analysis, sigma_h);
+  }
+  return out;
+}
+
+ErrorEstimate total_error(std::span<const ElementError> elements) {
+  double e2 = 0.0;
+  double n2 = 0.0;
+  for (const ElementError& e : elements) {
+    e2 += e.error2;
+    n2 += e.norm2;
+  }
+  ErrorEstimate t;
+  t.error = std::sqrt(e2);
+  t.energy_norm = std::sqrt(n2);
+  t.relative = e2 + n2 > 0.0 ? std::sqrt(e2 / (n2 + e2)) : 0.0;
+  return t;
+}
+
+}  // namespace saasgaps

@@ -1,0 +1,272 @@
+#include "solver/recovery/patch_recovery.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <optional>
+
+#include "solver/base/index_ranges.hpp"
+#include "solver/fe/element_family.hpp"
+
+namespace saasgaps {
+
+namespace {
+
+/// The patch polynomials, each with its monomials x^i y^j and the next smaller one to fall back on.
+enum class Polynomial : std::uint8_t { constant, linear, quadratic, serendipity, lagrange };
+
+constexpr int max_terms = 9;
+
+struct Monomials {
+  int count;
+  std::array<std::array<int, 2>, max_terms> power;
+  Polynomial smaller;
+};
+
+constexpr std::array<Monomials, 5> monomials{{
+    {1, {{{0, 0}}}, Polynomial::constant},
+    {3, {{{0, 0}, {1, 0}, {0, 1}}}, Polynomial::constant},
+    {6, {{{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}}}, Polynomial::linear},
+    {8, {{{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}, {2, 1}, {1, 2}}}, Polynomial::quadratic},
+    {9, {{{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}, {2, 1}, {1, 2}, {2, 2}}}, Polynomial::serendipity},
+}};
+
+const Monomials& monomials_of(Polynomial p) { return monomials[static_cast<std::size_t>(p)]; }
+
+using Basis = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, max_terms, 1>;
+using TermMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, max_terms, max_terms>;
+using Coefficients = Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::ColMajor, max_terms, 4>;
+
+/// P(x) of a polynomial.
+Basis basis(const Vec2& x, Polynomial p) {
+  const Monomials& m = monomials_of(p);
+  const std::array<double, 3> xp{1.0, x.x(), x.x() * x.x()};
+  const std::array<double, 3> yp{1.0, x.y(), x.y() * x.y()};
+  Basis P(m.count);
+  for (int k = 0; k < m.count; ++k) {
+    P[k] = xp[static_cast<std::size_t>(m.power[static_cast<std::size_t>(k)][0])] *
+           yp[static_cast<std::size_t>(m.power[static_cast<std::size_t>(k)][1])];
+  }
+  return P;
+}
+
+/// The patch polynomial of a family: the monomials of its own shape functions, complete to its order.
+Polynomial polynomial_of(ElementType type) {
+  switch (type) {
+    case ElementType::tri6: return Polynomial::quadratic;
+    case ElementType::quad8: return Polynomial::serendipity;
+    case ElementType::quad9: return Polynomial::lagrange;
+    default: return Polynomial::linear;
+  }
+}
+
+/// The polynomial two families' patch shares: the smaller (a quadratic for quad8 with quad9).
+Polynomial common(Polynomial a, Polynomial b) {
+  if (a == b) return a;
+  const auto rank = [](Polynomial p) { return monomials_of(p).count; };
+  const Polynomial low = rank(a) < rank(b) ? a : b;
+  const Polynomial high = low == a ? b : a;
+  // serendipity and lagrange share the serendipity terms; tri6's quadratic is within both.
+  if (low == Polynomial::serendipity && high == Polynomial::lagrange) return low;
+  return low == Polynomial::linear || low == Polynomial::constant ? low : Polynomial::quadratic;
+}
+
+/// One patch's polynomial: value(x) = c^T P((x - centre) / scale).
+struct Fit {
+  Vec2 centre = Vec2::Zero();
+  double scale = 1.0;
+  bool made = false;  ///< false: no patch (the node is no corner in this material)
+  Polynomial polynomial = Polynomial::constant;
+  Coefficients c;
+
+  [[nodiscard]] Vec4 at(const Vec2& x) const {
+    return c.transpose() * basis((x - centre) / scale, polynomial);
+  }
+};
+
+/// Node -> solid elements incidence: element index and the node's local index in it.
+struct Incidence {
+  std::vector<std::uint32_t> first;
+  std::vector<std::uint32_t> element;
+  std::vector<std::uint8_t> local;
+};
+
+Incidence incidence(const Model& model) {
+  Incidence in;
+  in.first.assign(model.nodes.size() + 1, 0);
+  for (const Element& el : model.elements) {
+    for (int a = 0; a < el.node_count; ++a) in.first[static_cast<std::size_t>(el.nodes[a]) + 1] += 1;
+  }
+  for (std::size_t n = 0; n < model.nodes.size(); ++n) in.first[n + 1] += in.first[n];
+  in.element.resize(in.first.back());
+  in.local.resize(in.first.back());
+  std::vector<std::uint32_t> next(in.first.begin(), in.first.end() - 1);
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const Element& el = model.elements[e];
+    for (int a = 0; a < el.node_count; ++a) {
+      const std::uint32_t k = next[static_cast<std::size_t>(el.nodes[a])]++;
+      in.element[k] = static_cast<std::uint32_t>(e);
+      in.local[k] = static_cast<std::uint8_t>(a);
+    }
+  }
+  return in;
+}
+
+/// Least squares with the highest polynomial the points determine (see the header).
+Fit fit_patch(const Vec2& centre, Polynomial most, std::span<const SamplingPoint* const> points) {
+  Fit f;
+  f.centre = centre;
+  double scale = 0.0;
+  for (const SamplingPoint* p : points) scale = std::max(scale, (p->x - centre).norm());
+  f.scale = scale > 0.0 ? scale : 1.0;
+  if (points.empty()) return f;
+  f.made = true;
+  for (Polynomial poly = most;; poly = monomials_of(poly).smaller) {
+    const int terms = monomials_of(poly).count;
+    if (static_cast<int>(points.size()) < terms) continue;
+    TermMatrix A = TermMatrix::Zero(terms, terms);
+    Coefficients b = Coefficients::Zero(terms, 4);
+    for (const SamplingPoint* p : points) {
+      const Basis P = basis((p->x - centre) / f.scale, poly);
+      A.noalias() += P * P.transpose();
+      b.noalias() += P * p->value.transpose();
+    }
+    f.polynomial = poly;
+    if (terms == 1) {
+      f.c = b / A(0, 0);
+      return f;
+    }
+    Eigen::ColPivHouseholderQR<TermMatrix> qr(A);
+    qr.setThreshold(1e-10);
+    if (qr.rank() < terms) continue;
+    f.c = qr.solve(b);
+    return f;
+  }
+}
+
+}  // namespace
+
+std::array<Vec4, max_element_nodes> element_nodal_values(const Model& model, const RecoveredField& field, std::size_t e) {
+  const Element& el = model.elements[e];
+  std::array<Vec4, max_element_nodes> out{};
+  for (int a = 0; a < el.node_count; ++a) {
+    out[static_cast<std::size_t>(a)] = field.at(static_cast<std::size_t>(el.nodes[a]), el.material);
+  }
+  return out;
+}
+
+RecoveredField recover_field(const Model& model, std::span<const ElementSamples> samples) {
+  assert(samples.size() == model.elements.size());
+  const std::size_t node_count = model.nodes.size();
+  const Incidence in = incidence(model);
+
+  // The sides: the distinct materials of each node's elements, in increasing order.
+  RecoveredField f;
+  f.first.assign(node_count + 1, 0);
+  for (std::size_t n = 0; n < node_count; ++n) {
+    std::array<int, 16> seen{};
+    int count = 0;
+    for (std::uint32_t k = in.first[n]; k < in.first[n + 1]; ++k) {
+      const int m = model.elements[in.element[k]].material;
+      if (std::find(seen.begin(), seen.begin() + count, m) == seen.begin() + count) {
+        if (count < static_cast<int>(seen.size())) seen[static_cast<std::size_t>(count++)] = m;
+      }
+    }
+    std::sort(seen.begin(), seen.begin() + count);
+    for (int s = 0; s < count; ++s) f.material.push_back(seen[static_cast<std::size_t>(s)]);
+    f.first[n + 1] = static_cast<std::uint32_t>(f.material.size());
+  }
+  const std::size_t side_count = f.material.size();
+  f.value.assign(side_count, Vec4::Zero());
+
+  // Pass 1, per corner side: its patch's fit and whether it is interior to its material's region.
+  std::vector<Fit> fits(side_count);
+  std::vector<std::uint8_t> interior(side_count, 0);
+  for_each_range(node_count, [&](std::size_t begin, std::size_t end, unsigned) {
+    std::vector<const SamplingPoint*> points;
+    std::vector<int> neighbours;
+    for (std::size_t n = begin; n < end; ++n) {
+      const Vec2 x(model.nodes[n].r, model.nodes[n].z);
+      for (std::uint32_t s = f.first[n]; s < f.first[n + 1]; ++s) {
+        const int m = f.material[s];
+        points.clear();
+        neighbours.clear();
+        std::optional<Polynomial> poly;
+        for (std::uint32_t k = in.first[n]; k < in.first[n + 1]; ++k) {
+          const Element& el = model.elements[in.element[k]];
+          const ElementFamily& fam = family(el.type);
+          const int a = in.local[k];
+          if (el.material != m || a >= fam.corner_count) continue;
+          poly = poly ? common(*poly, polynomial_of(el.type)) : polynomial_of(el.type);
+          neighbours.push_back(el.nodes[(a + 1) % fam.corner_count]);
+          neighbours.push_back(el.nodes[(a + fam.corner_count - 1) % fam.corner_count]);
+          const ElementSamples& es = samples[in.element[k]];
+          for (int p = 0; p < es.count; ++p) points.push_back(&es.point[static_cast<std::size_t>(p)]);
+        }
+        if (neighbours.empty()) continue;  // only a mid-side or centre node in this material
+        // Interior: every edge at n (to a neighbouring corner) is shared by exactly two elements.
+        std::sort(neighbours.begin(), neighbours.end());
+        bool closed = true;
+        for (std::size_t i = 0; i < neighbours.size() && closed;) {
+          std::size_t j = i;
+          while (j < neighbours.size() && neighbours[j] == neighbours[i]) ++j;
+          closed = j - i == 2;
+          i = j;
+        }
+        interior[s] = closed ? 1 : 0;
+        fits[s] = fit_patch(x, *poly, points);
+      }
+    }
+  });
+
+  // Pass 2, per side: the value from the patches that reach it (see the header), pulled so that
+  // each side is written by one thread.
+  for_each_range(node_count, [&](std::size_t begin, std::size_t end, unsigned) {
+    std::vector<std::uint32_t> reached;
+    for (std::size_t n = begin; n < end; ++n) {
+      const Vec2 x(model.nodes[n].r, model.nodes[n].z);
+      for (std::uint32_t s = f.first[n]; s < f.first[n + 1]; ++s) {
+        if (interior[s] != 0) {
+          f.value[s] = fits[s].at(x);
+          continue;
+        }
+        const int m = f.material[s];
+        // The corner sides of material m whose patches hold node n: the corners of n's elements in m.
+        reached.clear();
+        if (fits[s].made) reached.push_back(s);
+        for (std::uint32_t k = in.first[n]; k < in.first[n + 1]; ++k) {
+          const Element& el = model.elements[in.element[k]];
+          if (el.material != m) continue;
+          const int corners = family(el.type).corner_count;
+          for (int c = 0; c < corners; ++c) {
+            const auto node = static_cast<std::size_t>(el.nodes[c]);
+            if (node == n) continue;
+            const int cs = f.side(node, m);
+            if (std::find(reached.begin(), reached.end(), static_cast<std::uint32_t>(cs)) == reached.end()) {
+              reached.push_back(static_cast<std::uint32_t>(cs));
+            }
+          }
+        }
+        Vec4 sum = Vec4::Zero();
+        int count = 0;
+        for (const std::uint32_t c : reached) {
+          if (interior[c] != 0) {
+            sum += fits[c].at(x);
+            ++count;
+          }
+        }
+        if (count == 0) {
+          for (const std::uint32_t c : reached) {
+            sum += fits[c].at(x);
+            ++count;
+          }
+        }
+        f.value[s] = sum / std::max(count, 1);
+      }
+    }
+  });
+  return f;
+}
+
+}  // namespace saasgaps

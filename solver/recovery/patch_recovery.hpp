@@ -1,0 +1,48 @@
+#pragma once
+/// Superconvergent patch recovery (Zienkiewicz and Zhu 1992, "The superconvergent patch recovery
+/// and a posteriori error estimates", IJNME 33): a continuous nodal field from values sampled at
+/// the elements' superconvergent points (sampling_points.hpp).
+///
+/// Patches are taken per material: the patch of corner node n in material m is the elements of
+/// material m that have n as a corner. On each patch a polynomial p(x) = P(x) a with the monomials
+/// of the patch's shape functions is fitted by least squares to the sampled values, in coordinates
+/// centred on n and scaled by the patch's size (minimise sum_points |P(x_k) a - value_k|^2), as
+/// Zienkiewicz and Zhu prescribe:
+///   saas, tri3, quad4i:  P = [1, x, y];
+///   tri6:                P = [1, x, y, x^2, x y, y^2];
+///   quad8:               the same and x^2 y, x y^2;   quad9: and x^2 y^2
+/// (a patch of several families takes the polynomial they share: linear with a linear element in
+/// it, else the complete quadratic, or quad8's with quad9). A patch with fewer points than terms, or
+/// whose points do not determine the terms (rank below the count, relative pivot 1e-10), is fitted
+/// with the next smaller polynomial (quad9's, quad8's, quadratic, linear, constant: the mean).
+///
+/// Which patch gives which node its value (the method's rules):
+///  - a corner interior to its material region (every edge of the patch at n is shared by two of
+///    its elements) takes its own patch's p(x_n);
+///  - every other node of a patch whose centre is interior (the region's boundary corners, mid-side
+///    and centre nodes) takes the mean of p(x_node) over the interior patches it belongs to: boundary
+///    nodes from interior patches, mid-side nodes from the patches of their edge's corners;
+///  - a node that no interior patch reaches (a region one element thick, a lone element) takes the
+///    mean over the boundary patches it belongs to, its own included.
+///
+/// Each side of a material interface is recovered on its own: a node where materials meet holds
+/// one value per material (a "side"). One pass over the patches, each fitted once, in parallel:
+/// O(nodes) time and memory.
+
+#include <span>
+#include <vector>
+
+#include "solver/model/model.hpp"
+#include "solver/state/recovered_field.hpp"
+#include "solver/recovery/sampling_points.hpp"
+
+namespace saasgaps {
+
+/// Recovers a field from the samples of every solid element (one ElementSamples per
+/// Model::elements entry).
+RecoveredField recover_field(const Model& model, std::span<const ElementSamples> samples);
+
+/// The recovered field at element e's nodes (its material's side at each), in the element's node order.
+std::array<Vec4, max_element_nodes> element_nodal_values(const Model& model, const RecoveredField& field, std::size_t e);
+
+}  // namespace saasgaps
