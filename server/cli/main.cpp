@@ -14,6 +14,7 @@
 #include "cli/commands/plot_command.hpp"
 #include "cli/commands/serve_command.hpp"
 #include "cli/commands/solve_command.hpp"
+#include "cli/commands/study_command.hpp"
 #include "cli/commands/validate_command.hpp"
 #include "cli/commands/worker_command.hpp"
 #include "cli/common/read_card_options.hpp"
@@ -45,6 +46,19 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--cache", solve.cache_dir,
                         "Directory keeping symbolic analyses (fill-reducing ordering and supernodes) between "
                         "runs: a mesh solved before skips its analysis (created if missing)");
+
+  saasgaps::cli::StudyOptions study;
+  CLI::App* study_cmd = app.add_subcommand(
+      "study", "Solve one model over many parameter values; outputs per point as JSON and CSV (docs/studies.md)");
+  study_cmd->add_option("study", study.study_path, "Study document (JSON)")->required();
+  study_cmd->add_option("-o,--output", study.result_path, "Study result document (the CSV goes beside it)")->required();
+  study_cmd->add_option("--csv", study.csv_path, "The CSV of parameters and outputs (default: beside the result, .csv)");
+  study_cmd->add_option("--workers", study.workers, "Points solved at once")->check(CLI::Range(1, 64))->capture_default_str();
+  study_cmd->add_option("--max-points", study.max_points, "Most points a study may have (exit 2 beyond)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
+      ->capture_default_str();
+  study_cmd->add_flag("--no-cache", study.no_cache, "Solve every point afresh, ignoring and not filling $SAASGAPS_CACHE");
+  study_cmd->add_flag("-q,--quiet", study.quiet, "No line per finished point");
 
   std::string validate_path;
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check a model and print every error with its JSON Pointer");
@@ -178,6 +192,7 @@ int main(int argc, char** argv) {
   return saasgaps::cli::run_command([&] {
     if (const std::optional<int> code = client.run()) return *code;
     if (solve_cmd->parsed()) return saasgaps::cli::run_solve(solve);
+    if (study_cmd->parsed()) return saasgaps::cli::run_study(study);
     if (validate_cmd->parsed()) return saasgaps::cli::run_validate(validate_path);
     if (import_cmd->parsed()) return saasgaps::cli::run_import(import);
     if (serve_cmd->parsed()) return saasgaps::cli::run_serve(serve);
@@ -185,5 +200,5 @@ int main(int argc, char** argv) {
     if (worker_cmd->parsed()) return saasgaps::cli::run_worker_command(worker);
     if (vtu_cmd->parsed()) return saasgaps::cli::run_export_vtu(vtu);
     return saasgaps::cli::exit_code::failure;
-  }, import_cmd->parsed() ? "assembly" : "model");
+  }, import_cmd->parsed() ? "assembly" : study_cmd->parsed() ? "study" : "model");
 }

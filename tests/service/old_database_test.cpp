@@ -161,6 +161,8 @@ TEST_F(OldDatabase, MigratesAndItsInterruptedJobResumesFromTheOldState) {
   }
   // Migrated to the thermal rows' table: a model without thermal has none.
   EXPECT_TRUE(store.thermal_rows(1, 0).empty());
+  // Migrated to the result cache: the old job was submitted without a cache key, so it answers none.
+  EXPECT_EQ(store.cache_entries(), 0);
   // The latest state is stored in the new encoding, and decodes to the final iteration.
   service::Connection c(path.string());
   service::Statement q = c.prepare("SELECT state FROM states WHERE job_id = 1 ORDER BY iteration DESC LIMIT 1");

@@ -17,6 +17,7 @@
 #include "service/http/request_hooks.hpp"
 #include "service/http/worker_api.hpp"
 #include "service/ops/log.hpp"
+#include "service/store/result_cache.hpp"
 #include "web/web_assets.hpp"
 
 namespace saasgaps::service {
@@ -87,10 +88,28 @@ void HttpApi::submit(const httplib::Request& req, httplib::Response& res) {
 void HttpApi::enqueue(const std::string& body, const Model& model, const httplib::Request& req,
                       httplib::Response& res, std::shared_ptr<const ParsedModel> parsed) {
   io::require_restrained(model);
+  // The result cache (docs/studies.md): a model solved before is answered at once by the job that
+  // solved it (200, `cached: true`); ?cache=off solves it afresh (and its result answers from then on).
+  const std::string cache = req.has_param("cache") ? req.get_param_value("cache") : "on";
+  if (cache != "on" && cache != "off") {
+    throw HttpError(400, "Bad Request", "query parameter cache must be on or off; got \"" + cache + "\"");
+  }
+  const std::optional<ModelKey> cache_key = model_key(std::string_view(body));
+  if (cache_key && cache == "on") {
+    if (const std::optional<std::int64_t> solved = find_cached(store_, *cache_key)) {
+      json view = job_json(store_.get(*solved));
+      view["cached"] = true;
+      log_info("job_cached", {{"job", *solved}, {"request_id", res.get_header_value("X-Request-Id")}});
+      res.set_header("Location", "/v1/jobs/" + std::to_string(*solved));
+      send_json(res, 200, view);
+      return;
+    }
+  }
   std::optional<std::string> key;
   if (req.has_header("Idempotency-Key")) key = req.get_header_value("Idempotency-Key");
   const JobStore::Submitted submitted =
-      store_.submit(body, model.title, model.solver.max_iterations, key, body_digest(body));
+      store_.submit(body, model.title, model.solver.max_iterations, key, body_digest(body),
+                    cache_key ? std::optional<std::string>(cache_key->key) : std::nullopt);
   if (submitted.replayed) res.set_header("Idempotent-Replayed", "true");
   if (!submitted.replayed) {
     // Before the workers are woken: the job's worker takes the model rather than read it again.

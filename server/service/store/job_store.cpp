@@ -16,10 +16,10 @@ using namespace detail;
 
 JobStore::Submitted JobStore::submit(const std::string& model, const std::string& title, int max_iterations,
                                      const std::optional<std::string>& idempotency_key,
-                                     const std::string& request_digest) {
+                                     const std::string& request_digest, const std::optional<std::string>& cache_key) {
   require_writable();
   try {
-    return insert_job(model, title, max_iterations, idempotency_key, request_digest);
+    return insert_job(model, title, max_iterations, idempotency_key, request_digest, cache_key);
   } catch (const StoreError& e) {
     note_failure(e);
     throw;
@@ -28,7 +28,8 @@ JobStore::Submitted JobStore::submit(const std::string& model, const std::string
 
 JobStore::Submitted JobStore::insert_job(const std::string& model, const std::string& title, int max_iterations,
                                          const std::optional<std::string>& idempotency_key,
-                                         const std::string& request_digest) {
+                                         const std::string& request_digest,
+                                         const std::optional<std::string>& cache_key) {
   auto db = pool_->lease();
   WriteTransaction tx(*db);
   if (idempotency_key) {
@@ -45,8 +46,8 @@ JobStore::Submitted JobStore::insert_job(const std::string& model, const std::st
   const std::string now = utc_now();
   const char* state = to_string(*find_transition(std::nullopt, JobAction::submit)->to);
   db->prepare(
-        "INSERT INTO jobs (state, title, created_at, updated_at, max_iterations, idempotency_key, request_digest)"
-        " VALUES (?, ?, ?, ?, ?, ?, ?)")
+        "INSERT INTO jobs (state, title, created_at, updated_at, max_iterations, idempotency_key, request_digest,"
+        " cache_key) VALUES (?, ?, ?, ?, ?, ?, ?, ?)")
       .bind(1, state)
       .bind(2, title)
       .bind(3, now)
@@ -54,6 +55,7 @@ JobStore::Submitted JobStore::insert_job(const std::string& model, const std::st
       .bind(5, max_iterations)
       .bind(6, idempotency_key)
       .bind(7, request_digest)
+      .bind(8, cache_key)
       .run();
   const std::int64_t id = db->last_insert_id();
   db->prepare("INSERT INTO models (job_id, document) VALUES (?, ?)").bind(1, id).bind(2, model).run();
@@ -174,6 +176,19 @@ void JobStore::finish(std::int64_t id, JobState state, const std::optional<std::
         .bind(1, lease ? std::optional<std::string>(spent_lease(lease->secret, finish_digest)) : std::nullopt)
         .bind(2, id)
         .run();
+    const bool read_card_changed =
+        job.settings.tensile_schedule || job.settings.max_iterations || job.settings.extrapolation_factor;
+    if (outcome == JobState::converged && result && !read_card_changed) {
+      // A converged job answers its model's cache key from now on (the newest one, when the key was
+      // solved again with ?cache=off), unless a resume changed its READ card: then its result is
+      // not its model's alone.
+      db->prepare(
+            "INSERT OR REPLACE INTO result_cache (cache_key, job_id, created_at)"
+            " SELECT cache_key, id, ? FROM jobs WHERE id = ? AND cache_key IS NOT NULL")
+          .bind(1, utc_now())
+          .bind(2, id)
+          .run();
+    }
     change_state(*db, id, outcome, message, error);
     tx.commit();
   } catch (const StoreError& e) {
@@ -181,6 +196,23 @@ void JobStore::finish(std::int64_t id, JobState state, const std::optional<std::
     if (e.no_space() && attempt > 0) hand_on(id, attempt, e);
     throw;
   }
+}
+
+std::optional<std::int64_t> JobStore::cached_job(const std::string& cache_key) {
+  auto db = pool_->lease();
+  Statement q = db->prepare(
+      "SELECT c.job_id FROM result_cache c JOIN jobs j ON j.id = c.job_id JOIN results r ON r.job_id = c.job_id"
+      " WHERE c.cache_key = ? AND j.state = 'converged'");
+  q.bind(1, cache_key);
+  if (!q.step()) return std::nullopt;
+  return q.integer(0);
+}
+
+std::int64_t JobStore::cache_entries() {
+  auto db = pool_->lease();
+  Statement q = db->prepare("SELECT count(*) FROM result_cache");
+  q.step();
+  return q.integer(0);
 }
 
 bool JobStore::finish_allowed(std::int64_t id, const Lease& lease, const std::string& finish_digest) {

@@ -122,9 +122,19 @@ class JobStore {
     bool replayed = false;  ///< an earlier request with the same Idempotency-Key made this job
   };
   /// Queues a validated model. With an idempotency key seen before: the same request returns its
-  /// job (replayed), a different request under the same key is a JobConflict.
+  /// job (replayed), a different request under the same key is a JobConflict. `cache_key`
+  /// (io/json/canonical_json.hpp): when the job converges, it answers that key from then on.
   Submitted submit(const std::string& model, const std::string& title, int max_iterations,
-                   const std::optional<std::string>& idempotency_key, const std::string& request_digest);
+                   const std::optional<std::string>& idempotency_key, const std::string& request_digest,
+                   const std::optional<std::string>& cache_key = std::nullopt);
+
+  /// The result cache (docs/studies.md): the converged job whose model has this cache key, if any.
+  /// An entry is written by finish() for a converged job submitted with a key and never resumed
+  /// with READ-card changes (they change the result without changing the model), replacing an
+  /// older entry of the key; it is deleted with its job (remove, retention).
+  [[nodiscard]] std::optional<std::int64_t> cached_job(const std::string& cache_key);
+  /// Entries in the cache (the metrics' gauge).
+  [[nodiscard]] std::int64_t cache_entries();
 
   [[nodiscard]] JobRecord get(std::int64_t id);
   struct Page {
@@ -275,7 +285,8 @@ class JobStore {
   /// Records the interruptions held in memory; StoreError when it cannot.
   void record_handed_on();
   Submitted insert_job(const std::string& model, const std::string& title, int max_iterations,
-                       const std::optional<std::string>& idempotency_key, const std::string& request_digest);
+                       const std::optional<std::string>& idempotency_key, const std::string& request_digest,
+                       const std::optional<std::string>& cache_key);
   /// The writes of record_iteration, inside its transaction.
   static void write_iteration(Connection& db, std::int64_t id, int iteration, const std::string& row,
                               const std::vector<std::uint8_t>& state, const std::optional<CommitTime>& previous);

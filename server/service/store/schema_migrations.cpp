@@ -79,6 +79,18 @@ extern const std::vector<const char*> migrations = {
       PRIMARY KEY (job_id, row_index)
     ) WITHOUT ROWID;
     )sql",
+    // 5: the result cache (docs/studies.md): a job's cache key (the canonical form of its model and
+    // the solver's result_version), and the converged job that answers each key. An entry goes with
+    // its job (ON DELETE CASCADE: a delete or the retention never leaves an entry without its result).
+    R"sql(
+    ALTER TABLE jobs ADD COLUMN cache_key TEXT;
+    CREATE TABLE result_cache (
+      cache_key TEXT PRIMARY KEY,
+      job_id INTEGER NOT NULL REFERENCES jobs(id) ON DELETE CASCADE,
+      created_at TEXT NOT NULL
+    );
+    CREATE INDEX result_cache_by_job ON result_cache(job_id);
+    )sql",
 };
 
 }  // namespace detail

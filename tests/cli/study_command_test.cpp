@@ -1,0 +1,171 @@
+// `saasgaps study` (docs/studies.md): a grid study of Lame's thick cylinder under pressure p and
+// modulus E, whose largest radial displacement scales exactly as p / E and meets Lame's; the same
+// study again answered from the cache file without solving (the study result's `solved` counter);
+// a point with an invalid value failing alone; a point that differs from a cached one in the tenth
+// significant digit of one value solved afresh; a bad study refused with its pointers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "cli/command_fixture.hpp"
+
+namespace saasgaps::testing {
+namespace {
+
+using nlohmann::json;
+
+constexpr double a = 1.0, b = 2.0, nu = 0.3;
+constexpr int radial = 8;
+
+/// An axisymmetric slice of the cylinder a..b, one element high, held in z (plane strain along z),
+/// under an internal pressure: node (i, j) has id 1 + i + (radial + 1) j.
+json cylinder_model() {
+  const double h = (b - a) / radial;
+  json nodes = json::array(), elements = json::array(), constraints = json::array();
+  const auto id = [](int i, int j) { return 1 + i + (radial + 1) * j; };
+  for (int j = 0; j < 2; ++j) {
+    for (int i = 0; i <= radial; ++i) {
+      nodes.push_back({{"id", id(i, j)}, {"r", a + i * h}, {"z", j * h}});
+      constraints.push_back({{"node", id(i, j)}, {"z", 0.0}});
+    }
+  }
+  for (int i = 0; i < radial; ++i) {
+    elements.push_back({{"id", i + 1}, {"nodes", {id(i, 0), id(i + 1, 0), id(i + 1, 1), id(i, 1)}}, {"material", 1}});
+  }
+  return {{"schema_version", 1},
+          {"title", "Lame thick cylinder"},
+          {"analysis", {{"type", "axisymmetric"}}},
+          {"nodes", nodes},
+          {"materials", {{{"id", 1}, {"elastic", "isotropic"}, {"table", {{{"T", 0.0}, {"E", 30.0e6}, {"nu", nu}, {"alpha", 0.0}}}}}}},
+          {"elements", elements},
+          {"constraints", constraints},
+          {"loads", {{"pressures", {{{"nodes", {id(0, 1), id(0, 0)}}, {"normal", 1000.0}}}}}}};
+}
+
+/// Lame's radial displacement of the bore in plane strain: u(a) = (1 + nu)/E [(1 - 2 nu) A a + B / a],
+/// A = p a^2 / (b^2 - a^2), B = A b^2.
+double lame_bore_displacement(double p, double E) {
+  const double A = p * a * a / (b * b - a * a), B = A * b * b;
+  return (1.0 + nu) / E * ((1.0 - 2.0 * nu) * A * a + B / a);
+}
+
+json study(const json& p_values, const json& e_values, const char* sampling = "grid") {
+  return {{"schema_version", 1},
+          {"title", "thick cylinder, p and E"},
+          {"model", cylinder_model()},
+          {"parameters",
+           {{{"name", "p"}, {"pointer", "/loads/pressures/0/normal"}, {"values", p_values}},
+            {{"name", "E"}, {"pointer", "/materials/0/table/0/E"}, {"values", e_values}}}},
+          {"sampling", sampling},
+          {"outputs", {{{"name", "u_max"}, {"of", "nodes.u_r"}, {"reduce", "max"}},
+                       {{"name", "fz"}, {"of", "reaction_sum.fz"}, {"reduce", "sum"}}}}};
+}
+
+class StudyCommand : public CommandTest {
+ protected:
+  [[nodiscard]] Outcome study_command(const std::string& name, bool cached = true) const {
+    return run_captured((cached ? "SAASGAPS_CACHE=" + dir_.string() + " " : std::string()) + SAASGAPS_BINARY + " study " +
+                            path(name + ".json") + " -o " + path(name + "-result.json") + " --workers 2",
+                        path("stdout.txt"), path("stderr.txt"));
+  }
+  json run_cached(const json& doc, int expected_exit, const std::string& name = "study") {
+    std::ofstream(path(name + ".json")) << doc.dump(1);
+    const Outcome out = study_command(name);
+    EXPECT_EQ(out.exit_code, expected_exit) << out.err;
+    return json_of(path(name + "-result.json"));
+  }
+};
+
+TEST_F(StudyCommand, ThickCylinderScalesAsPOverEMeetsLameAndIsServedFromTheCacheTheSecondTime) {
+  const json doc = study({1000.0, 2500.0, 4000.0}, {10.0e6, 30.0e6});
+  const json first = run_cached(doc, 0);
+  ASSERT_EQ(first["points"].size(), 6u);
+  EXPECT_EQ(first["status"], "converged");
+  EXPECT_EQ(first["solved"], 6);
+  EXPECT_EQ(first["cached"], 0);
+  // u_max E / p is one number for every point (linear elasticity: exact up to round-off), and
+  // u_max meets Lame's bore displacement.
+  double reference = 0.0, worst_lame = 0.0;
+  for (const json& point : first["points"]) {
+    const double p = point["parameters"]["p"], E = point["parameters"]["E"], u = point["outputs"]["u_max"];
+    EXPECT_EQ(point["status"], "converged");
+    EXPECT_FALSE(point["cached"].get<bool>());
+    const double scaled = u * E / p;
+    if (reference == 0.0) reference = scaled;
+    EXPECT_NEAR(scaled, reference, 1e-9 * reference) << point.dump();
+    worst_lame = std::max(worst_lame, std::fabs(u / lame_bore_displacement(p, E) - 1.0));
+  }
+  std::cout << "largest relative difference from Lame's bore displacement: " << worst_lame << "\n";
+  EXPECT_LT(worst_lame, 5e-4);  // observed 3.8e-4 with 8 elements through the wall
+  EXPECT_TRUE(std::filesystem::exists(path("study-result.csv")));
+  EXPECT_EQ(read(path("study-result.csv")).substr(0, 34), "index,p,E,status,cached,job,u_max,");
+
+  // Again: every point from the cache, nothing solved, the same numbers, each point's job the
+  // entry its first solve stored.
+  const json second = run_cached(doc, 0);
+  EXPECT_EQ(second["solved"], 0);
+  EXPECT_EQ(second["cached"], 6);
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_TRUE(second["points"][i]["cached"].get<bool>());
+    EXPECT_EQ(second["points"][i]["job"], first["points"][i]["job"]);
+    EXPECT_EQ(second["points"][i]["outputs"], first["points"][i]["outputs"]);
+  }
+
+  // The same study written differently (E as 1e7 and 3.0e7, key order) is the same models: cached.
+  json respelled = json::parse(doc.dump());
+  respelled["parameters"][1]["values"] = json::parse("[1e7, 3.0e7]");
+  EXPECT_EQ(run_cached(respelled, 0, "respelled")["solved"], 0);
+
+  // A pressure differing from a cached one in the tenth significant digit is another model: solved.
+  const json tenth = run_cached(study({1000.000001, 2500.0}, {10.0e6}), 0, "tenth");
+  EXPECT_EQ(tenth["solved"], 1);
+  EXPECT_FALSE(tenth["points"][0]["cached"].get<bool>());
+  EXPECT_TRUE(tenth["points"][1]["cached"].get<bool>());
+
+  // One point with an invalid value fails alone, with its parameter and pointer; the others run.
+  const json invalid = run_cached(study({1000.0, 2500.0, 4000.0}, {10.0e6, -1.0, 30.0e6}, "zip"), 3, "invalid");
+  EXPECT_EQ(invalid["status"], "partial");
+  EXPECT_EQ(invalid["converged"], 2);
+  EXPECT_EQ(invalid["points"][1]["status"], "failed");
+  EXPECT_NE(invalid["points"][1]["message"].get<std::string>().find(
+                "parameter \"E\" = -1.0 (/parameters/1/values/1): /materials/0/table/0/E: E = -1.0 is out of range"),
+            std::string::npos)
+      << invalid["points"][1];
+  EXPECT_EQ(invalid["points"][0]["status"], "converged");
+  EXPECT_EQ(invalid["points"][2]["status"], "converged");
+  EXPECT_EQ(invalid["message"].get<std::string>().substr(0, 44), "2 of 3 points converged, 1 did not (point 1 ");
+}
+
+TEST_F(StudyCommand, WithoutACacheEveryPointIsSolvedAndNoCacheForcesIt) {
+  const json doc = study({1000.0}, {10.0e6});
+  std::ofstream(path("plain.json")) << doc.dump();
+  const Outcome plain = study_command("plain", false);
+  EXPECT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(json_of(path("plain-result.json"))["solved"], 1);
+  EXPECT_TRUE(json_of(path("plain-result.json"))["points"][0]["job"].is_null());
+  EXPECT_EQ(study_command("plain").exit_code, 0);  // fills the cache
+  const Outcome forced = run_captured("SAASGAPS_CACHE=" + dir_.string() + " " + SAASGAPS_BINARY + " study " +
+                                          path("plain.json") + " -o " + path("forced.json") + " --no-cache",
+                                      path("stdout.txt"), path("stderr.txt"));
+  EXPECT_EQ(forced.exit_code, 0) << forced.err;
+  EXPECT_EQ(json_of(path("forced.json"))["solved"], 1);
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "saasgaps-results.sqlite"));
+}
+
+TEST_F(StudyCommand, ABadStudyIsRefusedBeforeAnythingRuns) {
+  json doc = study({1000.0, "high"}, json::array());
+  doc["parameters"][0]["pointer"] = "/loads/pressures/0/normal";
+  doc["outputs"][0]["of"] = "nodes.u_theta";
+  std::ofstream(path("bad.json")) << doc.dump();
+  const Outcome out = study_command("bad");
+  EXPECT_EQ(out.exit_code, 2);
+  EXPECT_NE(out.err.find("invalid study: 3 errors"), std::string::npos) << out.err;
+  EXPECT_NE(out.err.find("/parameters/0/values/1: wrong type: the string \"high\""), std::string::npos);
+  EXPECT_NE(out.err.find("/parameters/1/values: values must not be empty"), std::string::npos);
+  EXPECT_NE(out.err.find("/outputs/0/of: unknown result field \"nodes.u_theta\""), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(path("bad-result.json")));
+}
+
+}  // namespace
+}  // namespace saasgaps::testing
