@@ -17,6 +17,20 @@
 
 namespace saasgaps {
 
+/// A point of the 4-point Gauss rule along the edge through `nodes` (2 or 3 points, from a to b) on
+/// s in [-1, 1]: the edge's shape functions N_k (linear, or the quadratic ones above), the point
+/// x = sum N_k x_k and dx/ds (the tangent times the length element), and the Gauss weight.
+struct EdgePoint {
+  std::array<double, max_edge_nodes> N{};
+  Vec2 x = Vec2::Zero();
+  Vec2 dx = Vec2::Zero();
+  double weight = 0.0;
+};
+std::array<EdgePoint, 4> edge_points(const std::array<Vec2, max_edge_nodes>& nodes, int count);
+
+/// The area weight of an edge point: weight |dx/ds| t (plane) or weight |dx/ds| 2 pi r (axisymmetric).
+double edge_area_weight(const EdgePoint& p, AnalysisType analysis, double thickness);
+
 /// Loads of a uniform traction (t_r, t_z) per unit area on the straight edge a-b.
 std::array<Vec2, 2> edge_traction_loads(const Vec2& a, const Vec2& b, const Vec2& traction,
                                         AnalysisType analysis, double thickness);

@@ -6,16 +6,17 @@
 
 namespace saasgaps {
 
-PointGeometry point_geometry(const ElementData& e, double xi, double eta) {
+PointGeometry point_geometry(ElementType type, int node_count, const std::array<Vec2, max_element_nodes>& x_nodes,
+                             double xi, double eta) {
   PointGeometry g;
-  family(e.type).shape(xi, eta, g.shape);
+  family(type).shape(xi, eta, g.shape);
   double& j11 = g.j11;
   double& j12 = g.j12;
   double& j21 = g.j21;
   double& j22 = g.j22;
-  for (int a = 0; a < e.node_count; ++a) {
+  for (int a = 0; a < node_count; ++a) {
     const auto k = static_cast<std::size_t>(a);
-    const Vec2& x = e.x[k];
+    const Vec2& x = x_nodes[k];
     j11 += x.x() * g.shape.dN_dxi[k];
     j12 += x.x() * g.shape.dN_deta[k];
     j21 += x.y() * g.shape.dN_dxi[k];
@@ -26,7 +27,7 @@ PointGeometry point_geometry(const ElementData& e, double xi, double eta) {
   g.det_J = j11 * j22 - j12 * j21;
   // (dN/dr, dN/dz) = J^-T (dN/dxi, dN/deta).
   const double inv = 1.0 / g.det_J;
-  for (int a = 0; a < e.node_count; ++a) {
+  for (int a = 0; a < node_count; ++a) {
     const auto k = static_cast<std::size_t>(a);
     g.dN_dr[k] = inv * (j22 * g.shape.dN_dxi[k] - j21 * g.shape.dN_deta[k]);
     g.dN_dz[k] = inv * (-j12 * g.shape.dN_dxi[k] + j11 * g.shape.dN_deta[k]);

@@ -34,8 +34,14 @@ struct PointGeometry {
   }
 };
 
+/// Geometry at reference point (xi, eta) of an element of `type` with nodes x (node_count of them).
+PointGeometry point_geometry(ElementType type, int node_count, const std::array<Vec2, max_element_nodes>& x, double xi,
+                             double eta);
+
 /// Geometry at reference point (xi, eta) of element e's family and nodes.
-PointGeometry point_geometry(const ElementData& e, double xi, double eta);
+inline PointGeometry point_geometry(const ElementData& e, double xi, double eta) {
+  return point_geometry(e.type, e.node_count, e.x, xi, eta);
+}
 
 /// The volume weight of a rule point: weight det J t, or weight det J 2 pi r.
 double volume_weight(const ElementData& e, const PointGeometry& g, double weight);

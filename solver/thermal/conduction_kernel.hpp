@@ -46,7 +46,7 @@ Eigen::Matrix4d conduction_matrix(const ConductionData& e);
 struct ConductionLoad {
   double source = 0.0;
   double capacity_rate = 0.0;        ///< density c / dt; 0 for a steady solve
-  std::array<double, 4> previous{};  ///< corner temperatures of the previous step (capacity_rate > 0)
+  std::array<double, max_element_nodes> previous{};  ///< node temperatures of the previous step (capacity_rate > 0)
 };
 
 /// The element block of one conduction solve, condensed to the corners:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <string>
+#include <tuple>
 
 #include "solver/assembly/element_data.hpp"
 #include "solver/base/errors.hpp"
@@ -19,8 +20,9 @@ std::vector<DofMap::Prescribed> prescribed_temperatures(const Model& model) {
   for (const ThermalBoundary& b : model.thermal->boundary) {
     if (b.kind != ThermalBoundary::Kind::temperature) continue;
     for (const ThermalEdge& e : b.edges) {
-      fixed.push_back({e.node_a, 0, b.value});
-      fixed.push_back({e.node_b, 0, b.value});
+      // From a to b, through the mid-side node of a quadratic element's edge.
+      const ElementEdge edge = element_edge(model, static_cast<std::size_t>(e.element), e.node_a, e.node_b);
+      for (int k = 0; k < edge.count; ++k) fixed.push_back({edge.node[static_cast<std::size_t>(k)], 0, b.value});
     }
   }
   return fixed;
@@ -35,12 +37,12 @@ double mean_temperature(std::span<const int> nodes, std::span<const double> T) {
   return sum / static_cast<int>(nodes.size());
 }
 
-/// Position of node n among an element's corners.
-int corner_of(const Element& el, int n) {
+/// Position of node n among an element's nodes.
+int position_of(const Element& el, int n) {
   for (int k = 0; k < el.node_count; ++k) {
     if (el.nodes[k] == n) return k;
   }
-  assert(false && "a thermal edge's node is a corner of its element");
+  assert(false && "a thermal edge's node is a node of its element");
   return 0;
 }
 
@@ -50,25 +52,8 @@ double gap_width(const Model& model, const GapElement& gap) {
   return gap_faces(corner_coordinates(model, gap.nodes, gap.node_count), gap.node_count, gap.angle_deg).separation;
 }
 
-namespace {
-
-/// The model, when its elements conduct here: the conduction kernel has the report's elements (and
-/// quad4i, conducting as the report's quadrilateral); the reader refuses quadratic ones at their
-/// pointer (io/sections/family_limits.hpp), a model built in code gets this error.
-const Model& conducting_families(const Model& model) {
-  for (const Element& el : model.elements) {
-    if (family(el.type).quadratic()) {
-      throw SolverError("heat conduction runs on 3- and 4-node elements only so far; element " + std::to_string(el.id) +
-                        " has " + std::to_string(el.node_count) + " nodes");
-    }
-  }
-  return model;
-}
-
-}  // namespace
-
 ThermalSystem::ThermalSystem(const Model& model)
-    : model_(conducting_families(model)),
+    : model_(model),
       dofs_(model, "T", prescribed_temperatures(model)),
       gaps_conduct_(conducting_gaps(model)),
       contact_(model),
@@ -98,8 +83,10 @@ ThermalSystem::ThermalSystem(const Model& model)
     radiates_ = radiates_ || b.kind == ThermalBoundary::Kind::radiation;
     for (const ThermalEdge& e : b.edges) {
       const Element& el = model.elements[static_cast<std::size_t>(e.element)];
-      edges_[static_cast<std::size_t>(e.element)].push_back(
-          {corner_of(el, e.node_a), corner_of(el, e.node_b), b.kind, b.value, b.ambient});
+      const ElementEdge nodes = element_edge(model, static_cast<std::size_t>(e.element), e.node_a, e.node_b);
+      EdgeLoad load{{-1, -1, -1}, nodes.count, b.kind, b.value, b.ambient};
+      for (int k = 0; k < nodes.count; ++k) load.at[static_cast<std::size_t>(k)] = position_of(el, nodes.node[static_cast<std::size_t>(k)]);
+      edges_[static_cast<std::size_t>(e.element)].push_back(load);
     }
   }
   if (gaps_conduct_) {
@@ -125,6 +112,17 @@ ThermalSystem::ThermalSystem(const Model& model)
       if (s > 0) outside_[s - 1].gaps.emplace_back(g, a);
     }
   }
+}
+
+IsoConductionData ThermalSystem::iso_data(const Element& el, const Conductivity& k) const {
+  IsoConductionData d;
+  d.type = el.type;
+  d.node_count = el.node_count;
+  d.x = node_coordinates(model_, el.node_span());
+  d.analysis = model_.analysis;
+  d.thickness = model_.thickness;
+  d.k = k;
+  return d;
 }
 
 ConductionData ThermalSystem::data(const Element& el, const Conductivity& k) const {
@@ -171,33 +169,67 @@ ConductionLoad ThermalSystem::load(std::size_t e, double rate, std::span<const d
   return load;
 }
 
-void ThermalSystem::add_edges(std::size_t e, const std::array<Vec2, 4>& x, std::span<const double> current,
-                              Eigen::Matrix4d& K, Eigen::Vector4d& f) const {
+namespace {
+
+/// The film of a radiating edge linearized at its mean current temperature T0 (thermal_system.hpp).
+std::pair<double, double> radiation_film(double emission, double T0, double Ta) {
+  if (T0 > 0.0) {
+    return {4.0 * emission * T0 * T0 * T0, T0 - (T0 * T0 * T0 * T0 - Ta * Ta * Ta * Ta) / (4.0 * T0 * T0 * T0)};
+  }
+  return {emission * (T0 * T0 + Ta * Ta) * (T0 + Ta), Ta};
+}
+
+}  // namespace
+
+template <class Matrix, class Vector>
+void ThermalSystem::add_edges(std::size_t e, std::span<const Vec2> x, std::span<const double> current, Matrix& K,
+                              Vector& f) const {
   const Element& el = model_.elements[e];
+  const auto T_at = [&](int local) { return current[static_cast<std::size_t>(el.nodes[static_cast<std::size_t>(local)])]; };
   for (const EdgeLoad& edge : edges_[e]) {
-    const Vec2& xa = x[edge.a];
-    const Vec2& xb = x[edge.b];
+    if (edge.count == 3) {
+      // A quadratic element's edge (a, m, b): integrated along its curve (isoparametric_conduction.hpp).
+      const std::array<Vec2, max_edge_nodes> points{x[static_cast<std::size_t>(edge.at[0])],
+                                                    x[static_cast<std::size_t>(edge.at[1])],
+                                                    x[static_cast<std::size_t>(edge.at[2])]};
+      if (edge.kind == ThermalBoundary::Kind::flux) {
+        const auto w = edge_flux_weights(points, 3, model_.analysis, model_.thickness);
+        for (std::size_t i = 0; i < 3; ++i) f[edge.at[i]] += edge.value * w[i];
+        continue;
+      }
+      double h = edge.value;
+      double ambient = edge.ambient;
+      if (edge.kind == ThermalBoundary::Kind::radiation) {
+        // The edge's mean temperature: its nodal values weighted as on a straight edge, 1/6, 4/6, 1/6.
+        const double T0 = (T_at(edge.at[0]) + 4.0 * T_at(edge.at[1]) + T_at(edge.at[2])) / 6.0;
+        std::tie(h, ambient) = radiation_film(edge.value, T0, edge.ambient);
+      }
+      const CurvedEdgeBlock film = curved_film_block(points, 3, model_.analysis, model_.thickness, h, ambient);
+      for (std::size_t i = 0; i < 3; ++i) {
+        f[edge.at[i]] += film.f[static_cast<Eigen::Index>(i)];
+        for (std::size_t j = 0; j < 3; ++j) {
+          K(edge.at[i], edge.at[j]) += film.K(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+        }
+      }
+      continue;
+    }
+    const int a = edge.at[0];
+    const int b = edge.at[1];
+    const Vec2& xa = x[static_cast<std::size_t>(a)];
+    const Vec2& xb = x[static_cast<std::size_t>(b)];
     if (edge.kind == ThermalBoundary::Kind::flux) {
       const auto w = edge_weights(xa, xb, model_.analysis, model_.thickness);
-      f[edge.a] += edge.value * w[0];
-      f[edge.b] += edge.value * w[1];
+      f[a] += edge.value * w[0];
+      f[b] += edge.value * w[1];
       continue;
     }
     double h = edge.value;
     double ambient = edge.ambient;
     if (edge.kind == ThermalBoundary::Kind::radiation) {
-      const double T0 = 0.5 * (current[static_cast<std::size_t>(el.nodes[edge.a])] +
-                               current[static_cast<std::size_t>(el.nodes[edge.b])]);
-      const double Ta = edge.ambient;
-      if (T0 > 0.0) {
-        h = 4.0 * edge.value * T0 * T0 * T0;
-        ambient = T0 - (T0 * T0 * T0 * T0 - Ta * Ta * Ta * Ta) / (4.0 * T0 * T0 * T0);
-      } else {
-        h = edge.value * (T0 * T0 + Ta * Ta) * (T0 + Ta);
-      }
+      std::tie(h, ambient) = radiation_film(edge.value, 0.5 * (T_at(a) + T_at(b)), edge.ambient);
     }
     const EdgeBlock film = film_block(xa, xb, model_.analysis, model_.thickness, h, ambient);
-    const std::array<int, 2> at{edge.a, edge.b};
+    const std::array<int, 2> at{a, b};
     for (int i = 0; i < 2; ++i) {
       f[at[i]] += film.f[i];
       for (int j = 0; j < 2; ++j) K(at[i], at[j]) += film.K(i, j);
@@ -250,7 +282,16 @@ void ThermalSystem::assemble(std::span<const Conductivity> k, double inverse_dt,
   const std::vector<double> rates = capacity_rates(inverse_dt, previous);
   if (loads != nullptr) loads->resize(model_.elements.size());
   for (std::size_t e = 0; e < model_.elements.size(); ++e) {
-    const ConductionData d = data(model_.elements[e], k[e]);
+    const Element& el = model_.elements[e];
+    if (conducts_isoparametrically(el.type)) {
+      // Its load parts are not kept: assemble_rhs computes its block whole.
+      const IsoConductionData d = iso_data(el, k[e]);
+      IsoConductionBlock block = isoparametric_conduction_block(d, load(e, rates.empty() ? 0.0 : rates[e], previous));
+      add_edges(e, d.x, current, block.K, block.f);
+      assembler_.add(e, ElementBlock::of(block.K, block.f), sink);
+      continue;
+    }
+    const ConductionData d = data(el, k[e]);
     ConductionBlock block = conduction_block(d, load(e, rates.empty() ? 0.0 : rates[e], previous));
     if (loads != nullptr) (*loads)[e] = conduction_load_parts(d, source_[e]);
     add_edges(e, d.x, current, block.K, block.f);
@@ -282,6 +323,13 @@ void ThermalSystem::assemble_rhs(std::span<const Conductivity> k, double inverse
   for (std::size_t e = 0; e < model_.elements.size(); ++e) {
     const ConductionLoad element_load = load(e, rates.empty() ? 0.0 : rates[e], previous);
     const Element& el = model_.elements[e];
+    if (conducts_isoparametrically(el.type)) {
+      const IsoConductionData d = iso_data(el, k[e]);
+      IsoConductionBlock block = isoparametric_conduction_block(d, element_load);
+      add_edges(e, d.x, {}, block.K, block.f);
+      assembler_.add_rhs(e, ElementBlock::of(block.K, block.f), rhs);
+      continue;
+    }
     if (assembler_.lifted(e)) {
       const ConductionData d = data(el, k[e]);
       ConductionBlock block = conduction_block(d, element_load);
@@ -324,9 +372,13 @@ std::vector<Vec2> ThermalSystem::fluxes(std::span<const Conductivity> k, std::sp
   q.reserve(model_.elements.size());
   for (std::size_t e = 0; e < model_.elements.size(); ++e) {
     const Element& el = model_.elements[e];
-    std::array<double, 4> t{};
-    for (int a = 0; a < el.node_count; ++a) t[a] = T[static_cast<std::size_t>(el.nodes[a])];
-    q.push_back(conduction_flux(data(el, k[e]), t));
+    std::array<double, max_element_nodes> t{};
+    for (int a = 0; a < el.node_count; ++a) t[static_cast<std::size_t>(a)] = T[static_cast<std::size_t>(el.nodes[static_cast<std::size_t>(a)])];
+    if (conducts_isoparametrically(el.type)) {
+      q.push_back(isoparametric_conduction_flux(iso_data(el, k[e]), t));
+      continue;
+    }
+    q.push_back(conduction_flux(data(el, k[e]), {t[0], t[1], t[2], t[3]}));
   }
   return q;
 }

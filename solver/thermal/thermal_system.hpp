@@ -2,7 +2,9 @@
 /// The heat conduction system of a model's `thermal` section on its mesh: one unknown T per node,
 /// the prescribed temperatures eliminated, every solid element one clique (its film edges, fluxes
 /// and source added into its own block) and, when gap elements conduct, every gap element one more
-/// (conduction_kernel.hpp gives the element formulas, Assembler the scatter).
+/// (conduction_kernel.hpp gives the report's elements' formulas, isoparametric_conduction.hpp those of
+/// tri6, quad8, quad9 and quad4i, Assembler the scatter). A boundary edge of a quadratic element
+/// carries its mid-side node: a prescribed temperature holds it, films and fluxes integrate along it.
 ///
 /// Gap elements conduct across their M axis only: a gap of conductance H (power / area /
 /// temperature) is a conduction element with k_M = H w and k_L = 0, w its width across M (the
@@ -28,6 +30,7 @@
 #include "solver/model/model.hpp"
 #include "solver/thermal/conduction_kernel.hpp"
 #include "solver/thermal/contact_conductance.hpp"
+#include "solver/thermal/isoparametric_conduction.hpp"
 
 namespace saasgaps {
 
@@ -90,10 +93,13 @@ class ThermalSystem {
   /// Gap elements in the pattern: all of model.gaps when they conduct, else none.
   [[nodiscard]] std::size_t gap_count() const { return gaps_conduct_ ? model_.gaps->elements.size() : 0; }
   [[nodiscard]] ConductionData data(const Element& el, const Conductivity& k) const;
+  [[nodiscard]] IsoConductionData iso_data(const Element& el, const Conductivity& k) const;
   [[nodiscard]] ConductionLoad load(std::size_t e, double rate, std::span<const double> previous) const;
-  /// Adds element e's flux, film and radiation edges (corners x) into K and f.
-  void add_edges(std::size_t e, const std::array<Vec2, 4>& x, std::span<const double> current, Eigen::Matrix4d& K,
-                 Eigen::Vector4d& f) const;
+  /// Adds element e's flux, film and radiation edges (node coordinates x, in the element's order)
+  /// into K and f (Matrix4d and Vector4d for the report's elements, ConductionMatrix and
+  /// ConductionVector for the others).
+  template <class Matrix, class Vector>
+  void add_edges(std::size_t e, std::span<const Vec2> x, std::span<const double> current, Matrix& K, Vector& f) const;
   [[nodiscard]] Eigen::Matrix4d gap_matrix(std::size_t g, double conductance) const;
   /// Gives every node outside the solids that nothing conducts to at these gap conductances the
   /// row T = held: a unit diagonal in values (skipped when empty) and held in rhs.
@@ -109,7 +115,8 @@ class ThermalSystem {
   std::vector<double> source_;          // per solid element: power density of its material
   std::vector<double> gap_width_;       // per gap element
   struct EdgeLoad {
-    int a = 0, b = 0;  // corner positions within the element
+    std::array<int, 3> at{-1, -1, -1};  // positions within the element of the edge's nodes, a (m) b
+    int count = 2;
     ThermalBoundary::Kind kind = ThermalBoundary::Kind::flux;
     double value = 0.0, ambient = 0.0;
   };

@@ -47,6 +47,88 @@ Grid add_grid(Model& model, int ni, int nj, const std::function<Vec2(double, dou
   return grid;
 }
 
+QuadraticGrid add_quadratic_grid(Model& model, ElementType type, int ni, int nj,
+                                 const std::function<Vec2(double, double)>& map, int material,
+                                 const std::function<Vec2(int, int)>& offset) {
+  const bool quadratic = type == ElementType::tri6 || type == ElementType::quad8 || type == ElementType::quad9;
+  const bool centres = type == ElementType::tri6 || type == ElementType::quad9;
+  QuadraticGrid grid{ni, nj, {}, {}};
+  int node_id = max_node_id(model);
+  for (int J = 0; J <= 2 * nj; ++J) {
+    for (int I = 0; I <= 2 * ni; ++I) {
+      const bool middle = I % 2 == 1 || J % 2 == 1;
+      const bool centre = I % 2 == 1 && J % 2 == 1;
+      if ((middle && !quadratic) || (centre && !centres)) {
+        grid.nodes.push_back(-1);
+        continue;
+      }
+      Vec2 x = map(static_cast<double>(I) / (2 * ni), static_cast<double>(J) / (2 * nj));
+      if (offset) x += offset(I, J);
+      grid.nodes.push_back(static_cast<int>(model.nodes.size()));
+      model.nodes.push_back({++node_id, x.x(), x.y()});
+    }
+  }
+  int element_id = max_element_id(model);
+  const auto add = [&](ElementType t, std::initializer_list<int> nodes) {
+    Element e;
+    e.id = ++element_id;
+    e.type = t;
+    e.node_count = static_cast<int>(nodes.size());
+    std::copy(nodes.begin(), nodes.end(), e.nodes.begin());
+    e.material = material;
+    model.elements.push_back(e);
+    return static_cast<int>(model.elements.size()) - 1;
+  };
+  for (int j = 0; j < nj; ++j) {
+    for (int i = 0; i < ni; ++i) {
+      const int I = 2 * i, J = 2 * j;
+      const int c0 = grid.at(I, J), c1 = grid.at(I + 2, J), c2 = grid.at(I + 2, J + 2), c3 = grid.at(I, J + 2);
+      switch (type) {
+        case ElementType::tri6:
+          grid.cells.push_back({add(type, {c0, c1, c2, grid.at(I + 1, J), grid.at(I + 2, J + 1), grid.at(I + 1, J + 1)}),
+                                add(type, {c0, c2, c3, grid.at(I + 1, J + 1), grid.at(I + 1, J + 2), grid.at(I, J + 1)})});
+          break;
+        case ElementType::quad8:
+          grid.cells.push_back({add(type, {c0, c1, c2, c3, grid.at(I + 1, J), grid.at(I + 2, J + 1), grid.at(I + 1, J + 2),
+                                           grid.at(I, J + 1)}),
+                                -1});
+          break;
+        case ElementType::quad9:
+          grid.cells.push_back({add(type, {c0, c1, c2, c3, grid.at(I + 1, J), grid.at(I + 2, J + 1), grid.at(I + 1, J + 2),
+                                           grid.at(I, J + 1), grid.at(I + 1, J + 1)}),
+                                -1});
+          break;
+        default: grid.cells.push_back({add(type, {c0, c1, c2, c3}), -1}); break;
+      }
+    }
+  }
+  return grid;
+}
+
+std::vector<ThermalEdge> quadratic_grid_side(const Model& model, const QuadraticGrid& grid, char side) {
+  std::vector<ThermalEdge> edges;
+  const bool along_i = side == 'b' || side == 't';
+  const int n = along_i ? grid.ni : grid.nj;
+  for (int k = 0; k < n; ++k) {
+    int a = 0, b = 0, cell = 0;
+    switch (side) {
+      case 'b': a = grid.at(2 * k, 0), b = grid.at(2 * k + 2, 0), cell = k; break;
+      case 't': a = grid.at(2 * k, 2 * grid.nj), b = grid.at(2 * k + 2, 2 * grid.nj), cell = k + grid.ni * (grid.nj - 1); break;
+      case 'l': a = grid.at(0, 2 * k), b = grid.at(0, 2 * k + 2), cell = grid.ni * k; break;
+      default: a = grid.at(2 * grid.ni, 2 * k), b = grid.at(2 * grid.ni, 2 * k + 2), cell = grid.ni - 1 + grid.ni * k; break;
+    }
+    for (const int e : grid.cells[static_cast<std::size_t>(cell)]) {
+      if (e < 0) continue;
+      const std::span<const int> nodes = model.elements[static_cast<std::size_t>(e)].node_span();
+      const auto corners = nodes.first(nodes.size() == 6 ? 3 : 4);
+      if (std::ranges::find(corners, a) != corners.end() && std::ranges::find(corners, b) != corners.end()) {
+        edges.push_back({e, a, b});
+      }
+    }
+  }
+  return edges;
+}
+
 void add_gap_row(Model& model, const std::vector<int>& a, const std::vector<int>& b,
                  const std::function<double(int)>& angle_of) {
   if (!model.gaps) model.gaps.emplace();

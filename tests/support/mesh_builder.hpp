@@ -1,6 +1,7 @@
 #pragma once
 /// Models built in code for tests and benchmarks: structured grids mapped onto any shape.
 
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -21,6 +22,30 @@ struct Grid {
 /// (counter-clockwise when map preserves orientation). Ids continue after the largest in use.
 Grid add_grid(Model& model, int ni, int nj, const std::function<Vec2(double, double)>& map, int material,
               double angle_deg = 0.0);
+
+/// Node indices of a structured grid of quadratic elements on half-steps: node (I, J), I = 0..2 ni,
+/// J = 0..2 nj, at map(I / (2 ni), J / (2 nj)) (so a curved map puts mid-side nodes on its curves);
+/// -1 where the family has no node (quad8's cell centres).
+struct QuadraticGrid {
+  int ni = 0;
+  int nj = 0;
+  std::vector<int> nodes;
+  /// Per cell (i + ni j): its elements (one quadrilateral, or two tri6: corners (0, 1, 2) and (0, 2, 3)
+  /// of the cell, the second -1 for quadrilaterals).
+  std::vector<std::array<int, 2>> cells;
+  [[nodiscard]] int at(int I, int J) const { return nodes[static_cast<std::size_t>(I + (2 * ni + 1) * J)]; }
+};
+
+/// Adds ni x nj cells of tri6, quad8 or quad9 (quad4i and saas: the corners only) of `material`,
+/// counter-clockwise when map preserves orientation, nodes at map(s, t) + offset(I, J) (offset: to
+/// distort a patch; zero when empty). Ids continue after the largest in use.
+QuadraticGrid add_quadratic_grid(Model& model, ElementType type, int ni, int nj,
+                                 const std::function<Vec2(double, double)>& map, int material,
+                                 const std::function<Vec2(int, int)>& offset = {});
+
+/// The element edges along a side of the grid, 'b' (J = 0), 'r' (I = 2 ni), 't' (J = 2 nj) or 'l'
+/// (I = 0), as thermal edges (element index, corner a, corner b).
+std::vector<ThermalEdge> quadratic_grid_side(const Model& model, const QuadraticGrid& grid, char side);
 
 /// A ring r0..r1 meshed on its own: `radial` x `around` quadrilaterals (grid i radial, j round).
 /// Plane analyses: the whole ring about the origin, closed round (grid row `around` is row 0, so

@@ -86,15 +86,6 @@ std::vector<InputIssue> element_family_input_issues(const Model& model) {
     }
   }
 
-  if (model.thermal) {
-    std::size_t first = curved.begin()->second.element;
-    for (const auto& [edge, c] : curved) first = std::min(first, c.element);
-    issues.push_back({pointer_append(pointer_append("/elements", first), "nodes"),
-                      element_words(model, first) +
-                          ": heat conduction (the thermal section) runs on 3- and 4-node elements only so far; "
-                          "mesh the model with tri3, saas or quad4i elements, or give the temperatures in "
-                          "loads.temperatures"});
-  }
   return issues;
 }
 

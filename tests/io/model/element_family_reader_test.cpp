@@ -1,5 +1,5 @@
 // The reader on element families: types, integrations, shapes, and what quadratic elements do not
-// carry yet (gap elements along their edges, contact surfaces, heat conduction), each an error at its
+// carry yet (gap elements along their edges, contact surfaces), each an error at its
 // JSON Pointer naming the element and the value; and the same model through the text path.
 #include <gtest/gtest.h>
 
@@ -112,11 +112,16 @@ TEST(ElementFamilyReader, AContactSurfaceOnAQuadraticElementIsNotAvailableYet) {
   expect_issue(d, "/contact/surfaces/0/edges/0", {"surface \"top\"", "[3, 4]", "element 1 (quad8)", "not available yet"});
 }
 
-TEST(ElementFamilyReader, HeatConductionOnQuadraticElementsIsNotAvailableYet) {
+TEST(ElementFamilyReader, HeatConductionOnQuadraticElementsReadsItsEdgesThroughTheirMidSideNodes) {
   json d = two_bodies();
   d["materials"][0]["table"][0]["k"] = 1.0;
-  d["thermal"] = json::parse(R"({"type": "steady", "boundary": [{"edges": [[1, 2]], "temperature": 100}]})");
-  expect_issue(d, "/elements/0/nodes", {"element 1 (quad8)", "heat conduction", "3- and 4-node"});
+  d["thermal"] = json::parse(R"({"type": "steady", "boundary": [{"edges": [[1, 2]], "temperature": 100},
+                                                               {"edges": [[3, 4]], "film": 2, "ambient": 20}]})");
+  const Model m = read_model(d);
+  ASSERT_TRUE(m.thermal);
+  ASSERT_EQ(m.thermal->boundary.size(), 2U);
+  EXPECT_EQ(m.thermal->boundary[0].edges[0].element, 0);  // the quad8's edge 1-5-2
+  EXPECT_EQ(m.thermal->boundary[1].edges[0].element, 0);
 }
 
 TEST(ElementFamilyReader, APressureEdgeMayNameItsMidSideNode) {
