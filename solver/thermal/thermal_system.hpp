@@ -78,7 +78,8 @@ class ThermalSystem {
   /// The rhs of assemble, to the last bit, without the matrix: valid while k, the capacity rates,
   /// the conductances and loads (from the assemble that filled it) are those of that assemble and
   /// no edge radiates. Elements with a nonzero prescribed temperature are computed whole (their K
-  /// lifts it), the others from their load parts with no element kernel.
+  /// lifts it), and so are tri6, quad8, quad9 and quad4i (no load parts are kept for them: their C
+  /// would be 81 numbers an element); the report's others from their load parts with no kernel.
   void assemble_rhs(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
                     std::span<const double> gap_conductance, std::span<const double> contact_conductance,
                     const std::vector<ConductionLoadParts>& loads, std::span<double> rhs) const;

@@ -113,6 +113,8 @@ void Importer::gap_elements(const json& pairs, json& elements) {
       }
       json nodes = json::array();
       for (const int n : g.nodes) nodes.push_back(tag_of(n));
+      // The model reader's findings on it (a gap along a quadratic element's edge) are the pair's.
+      origins_.add(pointer_append("/gaps/elements", elements.size()), p);
       elements.push_back({{"id", id}, {"nodes", std::move(nodes)}, {"angle", g.angle_deg}});
       ++id;
     }

@@ -22,9 +22,18 @@ void Importer::load_mesh() {
   const auto name = string(doc_, "", "mesh");
   if (!name) return;
   const auto path = resolve_file(*name, "/mesh");
+  // order: the element order a .geo is meshed with (1 or 2; absent: the .geo's own). A .msh file
+  // was meshed already: its elements keep the order they were written with.
+  static constexpr Range order_range{Bound{1.0, true}, Bound{2.0, true}, "the element order is 1 or 2"};
+  const std::optional<double> order = number(doc_, "", "order", order_range);
+  if (order && *order != std::floor(*order)) report("/order", "order is 1 or 2, got " + format_number(*order));
+  if (order && path && path->extension() == ".msh") {
+    report("/order", "order applies to a .geo file, which the import meshes; " + *name +
+                         " is a mesh already, with the order it was written with (Mesh.ElementOrder in Gmsh)");
+  }
   if (!path) return;
   try {
-    mesh_ = read_gmsh_mesh(*path);
+    mesh_ = read_gmsh_mesh(*path, order ? static_cast<int>(*order) : 0);
   } catch (const MeshTooLarge&) {
     throw;  // a limit, not a defect of the assembly: the service answers 413
   } catch (const MeshError& e) {
@@ -117,8 +126,9 @@ std::optional<std::vector<Importer::BoundaryEdge>> Importer::boundary_edges(cons
       return std::nullopt;
     }
     const MeshFace& f = mesh_.faces[static_cast<std::size_t>(owner.front())];
-    const auto k = static_cast<int>(std::find(f.nodes.begin(), f.nodes.begin() + f.count, a) - f.nodes.begin());
-    const bool along = f.nodes[static_cast<std::size_t>((k + 1) % f.count)] == b;
+    const int corners = f.corners();
+    const auto k = static_cast<int>(std::find(f.nodes.begin(), f.nodes.begin() + corners, a) - f.nodes.begin());
+    const bool along = f.nodes[static_cast<std::size_t>((k + 1) % corners)] == b;
     out.push_back(along ? BoundaryEdge{a, b, owner.front()} : BoundaryEdge{b, a, owner.front()});
   }
   return out;

@@ -17,7 +17,7 @@ namespace assembly {
 /// every problem of the document; only a document that is not an object stops at once.
 json Importer::run() {
   if (!object(doc_, "", {"schema_version", "title", "mesh", "analysis", "materials", "regions", "constraints"},
-              {"description", "units", "loads", "gaps", "thermal", "solver", "output"})) {
+              {"description", "units", "order", "loads", "gaps", "thermal", "solver", "output"})) {
     throw ModelError(std::move(issues_), "assembly");
   }
   if (const auto v = doc_.find("schema_version"); v != doc_.end()) {

@@ -31,9 +31,10 @@ MeshGroups::MeshGroups(const GmshMesh& mesh) : mesh_(mesh) {
   owners_.reserve(4 * mesh.faces.size());
   for (std::size_t e = 0; e < mesh.faces.size(); ++e) {
     const MeshFace& f = mesh.faces[e];
-    for (int k = 0; k < f.count; ++k) {
+    const int corners = f.corners();  // an edge by its end corners; a mid-side node goes with it
+    for (int k = 0; k < corners; ++k) {
       const auto [lo, hi] =
-          std::minmax(f.nodes[static_cast<std::size_t>(k)], f.nodes[static_cast<std::size_t>((k + 1) % f.count)]);
+          std::minmax(f.nodes[static_cast<std::size_t>(k)], f.nodes[static_cast<std::size_t>((k + 1) % corners)]);
       owners_.push_back({lo, hi, static_cast<int>(e)});
     }
   }
@@ -80,9 +81,15 @@ std::vector<int> MeshGroups::nodes(const PhysicalGroup& g, bool& off_mesh) const
       if (surfaces.contains(f.surface)) nodes.insert(nodes.end(), f.nodes.begin(), f.nodes.begin() + f.count);
     }
   } else if (g.dim == 1) {
-    for (const auto& [a, b] : edges(g)) {
-      nodes.push_back(a);
-      nodes.push_back(b);
+    // Every node of its line elements: a 3-node line's mid-side node too.
+    for (const int curve : g.entities) {
+      const auto it = mesh_.curves.find(curve);
+      if (it == mesh_.curves.end()) continue;
+      for (const MeshEdge& e : it->second) {
+        nodes.push_back(e.a);
+        nodes.push_back(e.b);
+        if (e.m >= 0) nodes.push_back(e.m);
+      }
     }
   } else {
     for (const int point : g.entities) {

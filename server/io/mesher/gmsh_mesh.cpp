@@ -138,7 +138,7 @@ std::string dimension_name(int dim) {
   }
 }
 
-GmshMesh read_gmsh_mesh(const fs::path& path) {
+GmshMesh read_gmsh_mesh(const fs::path& path, int order) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) {
     throw MeshError("mesh file " + path.string() + " does not exist or is not a regular file");
@@ -160,7 +160,8 @@ GmshMesh read_gmsh_mesh(const fs::path& path) {
                std::to_string(limits.max_nodes),
                std::to_string(limits.seconds),
                std::to_string(limits.memory_bytes),
-               std::to_string(limits.file_bytes)};
+               std::to_string(limits.file_bytes),
+               std::to_string(order)};
   // No environment: no locale to load (Gmsh reads numbers in the C locale), no HOME, no GMSH_*.
   spec.inherit_environment = false;
   spec.limit = std::chrono::seconds(limits.seconds);

@@ -1,8 +1,9 @@
 #pragma once
 /// A 2D mesh read through Gmsh's own C++ API (libgmsh): a `.msh` file opened, or a `.geo` file
-/// opened and meshed. Only what an assembly needs: the nodes of the surface elements, first-order
-/// triangles and quadrilaterals (counter-clockwise), the line elements of every curve, the node of
-/// every meshed point, and the physical groups by name.
+/// opened and meshed. Only what an assembly needs: the nodes of the surface elements, triangles and
+/// quadrilaterals of the first or second order (3, 4, 6, 8 or 9 nodes, counter-clockwise), the line
+/// elements of every curve (2 or 3 nodes), the node of every meshed point, and the physical groups by
+/// name.
 ///
 /// Coordinates: Gmsh x -> r, y -> z; the mesh must lie in the plane z = 0 (Gmsh's z).
 ///
@@ -26,7 +27,7 @@
 namespace saasgaps::io {
 
 /// The file is missing, is not a mesh Gmsh can read, or holds a mesh this program cannot use
-/// (higher-order or 3D elements, no surface elements, not in the plane z = 0). The message says
+/// (third-order or 3D elements, no surface elements, not in the plane z = 0). The message says
 /// which and where (node or element tag, element type name).
 class MeshError : public std::runtime_error {
  public:
@@ -55,19 +56,24 @@ MeshLimits mesh_limits();
 /// At most this many meshers run at once in a process; further reads wait for one to end.
 int concurrent_meshers();
 
-/// A first-order surface element: 3 or 4 node indices (into GmshMesh::node_tags, r, z),
-/// counter-clockwise.
+/// A surface element: 3, 4, 6, 8 or 9 node indices (into GmshMesh::node_tags, r, z), the corners
+/// counter-clockwise, then the mid-side nodes in the order of the edges, then a quad9's centre
+/// (Gmsh's order, which is the model's: docs/elements.md).
 struct MeshFace {
   std::size_t tag = 0;  ///< Gmsh element tag
   int surface = 0;      ///< tag of the Gmsh surface entity it is classified on
-  int count = 0;        ///< 3 or 4
-  std::array<int, 4> nodes{-1, -1, -1, -1};
+  int count = 0;        ///< 3, 4, 6, 8 or 9
+  std::array<int, 9> nodes{-1, -1, -1, -1, -1, -1, -1, -1, -1};
+  /// 3 for triangles, 4 for quadrilaterals.
+  [[nodiscard]] int corners() const { return count == 3 || count == 6 ? 3 : 4; }
 };
 
-/// A first-order line element of a curve: node indices in the curve's direction.
+/// A line element of a curve: its end node indices in the curve's direction, and the mid-side node
+/// of a second-order (3-node) line (-1 for a 2-node one).
 struct MeshEdge {
   int a = -1;
   int b = -1;
+  int m = -1;
 };
 
 /// A physical group: its dimension (0 point, 1 curve, 2 surface) and the entity tags it holds.
@@ -89,9 +95,12 @@ struct GmshMesh {
 };
 
 /// Opens `path` with Gmsh in the sandboxed mesher (a `.geo` is meshed in 2D with the options it
-/// sets itself) and returns the mesh. Throws MeshTooLarge beyond the limits, MeshError for
+/// sets itself) and returns the mesh. order 1 or 2 meshes a `.geo` with elements of that order
+/// whatever it sets (Mesh.ElementOrder; order 2 also Mesh.SecondOrderLinear = 0, so that mid-side
+/// nodes lie on the true curves; Mesh.SecondOrderIncomplete stays the file's: 1 for quad8, 0 for
+/// quad9); 0 leaves the file's own. Throws MeshTooLarge beyond the limits, MeshError for
 /// everything else that goes wrong (the message names the file and, for a limit, the limit).
-GmshMesh read_gmsh_mesh(const std::filesystem::path& path);
+GmshMesh read_gmsh_mesh(const std::filesystem::path& path, int order = 0);
 
 /// "dimension 1 (curve)": the name of a dimension for messages.
 std::string dimension_name(int dim);

@@ -23,8 +23,20 @@ namespace fs = std::filesystem;
 // Gmsh element types this reader accepts (gmsh.h: getElementProperties).
 constexpr int gmsh_point = 15;
 constexpr int gmsh_line = 1;
-constexpr int gmsh_triangle = 2;
-constexpr int gmsh_quadrangle = 3;
+constexpr int gmsh_line3 = 8;
+
+/// Nodes of a surface element type this reader accepts: 3-node triangle (2), 4-node quadrangle (3),
+/// 6-node triangle (9), 8-node quadrangle (16), 9-node quadrangle (10); 0 for any other.
+int surface_nodes(int type) {
+  switch (type) {
+    case 2: return 3;
+    case 3: return 4;
+    case 9: return 6;
+    case 16: return 8;
+    case 10: return 9;
+    default: return 0;
+  }
+}
 
 /// Initializes Gmsh quietly and finalizes it on every way out.
 class GmshSession {
@@ -92,10 +104,11 @@ void for_each_entity(int dim, Visit visit) {
 using TagLists = std::vector<std::vector<std::size_t>>;
 
 double twice_signed_area(const GmshMesh& m, const MeshFace& f) {
-  double twice = 0.0;  // shoelace formula
-  for (int k = 0; k < f.count; ++k) {
+  double twice = 0.0;  // shoelace formula, over the corners
+  const int corners = f.corners();
+  for (int k = 0; k < corners; ++k) {
     const auto a = static_cast<std::size_t>(f.nodes[static_cast<std::size_t>(k)]);
-    const auto b = static_cast<std::size_t>(f.nodes[static_cast<std::size_t>((k + 1) % f.count)]);
+    const auto b = static_cast<std::size_t>(f.nodes[static_cast<std::size_t>((k + 1) % corners)]);
     twice += m.r[a] * m.z[b] - m.r[b] * m.z[a];
   }
   return twice;
@@ -153,7 +166,7 @@ void throw_logged_error(const fs::path& path) {
   }
 }
 
-GmshMesh read_open_model(const fs::path& path, std::size_t max_nodes) {
+GmshMesh read_open_model(const fs::path& path, std::size_t max_nodes, int order) {
   throw_logged_error(path);
   GmshMesh mesh;
   std::vector<int> types;
@@ -173,6 +186,11 @@ GmshMesh read_open_model(const fs::path& path, std::size_t max_nodes) {
                          " nodes (estimated from the mesh of its curves), more than the limit of " +
                          std::to_string(max_nodes) + " nodes");
     }
+    if (order == 1 || order == 2) {
+      // After the file's own options: the assembly's order wins. Second-order nodes on the curves.
+      gmsh::option::setNumber("Mesh.ElementOrder", order);
+      if (order == 2) gmsh::option::setNumber("Mesh.SecondOrderLinear", 0);
+    }
     gmsh::model::mesh::generate(2);
     throw_logged_error(path);
     gmsh::model::mesh::getElementTypes(types, 2);
@@ -182,10 +200,10 @@ GmshMesh read_open_model(const fs::path& path, std::size_t max_nodes) {
                     "give the .geo file, which is meshed here)");
   }
   for (const int type : types) {
-    if (type != gmsh_triangle && type != gmsh_quadrangle) {
+    if (surface_nodes(type) == 0) {
       throw MeshError(path.string() + " holds surface elements of type " + element_type_name(type) +
-                      "; only first-order triangles (3 nodes) and quadrilaterals (4 nodes) can be used: mesh "
-                      "with Mesh.ElementOrder = 1");
+                      "; only triangles of 3 or 6 nodes and quadrilaterals of 4, 8 or 9 nodes can be used: mesh "
+                      "with Mesh.ElementOrder = 1 or 2");
     }
   }
 
@@ -205,14 +223,14 @@ GmshMesh read_open_model(const fs::path& path, std::size_t max_nodes) {
   // model lists nodes as Gmsh numbers them.
   struct RawFace {
     MeshFace face;
-    std::array<std::size_t, 4> tags{};
+    std::array<std::size_t, 9> tags{};
   };
   std::vector<RawFace> raw;
   std::vector<char> used(max_tag + 1, 0);
   for_each_entity(2, [&](int surface, const std::vector<int>& element_types, const TagLists& element_tags,
                          const TagLists& node_tags) {
     for (std::size_t t = 0; t < element_types.size(); ++t) {
-      const int count = element_types[t] == gmsh_triangle ? 3 : 4;
+      const int count = surface_nodes(element_types[t]);
       for (std::size_t e = 0; e < element_tags[t].size(); ++e) {
         RawFace f;
         f.face.tag = element_tags[t][e];
@@ -267,9 +285,13 @@ GmshMesh read_open_model(const fs::path& path, std::size_t max_nodes) {
   }
 
   // Counter-clockwise in (r, z): Gmsh orients elements by the surface normal, which may be -z.
+  // Reversed, corners (0, 1, ..., n-1) become (0, n-1, ..., 1), so the edges run in the opposite
+  // order and their mid-side nodes reverse too; a quad9's centre stays last.
   for (MeshFace& f : mesh.faces) {
     if (twice_signed_area(mesh, f) < 0.0) {
-      std::reverse(f.nodes.begin() + 1, f.nodes.begin() + f.count);
+      const int corners = f.corners();
+      std::reverse(f.nodes.begin() + 1, f.nodes.begin() + corners);
+      if (f.count > corners) std::reverse(f.nodes.begin() + corners, f.nodes.begin() + 2 * corners);
     }
   }
 
@@ -277,12 +299,15 @@ GmshMesh read_open_model(const fs::path& path, std::size_t max_nodes) {
                          const TagLists& node_tags) {
     std::vector<MeshEdge>& edges = mesh.curves[curve];
     for (std::size_t t = 0; t < element_types.size(); ++t) {
-      if (element_types[t] != gmsh_line) {
+      if (element_types[t] != gmsh_line && element_types[t] != gmsh_line3) {
         throw MeshError(path.string() + ": curve " + std::to_string(curve) + " holds line elements of type " +
-                        element_type_name(element_types[t]) + "; only first-order lines (2 nodes) can be used");
+                        element_type_name(element_types[t]) + "; only lines of 2 or 3 nodes can be used");
       }
+      // A 3-node line lists its ends, then its mid-side node.
+      const std::size_t n = element_types[t] == gmsh_line ? 2 : 3;
       for (std::size_t e = 0; e < element_tags[t].size(); ++e) {
-        edges.push_back({index.find(node_tags[t][2 * e]), index.find(node_tags[t][2 * e + 1])});
+        edges.push_back({index.find(node_tags[t][n * e]), index.find(node_tags[t][n * e + 1]),
+                         n == 3 ? index.find(node_tags[t][n * e + 2]) : -1});
       }
     }
   });
@@ -318,7 +343,7 @@ std::string gmsh_failure(const std::string& thrown) {
 
 }  // namespace
 
-GmshMesh read_with_gmsh(const fs::path& file, const fs::path& path, std::size_t max_nodes) {
+GmshMesh read_with_gmsh(const fs::path& file, const fs::path& path, std::size_t max_nodes, int order) {
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) {
     throw MeshError("mesh file " + path.string() + " does not exist or is not a regular file");
@@ -326,7 +351,7 @@ GmshMesh read_with_gmsh(const fs::path& file, const fs::path& path, std::size_t 
   try {
     const GmshSession session;
     gmsh::open(file.string());
-    return read_open_model(path, max_nodes);
+    return read_open_model(path, max_nodes, order);
   } catch (const MeshError&) {
     throw;
   } catch (const std::bad_alloc&) {

@@ -1,5 +1,6 @@
-// saasgaps-mesher DIRECTORY FILE SHOWN MAX_NODES SECONDS MEMORY_BYTES FILE_BYTES
+// saasgaps-mesher DIRECTORY FILE SHOWN MAX_NODES SECONDS MEMORY_BYTES FILE_BYTES ORDER
 //
+// ORDER: 0 (a .geo's own element order), 1 or 2 (read_gmsh_mesh in io/mesher/gmsh_mesh.hpp).
 // Reads DIRECTORY/FILE with Gmsh inside the sandbox of io/mesher_sandbox.hpp (DIRECTORY becomes
 // "/", nothing outside it exists) and writes the mesh to standard output in the encoding of
 // io/mesher_protocol.hpp; errors go to standard error, named as SHOWN, with the exit codes of
@@ -50,9 +51,12 @@ int main(int argc, char** argv) {
   ::close_range(3, ~0U, 0);
   std::size_t max_nodes = 0;
   SandboxLimits limits;
-  if (argc != 8 || !parse(argv[4], max_nodes) || !parse(argv[5], limits.cpu_seconds) ||
-      !parse(argv[6], limits.memory_bytes) || !parse(argv[7], limits.file_bytes) || limits.cpu_seconds < 1) {
-    return report(mesher::usage, "usage: saasgaps-mesher DIRECTORY FILE SHOWN MAX_NODES SECONDS MEMORY_BYTES FILE_BYTES");
+  int order = 0;
+  if (argc != 9 || !parse(argv[4], max_nodes) || !parse(argv[5], limits.cpu_seconds) ||
+      !parse(argv[6], limits.memory_bytes) || !parse(argv[7], limits.file_bytes) || limits.cpu_seconds < 1 ||
+      !parse(argv[8], order) || order < 0 || order > 2) {
+    return report(mesher::usage,
+                  "usage: saasgaps-mesher DIRECTORY FILE SHOWN MAX_NODES SECONDS MEMORY_BYTES FILE_BYTES ORDER");
   }
   const std::string file = argv[2];
   const std::string shown = argv[3];
@@ -66,7 +70,7 @@ int main(int argc, char** argv) {
                                           "); a mesh is read only inside that sandbox");
   }
   try {
-    const GmshMesh mesh = read_with_gmsh("/" + file, shown, max_nodes);
+    const GmshMesh mesh = read_with_gmsh("/" + file, shown, max_nodes, order);
     return write_all(mesher::encode(mesh)) ? mesher::ok : report(mesher::mesh_error, "cannot write the mesh");
   } catch (const MeshTooLarge& e) {
     return report(mesher::too_many_nodes, e.what());

@@ -8,12 +8,13 @@ namespace saasgaps::io::mesher {
 
 namespace {
 
-constexpr std::string_view magic = "SGMESH1\n";
+constexpr std::string_view magic = "SGMESH2\n";  // 2: faces of up to 9 nodes, edges with a mid-side node
 constexpr std::string_view trailer = "END\n";
 
 // Bytes per record of the encoding, for the bounds below.
 constexpr std::size_t node_bytes = 8 + 8 + 8;
-constexpr std::size_t face_bytes = 8 + 4 + 4 + 4 * 4;
+constexpr std::size_t face_bytes = 8 + 4 + 4 + 9 * 4;
+constexpr std::size_t edge_bytes = 3 * 4;
 
 class Writer {
  public:
@@ -84,9 +85,10 @@ class Reader {
 }  // namespace
 
 std::size_t output_limit(std::size_t max_nodes) {
-  // A first-order 2D mesh has about 2 triangles per node and fewer boundary edges than nodes;
+  // A first-order 2D mesh has about 2 triangles per node (a second-order one fewer) and fewer
+  // boundary edges than nodes;
   // 4 faces and 4 edges per node plus 1 MiB for groups and names leaves room for any real mesh.
-  return magic.size() + 8 + max_nodes * (node_bytes + 4 * face_bytes + 4 * 8) + (std::size_t{1} << 20);
+  return magic.size() + 8 + max_nodes * (node_bytes + 4 * face_bytes + 4 * edge_bytes) + (std::size_t{1} << 20);
 }
 
 std::string encode(const GmshMesh& mesh) {
@@ -112,6 +114,7 @@ std::string encode(const GmshMesh& mesh) {
     for (const MeshEdge& e : edges) {
       w.put(static_cast<std::int32_t>(e.a));
       w.put(static_cast<std::int32_t>(e.b));
+      w.put(static_cast<std::int32_t>(e.m));
     }
   }
   w.count(mesh.points.size());
@@ -154,18 +157,21 @@ GmshMesh decode(std::string_view bytes, std::size_t max_nodes, const std::string
     f.tag = in.get<std::uint64_t>();
     f.surface = in.get<std::int32_t>();
     f.count = in.get<std::int32_t>();
-    if (f.count != 3 && f.count != 4) in.fail("a face of " + std::to_string(f.count) + " nodes");
-    for (int k = 0; k < 4; ++k) f.nodes[static_cast<std::size_t>(k)] = in.node(nodes, k >= f.count);
+    if (f.count != 3 && f.count != 4 && f.count != 6 && f.count != 8 && f.count != 9) {
+      in.fail("a face of " + std::to_string(f.count) + " nodes");
+    }
+    for (int k = 0; k < 9; ++k) f.nodes[static_cast<std::size_t>(k)] = in.node(nodes, k >= f.count);
   }
   const std::size_t curves = in.count(4 + 8, "curves");
   for (std::size_t c = 0; c < curves; ++c) {
     const auto curve = in.get<std::int32_t>();
     std::vector<MeshEdge>& edges = mesh.curves[curve];
-    edges.resize(in.count(8, "edges"));
+    edges.resize(in.count(edge_bytes, "edges"));
     // An edge's node is -1 when no surface element uses it (the importer reports such a curve).
     for (MeshEdge& e : edges) {
       e.a = in.node(nodes, true);
       e.b = in.node(nodes, true);
+      e.m = in.node(nodes, true);
     }
   }
   const std::size_t points = in.count(8, "points");
