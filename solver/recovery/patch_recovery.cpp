@@ -137,10 +137,11 @@ Fit fit_patch(const Vec2& centre, Polynomial most, std::span<const SamplingPoint
       f.c = b / A(0, 0);
       return f;
     }
-    Eigen::ColPivHouseholderQR<TermMatrix> qr(A);
-    qr.setThreshold(1e-10);
-    if (qr.rank() < terms) continue;
-    f.c = qr.solve(b);
+    // Points that do not determine every term (all on two lines, say: a patch one element high)
+    // leave the undetermined combinations at zero: the minimum-norm least-squares solution.
+    Eigen::CompleteOrthogonalDecomposition<TermMatrix> cod(A);
+    cod.setThreshold(1e-10);
+    f.c = cod.solve(b);
     return f;
   }
 }

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 
 #include "cli/common/file_io.hpp"
@@ -130,6 +131,13 @@ int run_solve(const SolveOptions& options) {
     throw;
   }
   std::cerr << solution->message << '\n';
+  if (solution->error_estimate) {
+    // The recovered stresses' verdict on the mesh (docs/recovery.md): error_estimate.relative.
+    char line[160];
+    std::snprintf(line, sizeof line, "estimated stress error %.2f %% in the energy norm (error_estimate.relative %.4g)\n",
+                  100.0 * solution->error_estimate->relative, solution->error_estimate->relative);
+    std::cerr << line;
+  }
   write_result(options, destination, [&](io::JsonWriter& out) { io::write_result(out, model, *solution); });
   // Said only when the user did not name the file: they should not have to guess where it went.
   if (options.result_path.empty() && destination != "-") {

@@ -83,8 +83,13 @@ json tree_number(std::string_view text, const JsonPath& path) try {
 }
 
 /// The node members read, by slot.
-enum NodeSlot : int { node_id, node_r, node_z, node_t, node_u_r, node_u_z, node_slots };
-constexpr std::array<std::string_view, node_slots> node_keys{"id", "r", "z", "T", "u_r", "u_z"};
+enum NodeSlot : int {
+  node_id, node_r, node_z, node_t, node_u_r, node_u_z,
+  node_sigma_r, node_sigma_z, node_tau_rz, node_sigma_theta, node_effective,  // recovered (optional)
+  node_slots
+};
+constexpr std::array<std::string_view, node_slots> node_keys{
+    "id", "r", "z", "T", "u_r", "u_z", "sigma_r", "sigma_z", "tau_rz", "sigma_theta", "effective"};
 
 /// The SAX handler: where the parse is decides what an event does.
 class ResultHandler : public rapidjson::BaseReaderHandler<rapidjson::UTF8<>, ResultHandler> {
@@ -310,7 +315,7 @@ class ResultHandler : public rapidjson::BaseReaderHandler<rapidjson::UTF8<>, Res
       case Place::nodes:
         if (!is_object) malformed(parent_pointer(), "is an array, not an object");
         node_seen_ = 0;
-        node_ = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        node_ = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, nan, nan, nan, nan, nan};
         place_ = Place::node_member;
         return true;
       case Place::elements:
@@ -398,6 +403,9 @@ class ResultHandler : public rapidjson::BaseReaderHandler<rapidjson::UTF8<>, Res
     nodes.T.push_back(node_[node_t]);
     nodes.u_r.push_back(node_[node_u_r]);
     nodes.u_z.push_back(node_[node_u_z]);
+    for (int k = 0; k < 5; ++k) {
+      nodes.stress[static_cast<std::size_t>(k)].push_back(node_[static_cast<std::size_t>(node_sigma_r + k)]);
+    }
   }
 
   void end_element() {

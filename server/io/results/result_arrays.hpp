@@ -18,6 +18,7 @@
 /// Limits (io/json_limits.hpp): nesting deeper than max_json_depth throws NestingTooDeep at the
 /// pointer where it happens, before anything deeper is read; the arrays grow with the text only.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -44,6 +45,9 @@ struct ResultSelection {
 struct ResultNodes {
   std::vector<int> id;
   std::vector<double> r, z, T, u_r, u_z;
+  /// The recovered stresses (docs/results.md): sigma_r, sigma_z, tau_rz, sigma_theta, effective; NaN
+  /// where a node has none (no solid element, or a result written before recovery).
+  std::array<std::vector<double>, 5> stress;
 };
 
 /// The solid elements, in the document's order: node ids in CSR form (element e's nodes are

@@ -3,6 +3,7 @@
 #include "solver/fe/element_family.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -34,7 +35,7 @@ const ResultSelection& vtu_result_selection() {
   static const ResultSelection selection{
       .mesh = true,
       .element_keys = {"sigma_r", "sigma_z", "tau_rz", "sigma_theta", "sigma_1", "sigma_2", "angle", "effective", "eps_r",
-                       "eps_z", "gamma_rz", "eps_theta", "yield", "plastic_converged", "q_r", "q_z"}};
+                       "eps_z", "gamma_rz", "eps_theta", "yield", "plastic_converged", "q_r", "q_z", "error"}};
   return selection;
 }
 
@@ -202,6 +203,12 @@ std::string vtu_document(const ResultArrays& result, VtuFormat format) {
     m.piece.point_data.push_back({"reaction" + vtu_unit_suffix(document, "force"), 3, std::move(force)});
   }
   add_contact_point_data(document, nodes, stress, length, m.piece.point_data);
+  // The recovered nodal stresses (docs/recovery.md), named "recovered_*": NaN at a node of no solid.
+  if (std::any_of(nodes.stress[0].begin(), nodes.stress[0].end(), [](double v) { return !std::isnan(v); })) {
+    const std::array<const char*, 5> names{"recovered_sigma_r", "recovered_sigma_z", "recovered_tau_rz",
+                                           "recovered_sigma_theta", "recovered_effective"};
+    for (std::size_t k = 0; k < names.size(); ++k) m.piece.point_data.push_back({names[k] + stress, 1, nodes.stress[k]});
+  }
 
   // ---- Cell data: element-only values (0 on gaps) and gap-only values (0 on solids), by their
   // document keys.
@@ -249,6 +256,12 @@ std::string vtu_document(const ResultArrays& result, VtuFormat format) {
       m.solids->size() > 0 && q != result.element_keys.end() &&
       m.solids->first_missing[static_cast<std::size_t>(q - result.element_keys.begin())] != std::size_t{0}) {
     for (const char* key : {"q_r", "q_z"}) solid_values(key, key);
+  }
+  // The estimated error in the energy norm per element (results with an error estimate).
+  if (const auto err = std::find(result.element_keys.begin(), result.element_keys.end(), "error");
+      m.solids->size() > 0 && err != result.element_keys.end() &&
+      m.solids->first_missing[static_cast<std::size_t>(err - result.element_keys.begin())] != std::size_t{0}) {
+    solid_values("error", "error");
   }
   solid_flags("yield", "yield", 0);
   solid_flags("plastic_converged", "plastic_converged", 1);

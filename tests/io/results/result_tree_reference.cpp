@@ -76,9 +76,21 @@ json result_document(const Model& model, const Solution& s) {
                      {"T", model.loads.node_temperature[n]},
                      {"u_r", s.nodes[n].u_r},
                      {"u_z", s.nodes[n].u_z}});
+    if (s.recovered.has(n)) {  // the recovered stresses: the mean of the node's material sides
+      const Vec4 m = s.recovered.mean(n);
+      json& node = nodes.back();
+      node["sigma_r"] = m[rr];
+      node["sigma_z"] = m[zz];
+      node["tau_rz"] = m[rz];
+      node["sigma_theta"] = m[th];
+      node["effective"] = von_mises(m);
+    }
   }
   json elements = json::array();
-  for (std::size_t e = 0; e < s.elements.size(); ++e) elements.push_back(element_json(model, model.elements[e], s.elements[e]));
+  for (std::size_t e = 0; e < s.elements.size(); ++e) {
+    elements.push_back(element_json(model, model.elements[e], s.elements[e]));
+    if (s.error_estimate) elements.back()["error"] = s.elements[e].error;
+  }
   json gaps = json::array();
   for (std::size_t g = 0; g < s.gaps.size(); ++g) gaps.push_back(gap_json(model, model.gaps->elements[g], s.gaps[g]));
   json reactions = json::array();
@@ -108,6 +120,28 @@ json result_document(const Model& model, const Solution& s) {
     if (!name->empty()) units[key] = *name;
   }
   if (!units.empty()) document["units"] = units;
+  if (s.error_estimate) {
+    document["error_estimate"] = {{"relative", s.error_estimate->relative},
+                                  {"error", s.error_estimate->error},
+                                  {"energy_norm", s.error_estimate->energy_norm}};
+  }
+  if (!s.recovered.empty()) {
+    json sides = json::array();
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+      if (s.recovered.side_count(n) < 2) continue;
+      for (std::uint32_t k = s.recovered.first[n]; k < s.recovered.first[n + 1]; ++k) {
+        const Vec4& v = s.recovered.value[k];
+        sides.push_back({{"node", model.nodes[n].id},
+                         {"material", model.materials[static_cast<std::size_t>(s.recovered.material[k])].id},
+                         {"sigma_r", v[rr]},
+                         {"sigma_z", v[zz]},
+                         {"tau_rz", v[rz]},
+                         {"sigma_theta", v[th]},
+                         {"effective", von_mises(v)}});
+      }
+    }
+    document["node_sides"] = sides;
+  }
   return document;
 }
 
