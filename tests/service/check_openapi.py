@@ -110,10 +110,11 @@ class Contract:
         for block in events:
             fields = dict(line.split(": ", 1) for line in block.splitlines() if ": " in line)
             kind = fields.get("event")
-            if not check(kind in ("state", "iteration", "thermal") and "id" in fields and "data" in fields,
+            if not check(kind in ("state", "iteration", "thermal", "progress") and "id" in fields and "data" in fields,
                          f"{where}: malformed event {block[:120]!r}"):
                 continue
-            schema = schemas[{"state": "StateEvent", "iteration": "HistoryRow", "thermal": "ThermalRow"}[kind]]
+            schema = schemas[{"state": "StateEvent", "iteration": "HistoryRow", "thermal": "ThermalRow",
+                              "progress": "StudyProgress"}[kind]]
             self.check_value(f"{where} (event {fields['id']})", schema, json.loads(fields["data"]))
 
 

@@ -1,4 +1,4 @@
-#include "service/http/study_routes.hpp"
+#include "service/studies/study_routes.hpp"
 
 #include <charconv>
 #include <limits>
