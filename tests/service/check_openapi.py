@@ -110,10 +110,11 @@ class Contract:
         for block in events:
             fields = dict(line.split(": ", 1) for line in block.splitlines() if ": " in line)
             kind = fields.get("event")
-            if not check(kind in ("state", "iteration", "thermal") and "id" in fields and "data" in fields,
+            if not check(kind in ("state", "iteration", "thermal", "progress") and "id" in fields and "data" in fields,
                          f"{where}: malformed event {block[:120]!r}"):
                 continue
-            schema = schemas[{"state": "StateEvent", "iteration": "HistoryRow", "thermal": "ThermalRow"}[kind]]
+            schema = schemas[{"state": "StateEvent", "iteration": "HistoryRow", "thermal": "ThermalRow",
+                              "progress": "StudyProgress"}[kind]]
             self.check_value(f"{where} (event {fields['id']})", schema, json.loads(fields["data"]))
 
 
@@ -307,6 +308,32 @@ def exercise(client, repo, document_bytes, directory):
     client.request("GET", f"/v1/jobs/{beam_job}/plots/effective.png?width=300&height=200", expect=200)
     client.request("GET", f"/v1/jobs/{beam_job}/plots/closure.png", expect=409)
     client.request("GET", f"/v1/jobs/{beam_job}/plots/contact_pressure.csv", expect=409)
+
+    # The result cache (docs/studies.md): the same model again is answered by the job that solved it.
+    cached = client.json("POST", "/v1/jobs", body=beam, headers={"Content-Type": "application/json"}, expect=200)
+    check(cached.get("cached") is True and cached["id"] == beam_job, f"a cached answer: {cached}")
+    client.request("POST", "/v1/jobs?cache=off", body=beam, headers={"Content-Type": "application/json"}, expect=202)
+
+    # Studies: points as jobs, their progress, cancel and resume, a bad study.
+    block_model = json.loads((examples / "quickstart-plane-strain-block.json").read_text())
+    study = {"schema_version": 1, "title": "block over its pressure", "model": block_model,
+             "parameters": [{"name": "p", "pointer": "/loads/pressures/0/normal", "values": [1000.0, 2000.0]}],
+             "outputs": [{"name": "uz", "of": "nodes.u_z", "reduce": "min"}]}
+    study_id = client.json("POST", "/v1/studies", body=study, expect=202)["id"]
+    client.request("GET", f"/v1/studies/{study_id}/events", expect=200)  # ends once no point runs
+    done = client.json("GET", f"/v1/studies/{study_id}", expect=200)
+    check(done["status"] == "converged", f"a study: {done}")
+    client.json("GET", "/v1/studies", expect=200)
+    client.request("POST", f"/v1/studies/{study_id}/cancel", body="", expect=202)
+    client.request("POST", f"/v1/studies/{study_id}/resume", body="", expect=202)
+    for suffix in ("", "/events"):
+        client.request("GET", f"/v1/studies/999999{suffix}", expect=404)
+    for suffix in ("/cancel", "/resume"):
+        client.request("POST", f"/v1/studies/999999{suffix}", body="", expect=404)
+    bad = dict(study, outputs=[{"name": "x", "of": "nodes.nothing", "reduce": "max"}])
+    client.json("POST", "/v1/studies", body=bad, expect=422)
+    client.request("POST", "/v1/studies", body="{x", headers={"Content-Type": "application/json"}, expect=400)
+    client.request("GET", "/v1/studies", token=False, expect=401)
 
     # A mechanism is refused before it is queued.
     free = json.loads((examples / "report-beam-model-a.json").read_text())

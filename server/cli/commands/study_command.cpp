@@ -109,19 +109,7 @@ class StudyRun {
       p.message = e.what();
       return;
     }
-    const json document = json::parse(result);
-    p.status = document.value("status", "failed");
-    p.message = document.value("message", "");
-    if (p.status == "failed") return;
-    for (const io::StudyOutput& o : study_.outputs) {
-      try {
-        p.outputs[o.name] = io::reduce_output(document, o);
-      } catch (const io::OutputError& e) {
-        p.outputs[o.name] = nullptr;
-        p.status = "failed";
-        p.message = "output " + io::quote_string(o.name) + ": " + e.what();
-      }
-    }
+    io::take_result(json::parse(result), study_, p);
   }
 
   void report(const io::PointOutcome& p) {

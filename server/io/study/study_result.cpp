@@ -3,10 +3,28 @@
 #include <charconv>
 
 #include "io/json/json_text.hpp"
+#include "io/json/value_quote.hpp"
+#include "io/study/study_outputs.hpp"
 
 namespace saasgaps::io {
 
 using nlohmann::json;
+
+void take_result(const json& result, const Study& study, PointOutcome& point) {
+  point.status = result.value("status", "failed");
+  point.message = result.value("message", "");
+  point.outputs = json::object();
+  if (point.status == "failed") return;
+  for (const StudyOutput& o : study.outputs) {
+    try {
+      point.outputs[o.name] = reduce_output(result, o);
+    } catch (const OutputError& e) {
+      point.outputs[o.name] = nullptr;
+      point.status = "failed";
+      point.message = "output " + quote_string(o.name) + ": " + e.what();
+    }
+  }
+}
 
 StudySummary summarize(const std::vector<PointOutcome>& points) {
   StudySummary s;

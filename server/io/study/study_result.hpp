@@ -30,6 +30,11 @@ struct PointOutcome {
   std::string message;                                ///< why it failed, or how the run ended
 };
 
+/// A point's status, message and outputs from its result document: the result's status and message,
+/// each output reduced (an output that cannot be, io/study/study_outputs.hpp, fails the point with
+/// its reason; a failed result has no outputs).
+void take_result(const nlohmann::json& result, const Study& study, PointOutcome& point);
+
 /// Counts and wording of a set of points.
 struct StudySummary {
   std::string status, message;

@@ -48,7 +48,8 @@ HttpApi::HttpApi(JobStore& store, EventHub& hub, ApiOptions options)
       options_(std::move(options)),
       guard_({options_.token, options_.listen_host, options_.allowed_hosts, options_.max_body}),
       streams_(store, hub, options_.max_streams),
-      results_(store) {}
+      results_(store),
+      studies_(store, hub) {}
 
 void HttpApi::install(httplib::Server& server) {
   install_request_hooks(server, guard_);
@@ -75,6 +76,7 @@ void HttpApi::install(httplib::Server& server) {
       res.set_content(std::string(asset.body), std::string(asset.content_type));
     });
   }
+  studies_.install(server);
   install_worker_api(server, store_, hub_, options_.remote_workers);
 }
 
@@ -90,12 +92,13 @@ void HttpApi::enqueue(const std::string& body, const Model& model, const httplib
   io::require_restrained(model);
   // The result cache (docs/studies.md): a model solved before is answered at once by the job that
   // solved it (200, `cached: true`); ?cache=off solves it afresh (and its result answers from then on).
+  // A request with an Idempotency-Key keeps its own meaning (a replay answers the job it made).
   const std::string cache = req.has_param("cache") ? req.get_param_value("cache") : "on";
   if (cache != "on" && cache != "off") {
     throw HttpError(400, "Bad Request", "query parameter cache must be on or off; got \"" + cache + "\"");
   }
   const std::optional<ModelKey> cache_key = model_key(std::string_view(body));
-  if (cache_key && cache == "on") {
+  if (cache_key && cache == "on" && !req.has_header("Idempotency-Key")) {
     if (const std::optional<std::int64_t> solved = find_cached(store_, *cache_key)) {
       json view = job_json(store_.get(*solved));
       view["cached"] = true;

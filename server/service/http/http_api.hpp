@@ -17,6 +17,7 @@
 #include "service/http/event_stream.hpp"
 #include "service/http/request_guard.hpp"
 #include "service/http/result_routes.hpp"
+#include "service/studies/study_routes.hpp"
 #include "service/runs/model_handoff.hpp"
 #include "service/store/event_hub.hpp"
 #include "service/store/job_store.hpp"
@@ -75,6 +76,7 @@ class HttpApi {
   RequestGuard guard_;
   EventStreams streams_;
   ResultRoutes results_;
+  StudyRoutes studies_;
 };
 
 }  // namespace saasgaps::service

@@ -26,6 +26,29 @@ JobStore::Submitted JobStore::submit(const std::string& model, const std::string
   }
 }
 
+std::int64_t JobStore::insert_job_row(Connection& db, const std::string& model, const std::string& title,
+                                      int max_iterations, const std::optional<std::string>& idempotency_key,
+                                      const std::string& request_digest, const std::optional<std::string>& cache_key) {
+  const std::string now = utc_now();
+  const char* state = to_string(*find_transition(std::nullopt, JobAction::submit)->to);
+  db.prepare(
+        "INSERT INTO jobs (state, title, created_at, updated_at, max_iterations, idempotency_key, request_digest,"
+        " cache_key) VALUES (?, ?, ?, ?, ?, ?, ?, ?)")
+      .bind(1, state)
+      .bind(2, title)
+      .bind(3, now)
+      .bind(4, now)
+      .bind(5, max_iterations)
+      .bind(6, idempotency_key)
+      .bind(7, request_digest)
+      .bind(8, cache_key)
+      .run();
+  const std::int64_t id = db.last_insert_id();
+  db.prepare("INSERT INTO models (job_id, document) VALUES (?, ?)").bind(1, id).bind(2, model).run();
+  add_event(db, id, "state", io::json_text(json{{"job", id}, {"state", state}, {"iteration", 0}}));
+  return id;
+}
+
 JobStore::Submitted JobStore::insert_job(const std::string& model, const std::string& title, int max_iterations,
                                          const std::optional<std::string>& idempotency_key,
                                          const std::string& request_digest,
@@ -43,23 +66,7 @@ JobStore::Submitted JobStore::insert_job(const std::string& model, const std::st
       return {require_job(*db, q.integer(0)), true};
     }
   }
-  const std::string now = utc_now();
-  const char* state = to_string(*find_transition(std::nullopt, JobAction::submit)->to);
-  db->prepare(
-        "INSERT INTO jobs (state, title, created_at, updated_at, max_iterations, idempotency_key, request_digest,"
-        " cache_key) VALUES (?, ?, ?, ?, ?, ?, ?, ?)")
-      .bind(1, state)
-      .bind(2, title)
-      .bind(3, now)
-      .bind(4, now)
-      .bind(5, max_iterations)
-      .bind(6, idempotency_key)
-      .bind(7, request_digest)
-      .bind(8, cache_key)
-      .run();
-  const std::int64_t id = db->last_insert_id();
-  db->prepare("INSERT INTO models (job_id, document) VALUES (?, ?)").bind(1, id).bind(2, model).run();
-  add_event(*db, id, "state", io::json_text(json{{"job", id}, {"state", state}, {"iteration", 0}}));
+  const std::int64_t id = insert_job_row(*db, model, title, max_iterations, idempotency_key, request_digest, cache_key);
   JobRecord job = require_job(*db, id);
   tx.commit();
   return {job, false};

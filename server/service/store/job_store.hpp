@@ -108,6 +108,39 @@ struct JobEvent {
   std::string data;  ///< JSON
 };
 
+/// A study's point as POST /v1/studies hands it to the store (docs/studies.md).
+struct StudyPointInput {
+  /// "queued": `model` becomes a new job; "converged": answered by `cached_job` with `outputs`;
+  /// "failed": refused before running, `message` says why.
+  std::string status = "queued";
+  std::string model, title;
+  int max_iterations = 0;
+  std::optional<std::string> cache_key;
+  std::optional<std::int64_t> cached_job;
+  std::string outputs = "{}";
+  std::string message;
+};
+
+/// A study's point as stored: `status` empty while it follows its job (the job's state is then the
+/// point's), final once its job has finished and its outputs were reduced.
+struct StudyPointRow {
+  std::size_t index = 0;
+  std::optional<std::int64_t> job;
+  bool cached = false;
+  std::string status;
+  std::string outputs = "{}";
+  std::string message;
+  std::optional<JobState> job_state;  ///< the job's state now (none when the job was deleted)
+  std::optional<std::string> job_error;
+};
+
+struct StudyRecord {
+  std::int64_t id = 0;
+  std::string title, created_at;
+  std::string document;  ///< the study document as submitted
+  std::vector<StudyPointRow> points;
+};
+
 class JobStore {
  public:
   /// Opens or creates the database, checks its integrity (PRAGMA quick_check: a damaged file is a
@@ -237,6 +270,21 @@ class JobStore {
   /// jobs are shown interrupted from memory and recorded by recover_writes once space returns.
   int recover_interrupted(bool keep_slurm_jobs = false);
 
+  // Studies (study_store.cpp, docs/studies.md).
+
+  /// The study, its points, and a queued job for each point to solve, in one transaction: a server
+  /// killed at any instant has either all of it or none.
+  std::int64_t create_study(const std::string& document, const std::string& title,
+                            const std::vector<StudyPointInput>& points);
+  /// The study and its points with their jobs' states; JobNotFound (as a study) when there is none.
+  [[nodiscard]] StudyRecord study(std::int64_t id);
+  /// Every study, newest first, without its document.
+  [[nodiscard]] std::vector<StudyRecord> studies();
+  /// A point's final status, outputs (JSON) and message, once its job has finished; an empty status
+  /// makes it follow its job again (a resumed study).
+  void set_study_point(std::int64_t study, std::size_t index, const std::string& status, const std::string& outputs,
+                       const std::string& message);
+
   // Remote workers and the Slurm executor (run_leases.cpp).
 
   /// A Slurm worker trades its run's ticket for the lease: the job must be running under the
@@ -287,6 +335,10 @@ class JobStore {
   Submitted insert_job(const std::string& model, const std::string& title, int max_iterations,
                        const std::optional<std::string>& idempotency_key, const std::string& request_digest,
                        const std::optional<std::string>& cache_key);
+  /// A queued job's rows (job, model, its first event) inside the caller's transaction; its id.
+  static std::int64_t insert_job_row(Connection& db, const std::string& model, const std::string& title,
+                                     int max_iterations, const std::optional<std::string>& idempotency_key,
+                                     const std::string& request_digest, const std::optional<std::string>& cache_key);
   /// The writes of record_iteration, inside its transaction.
   static void write_iteration(Connection& db, std::int64_t id, int iteration, const std::string& row,
                               const std::vector<std::uint8_t>& state, const std::optional<CommitTime>& previous);

@@ -91,6 +91,27 @@ extern const std::vector<const char*> migrations = {
     );
     CREATE INDEX result_cache_by_job ON result_cache(job_id);
     )sql",
+    // 6: studies (docs/studies.md): the study document, and each point's job (the job that solves
+    // it, or the cached job that answered it), its final status and outputs once reduced.
+    R"sql(
+    CREATE TABLE studies (
+      id INTEGER PRIMARY KEY AUTOINCREMENT,
+      title TEXT NOT NULL,
+      created_at TEXT NOT NULL,
+      document TEXT NOT NULL
+    );
+    CREATE TABLE study_points (
+      study_id INTEGER NOT NULL REFERENCES studies(id) ON DELETE CASCADE,
+      point_index INTEGER NOT NULL,
+      job_id INTEGER REFERENCES jobs(id) ON DELETE SET NULL,
+      cached INTEGER NOT NULL DEFAULT 0,
+      status TEXT NOT NULL DEFAULT '',
+      outputs TEXT NOT NULL DEFAULT '{}',
+      message TEXT NOT NULL DEFAULT '',
+      PRIMARY KEY (study_id, point_index)
+    ) WITHOUT ROWID;
+    CREATE INDEX study_points_by_job ON study_points(job_id);
+    )sql",
 };
 
 }  // namespace detail
