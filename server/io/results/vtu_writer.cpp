@@ -3,6 +3,8 @@
 #include "solver/fe/element_family.hpp"
 
 #include <algorithm>
+#include <array>
+#include <string_view>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -237,21 +239,37 @@ std::string vtu_document(const ResultArrays& result, VtuFormat format) {
     material.resize(m.cells(), 0);
     cells.push_back({"material", 1, std::move(material)});
   }
+  // Plane models name their components x, y (the result's r, z) and z out of the plane; axisymmetric
+  // ones keep the cylindrical names (docs/vtu.md).
+  const bool plane = document.value("analysis", std::string()).starts_with("plane");
+  const auto named = [plane](const char* key) -> std::string {
+    static constexpr std::array<std::pair<std::string_view, std::string_view>, 10> in_plane{{
+        {"sigma_r", "sigma_x"}, {"sigma_z", "sigma_y"}, {"tau_rz", "tau_xy"}, {"sigma_theta", "sigma_z"},
+        {"eps_r", "eps_x"}, {"eps_z", "eps_y"}, {"gamma_rz", "gamma_xy"}, {"eps_theta", "eps_z"},
+        {"q_r", "q_x"}, {"q_z", "q_y"}}};
+    if (plane) {
+      for (const auto& [cylindrical, planar] : in_plane) {
+        if (cylindrical == key) return std::string(planar);
+      }
+    }
+    return key;
+  };
   for (const char* key : {"sigma_r", "sigma_z", "tau_rz", "sigma_theta", "sigma_1", "sigma_2"}) {
-    solid_values(key + stress, key);
+    solid_values(named(key) + stress, key);
   }
   solid_values("principal_angle", "angle");
   m.piece.active_cell_scalars = "effective" + stress;
   solid_values(m.piece.active_cell_scalars, "effective");
-  for (const char* key : {"eps_r", "eps_z", "gamma_rz", "eps_theta"}) solid_values(key, key);
+  for (const char* key : {"eps_r", "eps_z", "gamma_rz", "eps_theta"}) solid_values(named(key), key);
   // Thermal runs: the element heat flux (power / area; the result has it on every solid or none).
   if (const auto q = std::find(result.element_keys.begin(), result.element_keys.end(), "q_r");
       m.solids->size() > 0 && q != result.element_keys.end() &&
       m.solids->first_missing[static_cast<std::size_t>(q - result.element_keys.begin())] != std::size_t{0}) {
-    for (const char* key : {"q_r", "q_z"}) solid_values(key, key);
+    for (const char* key : {"q_r", "q_z"}) solid_values(named(key), key);
   }
   solid_flags("yield", "yield", 0);
   solid_flags("plastic_converged", "plastic_converged", 1);
+  if (m.gaps.empty()) return encode_vtu(m.piece, format);  // no gap elements: no all-zero gap arrays
   gap_values("gap_closure", gap_member("closure"));
   gap_values("gap_eps_m", gap_member("eps_m"));
   gap_values("gap_sigma_m" + stress, gap_member("sigma_m"));
