@@ -2,6 +2,7 @@
 """Writes a model of any size: a square block cut at mid height by a row of gap elements.
 
     python3 schemas/examples/make_block_model.py 120 > block.json    # 120 x 120 elements + 120 gaps
+    python3 schemas/examples/make_block_model.py 120 --increments 30 > slow.json  # loads in 30 increments
 
 An n x n plane-strain block of unit side, steel (E = 30e6, nu = 0.3), cut at mid height by a gap of
 1 % of an element's height, bridged by n gap elements (M along z). The bottom row of nodes is held; the
@@ -9,6 +10,9 @@ upper half is pressed down (1000) on the left quarter of its top and pulled up (
 quarter, so it tilts onto the lower half: gaps close on the left and open on the right, and the
 tensile schedule (50, 20, 10, 5, 2, 1) takes several iterations to relax the open ones. Units: in,
 lbf, psi. The size sets the work per iteration: about 2 n^2 unknowns.
+
+--increments K applies the loads in one load step of K increments (a run K times as long, long
+enough to cancel by hand).
 """
 
 import argparse
@@ -29,7 +33,7 @@ def grid(n, rows, z0, h, first_node, first_element, nodes, elements):
     return ids
 
 
-def model(n):
+def model(n, increments=0):
     half = n // 2
     h = 1.0 / n
     nodes, elements = [], []
@@ -59,16 +63,21 @@ def model(n):
         "loads": {"pressures": pressures},
         "solver": {"max_iterations": 40},
         "output": {"watch_gaps": [gaps[0]["id"], gaps[-1]["id"]]},
-    }
+    } | ({"steps": [{"name": "load", "increments": increments}]} if increments > 0 else {})
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("n", type=int, nargs="?", default=40, help="elements along each side (even, >= 4)")
-    n = parser.parse_args().n
+    parser.add_argument("--increments", type=int, default=0,
+                        help="apply the loads in one step of this many increments (default: no steps)")
+    args = parser.parse_args()
+    n = args.n
     if n < 4 or n % 2:
         parser.error(f"n must be an even number >= 4, got {n}")
-    json.dump(model(n), sys.stdout, separators=(",", ":"))
+    if args.increments < 0:
+        parser.error(f"--increments must be >= 0, got {args.increments}")
+    json.dump(model(n, args.increments), sys.stdout, separators=(",", ":"))
     sys.stdout.write("\n")
 
 

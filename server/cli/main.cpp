@@ -168,9 +168,11 @@ int main(int argc, char** argv) {
                        "(default 0,0)");
   plot_cmd->add_option("--gaps", plot.gaps, "The row of gaps for closure and contact_pressure, in order: ids and "
                                             "ranges, e.g. 81-98 or 5,7,9-12 (default: every gap, or the contact pairs when the result has them)");
-  plot_cmd->add_option("--along", plot.along, "x axis along the gap row, or along side A of each contact pair: index, position (arc length), r or z")
-      ->check(CLI::IsMember({"index", "position", "r", "z"}))
-      ->capture_default_str();
+  plot_cmd->add_option("--along", plot.along, "closure and contact_pressure only: x axis along the gap row, or along "
+                                              "side A of each contact pair: index (the default), position (arc length), r or z")
+      ->check(CLI::IsMember({"index", "position", "r", "z"}));
+  plot_cmd->add_option("--set", plot.set, "--field force: the node set whose summed reactions (set_reactions) to plot "
+                                          "against the load path");
   plot_cmd->add_option("--path", plot.path, "Plot the field along this polyline of points: 'r0,z0;r1,z1;...'");
   plot_cmd->add_option("--samples", plot.samples, "Points sampled along --path")->check(CLI::Range(2, 100000))
       ->capture_default_str();

@@ -242,8 +242,66 @@ function hasFrictionColumns(row) {
   return typeof row.stick_points === "number";
 }
 
+// The forces a row carries at the end of a converged increment: each support set's summed
+// reactions and each contact pair's force, as [name, fr, fz].
+function rowForces(row) {
+  return (row.set_reactions || []).map(s => [`set ${s.set}`, s.fr, s.fz])
+    .concat((row.pair_forces || []).map(p => [`pair ${p.surfaces.join(" / ")}`, p.fr, p.fz]));
+}
+
+// Each force (fz, or fr where fz stays 0) against the increments of the load path, one polyline
+// per support set or pair (an SVG drawn from the rows, so it grows while the job runs).
+function forceSvg(history) {
+  const W = 520, H = 300, left = 70, right = 12, top = 28, bottom = 40;
+  const ns = "http://www.w3.org/2000/svg";
+  const svg = document.createElementNS(ns, "svg");
+  svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
+  svg.setAttribute("role", "img");
+  const add = (tag, attributes, text) => {
+    const e = svg.appendChild(document.createElementNS(ns, tag));
+    for (const [key, value] of Object.entries(attributes)) e.setAttribute(key, String(value));
+    if (text !== undefined) e.textContent = text;
+    return e;
+  };
+  const ends = history.filter(r => rowForces(r).length > 0);
+  const series = new Map();  // name -> [[x, value]]
+  ends.forEach((r, i) => {
+    for (const [name, fr, fz] of rowForces(r)) {
+      if (!series.has(name)) series.set(name, { fr: [], fz: [] });
+      series.get(name).fr.push([i + 1, fr]);
+      series.get(name).fz.push([i + 1, fz]);
+    }
+  });
+  const lines = [...series.entries()].map(([name, s]) =>
+    (s.fz.some(([, v]) => v !== 0) || !s.fr.some(([, v]) => v !== 0) ? [`${name} fz`, s.fz] : [`${name} fr`, s.fr]));
+  const values = lines.flatMap(([, points]) => points.map(([, v]) => v)).concat([0]);
+  const lo = Math.min(...values), hi = Math.max(...values), span = hi - lo || 1;
+  const x = i => left + (W - left - right) * (ends.length > 1 ? (i - 1) / (ends.length - 1) : 0.5);
+  const y = v => H - bottom - (H - top - bottom) * (v - lo) / span;
+  add("text", { x: 8, y: 18, class: "title" }, "Force at the end of each increment");
+  add("line", { x1: left, y1: y(0), x2: W - right, y2: y(0), stroke: "#999" });
+  for (const v of [lo, hi]) add("text", { x: left - 6, y: y(v) + 4, "text-anchor": "end" }, v.toPrecision(4));
+  add("text", { x: (left + W - right) / 2, y: H - 8, "text-anchor": "middle" }, "increment of the load path");
+  const colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"];
+  lines.forEach(([name, points], k) => {
+    const colour = colours[k % colours.length];
+    add("polyline", { points: points.map(([i, v]) => `${x(i)},${y(v)}`).join(" "), fill: "none", stroke: colour,
+                      "stroke-width": 2, "data-series": name });
+    for (const [i, v] of points) add("circle", { cx: x(i), cy: y(v), r: 3, fill: colour, "data-value": v });
+    add("text", { x: left + 8, y: top + 14 * (k + 1), fill: colour }, name);
+  });
+  return svg;
+}
+
+// Models without gap elements (no gap closures, not exact contact) show no gap columns: their
+// rows hold 0 there, which reads as a measurement.
+function hasGapColumns(row) {
+  return typeof row.active_set_iterations === "number" || (Array.isArray(row.gap_closures) && row.gap_closures.length > 0);
+}
+
 function columnsFor(row) {
   const exact = typeof row.active_set_iterations === "number";
+  const gapless = !hasGapColumns(row);
   const count = key => r => (typeof r[key] === "number" ? String(r[key]) : "");
   const fixed = (key, digits) => r => number(r[key], digits);
   const columns = [["iter", "iteration", count("iteration")]];
@@ -273,7 +331,8 @@ function columnsFor(row) {
                   r => (typeof r.friction_residual === "number" ? r.friction_residual.toExponential(2) : "")]);
   }
   columns.push(["attempt", "attempt", count("attempt")], ["s", "seconds", fixed("seconds", 3)]);
-  return columns;
+  const gapFields = ["tensile_modulus", "closed_gaps", "nonconverged_gaps", "average_closure", "max_closure", "extrapolated"];
+  return gapless ? columns.filter(([, field]) => !gapFields.includes(field)) : columns;
 }
 
 // The exact mode's convergence, drawn here from the history rows (an SVG): per iteration (or load
@@ -418,11 +477,34 @@ async function showJob(id) {
     }
     rows.set(row.iteration, tr);
     rowData.set(row.iteration, row);
+    if (rowForces(row).length > 0) showForces();
     // Keep the table ordered even if rows arrive out of order (a reconnect after a gap).
     const later = [...rows.keys()].filter(k => k > row.iteration).sort((a, b) => a - b)[0];
     $("#iterations tbody").insertBefore(tr, later === undefined ? null : rows.get(later));
   }
   const historyRows = () => [...rowData.keys()].sort((a, b) => a - b).map(k => rowData.get(k));
+
+  // The last increment's forces in the table, every increment's in the plot.
+  function showForces() {
+    const history = historyRows();
+    const last = [...history].reverse().find(r => rowForces(r).length > 0);
+    if (!last) return;
+    const force = unitOf(units, "force");
+    $("#forces thead tr").children[1].textContent = `fr${force}`;
+    $("#forces thead tr").children[2].textContent = `fz${force}`;
+    const at = "step" in last ? `step ${last.step}, increment ${last.increment}` : `iteration ${last.iteration}`;
+    $("#forces tbody").replaceChildren(...rowForces(last).map(([name, fr, fz]) => {
+      const tr = document.createElement("tr");
+      tr.dataset.name = name;
+      cell(tr, name);
+      cell(tr, number(fr, 2));
+      cell(tr, number(fz, 2));
+      cell(tr, at);
+      return tr;
+    }));
+    $("#force-plot").replaceChildren(forceSvg(history));
+    $("#forces-section").hidden = false;
+  }
 
   const thermalRows = new Map();  // index -> its table row
   function addThermalRow(row) {
@@ -450,6 +532,7 @@ async function showJob(id) {
     stateBadge($("#job-state"), job);
     $("#job-iteration").textContent = job.iteration;
     $("#job-max").textContent = job.max_iterations;
+    $("#job-progress").textContent = job.progress ? job.progress.text : "";
     $("#job-attempts").textContent = job.attempts;
     $("#job-created").textContent = when(job.created_at);
     $("#job-started").textContent = when(job.started_at) || "not yet";
@@ -464,6 +547,7 @@ async function showJob(id) {
     $("#resume").disabled = ["queued", "running", "converged"].includes(job.state);
     const hasResult = !active;
     if (job.last_row && Array.isArray(job.last_row.gap_closures)) hasGaps = job.last_row.gap_closures.length > 0;
+    if (job.last_row) hasGapRows = hasGapColumns(job.last_row);
     showLinks(hasResult);
     if (hasResult && !plotsShown) showPlots();
     if (!hasResult) showRunning();
@@ -541,7 +625,9 @@ async function showJob(id) {
   const gapPlot = selector => selector === "#contact-plot" || selector === "#closure-plot";
   // A model without gaps has no gap plots; with contact surfaces, the contact plot draws those.
   // The friction plot only for a result with a contact pair with friction.
+  let hasGapRows = true;  // the gap convergence plot: models with gaps or exact contact only
   const noPlot = selector => (gapPlot(selector) && !hasGaps && !(selector === "#contact-plot" && hasContact())) ||
+                             (selector === "#convergence-plot" && !hasGapRows) ||
                              (selector === "#friction-plot" && !hasFriction());
 
   // A figure's placeholder says what the figure waits for (or why it cannot be drawn); it shows
@@ -609,6 +695,7 @@ async function showJob(id) {
       if (selector !== "#convergence-plot") placeholder(selector, "drawn when the job has a result");
       $(selector).parentElement.hidden = noPlot(selector);
     }
+    if (noPlot("#convergence-plot")) return;
     if (rows.size === 0) {
       placeholder("#convergence-plot", "drawn after the first iteration");
       return;

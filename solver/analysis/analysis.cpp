@@ -348,6 +348,16 @@ class GapContactAnalysis {
       const GapResult& r = c.gaps[g];
       row.watch_gaps.push_back({r.id, r.modulus, r.closure, r.sigma_m});
     }
+    // The end of a converged increment: the forces a force-displacement curve reads (once per
+    // increment, so the cost of the reactions is that of one more residual, not of every row).
+    if (v.converged) {
+      if (!model_.reaction_groups.empty()) row.set_reactions = set_reactions(model_, reactions(state));
+      if (model_.contact && !model_.contact->pairs.empty()) {
+        for (const ContactPairResult& pair : now_->contact->surface_results(state)) {
+          row.pair_forces.push_back({pair.surfaces, pair.force[0], pair.force[1]});
+        }
+      }
+    }
     return row;
   }
 
@@ -384,6 +394,7 @@ class GapContactAnalysis {
       s.gaps = v.contact.gaps;
       s.contact = now_->contact->surface_results(state);
       s.reactions = reactions(state);
+      s.set_reactions = set_reactions(model_, s.reactions);
     }
     s.steps = step_results(state, status);
     s.message = message(state, v, status);

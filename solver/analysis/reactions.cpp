@@ -71,4 +71,27 @@ Vec2 reaction_sum(std::span<const NodeReaction> reactions) {
   return sum;
 }
 
+std::vector<SetReaction> set_reactions(const Model& model, std::span<const NodeReaction> reactions) {
+  std::vector<SetReaction> sums;
+  if (model.reaction_groups.empty()) return sums;
+  // The reactions are in node order: a node's entry is found by its id's position among them.
+  std::vector<int> entry(model.nodes.size(), -1);
+  std::size_t k = 0;
+  for (std::size_t a = 0; a < model.nodes.size() && k < reactions.size(); ++a) {
+    if (model.nodes[a].id == reactions[k].id) entry[a] = static_cast<int>(k++);
+  }
+  sums.reserve(model.reaction_groups.size());
+  for (const ReactionGroup& group : model.reaction_groups) {
+    SetReaction sum{group.name, 0.0, 0.0};
+    for (const int node : group.nodes) {
+      const int e = entry[static_cast<std::size_t>(node)];
+      if (e < 0) continue;  // free in this increment: no support, no reaction
+      sum.f_r += reactions[static_cast<std::size_t>(e)].f_r;
+      sum.f_z += reactions[static_cast<std::size_t>(e)].f_z;
+    }
+    sums.push_back(std::move(sum));
+  }
+  return sums;
+}
+
 }  // namespace saasgaps

@@ -38,4 +38,8 @@ std::vector<NodeReaction> support_reactions(const Model& model, const DofMap& do
 /// components, in axisymmetric ones f_z (docs/results.md).
 Vec2 reaction_sum(std::span<const NodeReaction> reactions);
 
+/// The reactions summed over each reaction group's nodes (Model::reaction_groups), in the groups'
+/// order; a node of two groups counts in both. reactions: support_reactions' list for `model`.
+std::vector<SetReaction> set_reactions(const Model& model, std::span<const NodeReaction> reactions);
+
 }  // namespace saasgaps

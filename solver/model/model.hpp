@@ -138,6 +138,15 @@ struct Constraint {
   std::optional<double> u_z;
 };
 
+/// A node set that a constraint names (model.sets.nodes, docs/model.md "Named sets"): the support
+/// reactions of its nodes are summed at the end of every converged increment and of the run
+/// (results set_reactions). The reader expands the set's constraints to node constraints; the
+/// solver only sums over the nodes here.
+struct ReactionGroup {
+  std::string name;
+  std::vector<int> nodes;  ///< node indices, ascending, each once
+};
+
 struct SolverOptions {
   int max_iterations = 30;
   double plastic_tolerance = 0.01;  ///< relative stress change that marks N-L/CONV? = NO
@@ -248,6 +257,7 @@ struct Model {
   Loads loads;
   std::vector<Step> steps;  ///< empty: one step of one increment with `loads` (no step output at all)
   std::optional<Thermal> thermal;  ///< present: node temperatures come from conduction, not loads
+  std::vector<ReactionGroup> reaction_groups;  ///< node sets a constraint names, in the order first named
   SolverOptions solver;
   OutputOptions output;
 

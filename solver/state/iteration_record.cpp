@@ -10,6 +10,10 @@ bool same(const WatchedElement& a, const WatchedElement& b) {
 bool same(const WatchedGap& a, const WatchedGap& b) {
   return a.id == b.id && a.modulus == b.modulus && a.closure == b.closure && a.sigma_m == b.sigma_m;
 }
+bool same(const SetReaction& a, const SetReaction& b) { return a.set == b.set && a.f_r == b.f_r && a.f_z == b.f_z; }
+bool same(const PairForce& a, const PairForce& b) {
+  return a.surfaces == b.surfaces && a.f_r == b.f_r && a.f_z == b.f_z;
+}
 template <class T>
 bool same_rows(const std::vector<T>& a, const std::vector<T>& b) {
   if (a.size() != b.size()) return false;
@@ -29,7 +33,8 @@ bool IterationRecord::same_numbers(const IterationRecord& o) const {
          complementarity == o.complementarity && active_set_iterations == o.active_set_iterations &&
          stick_points == o.stick_points && slip_points == o.slip_points &&
          friction_residual == o.friction_residual && same_rows(watch_elements, o.watch_elements) &&
-         same_rows(watch_gaps, o.watch_gaps) && gap_closures == o.gap_closures;
+         same_rows(watch_gaps, o.watch_gaps) && gap_closures == o.gap_closures &&
+         same_rows(set_reactions, o.set_reactions) && same_rows(pair_forces, o.pair_forces);
 }
 
 }  // namespace saasgaps

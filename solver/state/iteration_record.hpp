@@ -2,6 +2,7 @@
 /// One row of the iteration history (the columns of the report's Tables I-V), and the observer
 /// that receives each row with the state to resume from.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,21 @@ struct WatchedGap {
   double modulus = 0.0;  ///< E_M used in the iteration
   double closure = 0.0;  ///< %
   double sigma_m = 0.0;  ///< normal stress across the gap (negative in compression)
+};
+
+/// The summed support reactions of a node set that a constraint names (Model::reaction_groups):
+/// force units, plane analyses on the whole thickness, axisymmetric ones on the full ring.
+struct SetReaction {
+  std::string set;
+  double f_r = 0.0;
+  double f_z = 0.0;
+};
+
+/// The resultant force side B of a contact pair exerts on side A (ContactPairResult::force).
+struct PairForce {
+  std::array<std::string, 2> surfaces;
+  double f_r = 0.0;
+  double f_z = 0.0;
 };
 
 struct IterationRecord {
@@ -53,6 +69,10 @@ struct IterationRecord {
   std::vector<WatchedElement> watch_elements;
   std::vector<WatchedGap> watch_gaps;
   std::vector<double> gap_closures;  ///< closure (%) of every gap, in model order: the closure plot
+  /// The last row of each converged increment (and of a converged run without steps) only, else
+  /// empty: the summed reactions of every reaction group, and the force of every contact pair.
+  std::vector<SetReaction> set_reactions;
+  std::vector<PairForce> pair_forces;
   double seconds = 0.0;        ///< wall time of the iteration
   int attempt = 1;             ///< which run (1 = first, 2 = first resume, ...) computed the row
 

@@ -140,6 +140,7 @@ struct Solution {
   std::vector<GapResult> gaps;
   std::vector<ContactPairResult> contact;  ///< one per model.contact pair; empty without contact
   std::vector<NodeReaction> reactions;  ///< every node with a prescribed component, in node order (empty before iteration 1)
+  std::vector<SetReaction> set_reactions;  ///< one per Model::reaction_groups entry (empty before iteration 1)
   std::vector<StepResult> steps;  ///< stepped models only, one per Model::steps entry; else empty
   std::optional<ThermalResult> thermal;  ///< models with `thermal` only
   /// The recovered nodal stresses, per node and material side (rr, zz, rz, th); empty before iteration 1.

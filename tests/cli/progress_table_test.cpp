@@ -126,5 +126,31 @@ TEST(ProgressTable, LiveSummaryAddsFrictionOnlyWhenTheRunHasIt) {
   EXPECT_EQ(live_summary(classic), "  E tension 20  closed 92  non-conv -  max clos 486.5 %  0.50 s");
 }
 
+TEST(ProgressTable, AModelWithoutGapsHasNoGapColumns) {
+  // Issue 33: a plain model's rows hold 0 in every gap column ("E tension 0", "max clos 0.0"),
+  // which read as measurements; its table has no such columns.
+  IterationRecord plain;
+  plain.iteration = 1;
+  plain.yielded_elements = 2;
+  plain.seconds = 0.25;
+  std::ostringstream out;
+  ProgressTable table(out);
+  table.print(plain);
+  const std::string text = out.str();
+  for (const char* gone : {"E tension", "> 100 %", "max clos", "avg"}) {
+    EXPECT_EQ(text.find(gone), std::string::npos) << gone << " in\n" << text;
+  }
+  EXPECT_EQ(text.find("non-conv"), text.rfind("non-conv")) << "only N-L non-conv in\n" << text;
+  EXPECT_NE(text.find("yielded"), std::string::npos) << text;
+  EXPECT_EQ(live_summary(plain), "  yielded 2  0.25 s");
+  // A row with gaps keeps them.
+  IterationRecord gapped = plain;
+  gapped.tensile_modulus = 20.0;
+  gapped.gap_closures = {50.0};
+  std::ostringstream with;
+  ProgressTable(with).print(gapped);
+  EXPECT_NE(with.str().find("E tension"), std::string::npos) << with.str();
+}
+
 }  // namespace
 }  // namespace saasgaps::cli

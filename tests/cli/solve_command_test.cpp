@@ -3,6 +3,8 @@
 #include "command_fixture.hpp"
 
 #include <fstream>
+#include <sstream>
+#include <vector>
 
 #include "support/transient_heating.hpp"
 
@@ -261,7 +263,8 @@ TEST_F(SolveCommand, ThermalRunWritesComputedTemperaturesAndHeatFluxThatPlotAndE
   ASSERT_EQ(saasgaps("export-vtu " + path("result.json") + " -o " + path("result.vtu")).exit_code, 0);
   std::ifstream vtu(path("result.vtu"));
   const std::string text((std::istreambuf_iterator<char>(vtu)), std::istreambuf_iterator<char>());
-  EXPECT_NE(text.find("Name=\"q_r\""), std::string::npos);
+  // A plane model's VTU names the flux in its axes (docs/vtu.md): q_x, q_y.
+  EXPECT_NE(text.find("Name=\"q_x\""), std::string::npos);
 }
 
 namespace {
@@ -329,6 +332,35 @@ TEST_F(SolveCommand, TransientHeatRunWithConductingGapsResumesMidWayToTheLastDig
                                    path("resumed.json"));
   EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_EQ(numbers(json_of(path("resumed.json"))), numbers(json_of(path("full.json"))));
+}
+
+}  // namespace
+
+namespace {
+
+/// The README's worked example from the command line: import the two-step press fit, solve it, and
+/// plot the pushed face's force against the load path as a table (plot --field force --set).
+TEST_F(SolveCommand, PressFitForcePlotReadsThePushOutOffTheHistory) {
+  const std::string model = path("press-fit.json"), result = path("press-fit-result.json"), table = path("force.csv");
+  ASSERT_EQ(saasgaps("import " + example("assemblies/press-fit-push-out.assembly.json") + " -o " + model).exit_code, 0);
+  ASSERT_EQ(saasgaps("solve " + model + " -q -o " + result).exit_code, 0);
+  const Outcome r = saasgaps("plot " + result + " --field force --set pushed -o " + table);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // increment,step,step_increment,fr,fz,px,py_fr,py_fz: one row per increment's end (1 + 10).
+  std::ifstream in(table);
+  std::string line;
+  std::vector<std::string> rows;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line[0] != '#' && line.rfind("increment,", 0) != 0) rows.push_back(line);
+  }
+  ASSERT_EQ(rows.size(), 11u);
+  std::vector<std::string> cells;
+  std::stringstream last(rows.back());
+  for (std::string c; std::getline(last, c, ',');) cells.push_back(c);
+  ASSERT_GE(cells.size(), 5u);
+  EXPECT_EQ(cells[1], "2");
+  EXPECT_EQ(cells[2], "10");
+  EXPECT_NEAR(std::stod(cells[4]), 1469.0, 0.01 * 1469.0);  // mu p pi d L, p by Lame (PressFitPushOut)
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 // Mistakes a user makes on the command line, one test each: the exit code docs/cli.md documents and
 // a message that names the mistake (and, for a usage error, one line and where the help is).
+#include <filesystem>
+
 #include "command_fixture.hpp"
 
 namespace {
@@ -157,6 +159,38 @@ TEST_F(UsageErrors, RestartStateHandedToSolveSaysSo) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_CONTAINS(r.err, "this is a restart state");
   EXPECT_CONTAINS(r.err, "--resume");
+}
+
+TEST_F(UsageErrors, FetchRefusesAPlotIntoAFileOfAnotherFormat) {
+  // Checked before any connection: no server listens on port 9.
+  const std::string csv = path("job9-cp.csv");
+  const Outcome r = saasgaps("fetch 9 --plot contact_pressure -o " + csv + " --server http://127.0.0.1:9");
+  EXPECT_EQ(r.exit_code, usage);
+  EXPECT_CONTAINS(r.err, "PNG or SVG");
+  EXPECT_CONTAINS(r.err, "job9-cp.csv");
+  EXPECT_FALSE(std::filesystem::exists(csv));
+  const Outcome mixed = saasgaps("fetch 9 --plot closure.svg -o " + path("c.png") + " --server http://127.0.0.1:9");
+  EXPECT_EQ(mixed.exit_code, usage);
+  EXPECT_CONTAINS(mixed.err, "the plot is svg but FILE ends in .png");
+}
+
+TEST_F(UsageErrors, AlongIsRefusedByEveryPlotWithoutARow) {
+  const std::string result = solved_result();
+  for (const char* field : {"friction", "effective", "convergence", "force"}) {
+    const Outcome r = saasgaps("plot " + result + " --field " + std::string(field) + " --along z -o " + path("p.png"));
+    EXPECT_NE(r.exit_code, 0) << field;
+    EXPECT_CONTAINS(r.err, "--along z: only the closure and contact_pressure plots");
+  }
+}
+
+TEST_F(UsageErrors, ForcePlotNamesTheSetsThereAre) {
+  const std::string result = solved_result();  // report problem 1: no set names a constraint
+  const Outcome none = saasgaps("plot " + result + " --field force --set pushed -o " + path("f.png"));
+  EXPECT_NE(none.exit_code, 0);
+  EXPECT_CONTAINS(none.err, "no reactions of set 'pushed'");
+  const Outcome unset = saasgaps("plot " + result + " --field effective --set pushed -o " + path("f.png"));
+  EXPECT_NE(unset.exit_code, 0);
+  EXPECT_CONTAINS(unset.err, "only --field force");
 }
 
 }  // namespace

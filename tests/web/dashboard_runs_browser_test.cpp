@@ -101,6 +101,16 @@ TEST_F(DashboardRuns, AConvergedRunWithAWarningHasItsOwnBadgeAndTheListShowsTheM
   }
   EXPECT_EQ(std::find(headers.begin(), headers.end(), json("closed")), headers.end()) << headers;
   save_artifact("dashboard-warning-job.png", browser.screenshot());
+
+  // A model without gap elements shows no gap columns and no gap convergence plot (issue 33).
+  open_job(browser, server, clean);
+  ASSERT_TRUE(wait_until(browser, "return document.querySelectorAll('#iterations tbody tr').length > 0;", std::chrono::seconds(30)));
+  const json plain = browser.run("return [...document.querySelectorAll('#iterations thead th')].map(t => t.textContent);");
+  for (const std::string name : {"E tension", "> 100 %", "non-conv", "avg > 100 %", "max clos %", "extrap."}) {
+    EXPECT_EQ(std::find(plain.begin(), plain.end(), json(name)), plain.end()) << name << " in " << plain;
+  }
+  EXPECT_NE(std::find(plain.begin(), plain.end(), json("iter")), plain.end()) << plain;
+  EXPECT_EQ(browser.run("return document.querySelector('#convergence-plot').parentElement.hidden;"), true);
 }
 
 TEST_F(DashboardRuns, ExactModeRunsShowTheirOwnColumnsAndConvergence) {
@@ -387,6 +397,52 @@ namespace {
 
 // A transient heat conduction run: its heat conduction table has a row per output time, the times,
 // steps and temperatures of GET /v1/jobs/{id}/thermal; a model without thermal shows no such table.
+TEST_F(DashboardRuns, ThePressFitPushOutShowsTheSupportForceAndItsPlot) {
+  // Issue 33 through the service: the .geo and the two-step assembly uploaded, imported, solved; the
+  // job's progress line, then the pushed face's force (set_reactions of the history) in the
+  // dashboard's force table and plot.
+  const httplib::MultipartFormDataItems parts{
+      {"assembly", example_text("assemblies/press-fit-push-out.assembly.json"), "press-fit-push-out.assembly.json",
+       "application/json"},
+      {"mesh", example_text("assemblies/press-fit-push-out.geo"), "press-fit-push-out.geo", "text/plain"}};
+  const httplib::Result submitted = client.Post("/v1/imports?submit=true", parts);
+  ASSERT_TRUE(submitted);
+  ASSERT_EQ(submitted->status, 202) << submitted->body;
+  const auto job = json::parse(submitted->body)["id"].get<std::int64_t>();
+  const json done = wait_for_state(client, job, {"converged", "not_converged", "failed"});
+  ASSERT_EQ(done["state"], "converged") << done.dump();
+  const json shown = get_json(client, "/v1/jobs/" + std::to_string(job));
+  const json& progress = shown["progress"];
+  EXPECT_EQ(progress["steps"], 2);
+  EXPECT_EQ(progress["step"], 2);
+  EXPECT_EQ(progress["step_name"], "push");
+  EXPECT_EQ(progress["increment"], 10);
+  EXPECT_EQ(progress["fraction"], 1.0);
+  EXPECT_NE(progress["text"].get<std::string>().find("step 2/2 \"push\", increment 10/10"), std::string::npos) << progress;
+  const json result = get_json(client, "/v1/jobs/" + std::to_string(job) + "/result");
+  ASSERT_EQ(result["set_reactions"].size(), 1U) << result["set_reactions"];
+  const double fz = result["set_reactions"][0]["fz"].get<double>();
+  EXPECT_NEAR(fz, 1469.0, 0.01 * 1469.0);  // mu p pi d L (PressFitPushOut)
+
+  Browser browser(dir / "chromium-profile");
+  open_job(browser, server, job);
+  ASSERT_TRUE(wait_until(browser, "return !document.querySelector('#forces-section').hidden;", std::chrono::seconds(30)));
+  const json table = browser.run(
+      "return [...document.querySelectorAll('#forces tbody tr')].map(tr => [...tr.children].map(td => td.textContent));");
+  ASSERT_EQ(table.size(), 2U) << table;  // the set and the contact pair
+  EXPECT_EQ(table[0][0], "set pushed");
+  EXPECT_NEAR(std::strtod(table[0][2].get<std::string>().c_str(), nullptr), fz, 0.01) << table;
+  EXPECT_EQ(table[0][3], "step 2, increment 10");
+  // The force plot: one point per increment's end (1 + 10) on the set's curve, rising then flat.
+  const json values = browser.run(
+      "const line = document.querySelector('#force-plot polyline[data-series=\"set pushed fz\"]');"
+      "return line ? line.getAttribute('points').split(' ').length : 0;");
+  EXPECT_EQ(values, 11);
+  EXPECT_NE(browser.run("return document.querySelector('#job-progress').textContent;").get<std::string>().find("100 %"),
+            std::string::npos);
+  save_artifact("dashboard-press-fit-forces.png", browser.screenshot());
+}
+
 TEST_F(DashboardRuns, ATransientHeatRunShowsItsThermalRowsInATable) {
   const std::int64_t job = submit_job(client, transient_heating("ring-shrink-fit-plane-strain.json", {.hot = 400.0}).dump());
   ASSERT_EQ(wait_for_state(client, job, {"converged", "not_converged", "failed"})["state"], "converged");

@@ -1,5 +1,7 @@
 #include "cli/client/client_commands.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
@@ -60,6 +62,29 @@ std::string plot_file(const std::string& name, const std::string& output) {
   };
   if (ends_with(name, ".png") || ends_with(name, ".svg")) return name;
   return name + (ends_with(output, ".svg") ? ".svg" : ".png");
+}
+
+/// A plot is written in its own format only: FILE ends in .png or .svg, and agrees with an
+/// extension NAME gives (a .csv of PNG bytes would be a broken file that exits 0).
+void check_plot_output(const std::string& name, const std::string& output) {
+  const auto extension = [](const std::string& file) {
+    const auto dot = file.rfind('.');
+    const auto slash = file.rfind('/');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return std::string();
+    std::string ext = file.substr(dot);
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+  };
+  const std::string ext = extension(output);
+  if (ext != ".png" && ext != ".svg") {
+    throw UsageError("fetch --plot -o " + output + ": a plot is written as PNG or SVG only; give a FILE ending in "
+                     ".png or .svg (a result's values are in `fetch --result`, or `--vtu` for ParaView)");
+  }
+  const std::string named = extension(name);
+  if ((named == ".png" || named == ".svg") && named != ext) {
+    throw UsageError("fetch --plot " + name + " -o " + output + ": the plot is " + named.substr(1) +
+                     " but FILE ends in " + ext + "; give the same format to both");
+  }
 }
 
 }  // namespace
@@ -195,6 +220,7 @@ int ClientCommands::resume() const {
 }
 
 int ClientCommands::fetch() const {
+  if (!fetch_plot_.empty() && output_ != "-") check_plot_output(fetch_plot_, output_);
   if (output_ != "-") require_writable(output_, "-o");
   std::string part = "/result";
   if (fetch_vtu_) part = "/result.vtu";

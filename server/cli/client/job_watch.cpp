@@ -12,6 +12,7 @@
 #include "cli/common/usage.hpp"
 #include "io/results/history_json.hpp"
 #include "io/results/thermal_row_json.hpp"
+#include "service/http/job_progress.hpp"
 
 namespace saasgaps::cli {
 
@@ -24,18 +25,34 @@ struct JobView {
   std::string state = "queued";
   int iteration = 0;
   std::optional<IterationRecord> row;
+  json row_json;  ///< the last iteration event's row, for the progress line
 };
 
-/// The live line: "job 3  running  iteration 7" and the row's key columns (live_summary).
-std::string live_line(std::int64_t job, const JobView& view) {
-  std::string line = "job " + std::to_string(job) + "  " + view.state + "  iteration " + std::to_string(view.iteration);
+/// Where the job is on its load path (service/http/job_progress.hpp), from the job as the watch
+/// began: the load path, the iteration limit and when it started.
+struct PathView {
+  service::LoadPlan plan;
+  int max_iterations = 0;
+  std::chrono::steady_clock::time_point since = std::chrono::steady_clock::now();
+  double elapsed_before = 0.0;  ///< seconds the job had run when the watch began
+};
+
+/// The live line: "job 3  running  step 2/2 "push", increment 3/10, iteration 12: 20 % of the load
+/// path done, about 8 s left" and the row's key columns (live_summary).
+std::string live_line(std::int64_t job, const JobView& view, const PathView& path) {
+  const double elapsed =
+      path.elapsed_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - path.since).count();
+  const json progress = service::job_progress(path.plan, view.row_json, view.state == "running",
+                                              view.state == "converged", path.max_iterations, elapsed);
+  std::string line = "job " + std::to_string(job) + "  " + view.state + "  " + progress.value("text", std::string());
   if (view.row) line += live_summary(*view.row);
   return line;
 }
 
 class Watcher {
  public:
-  Watcher(std::int64_t job, bool wide) : job_(job), live_(::isatty(STDOUT_FILENO) == 1), table_(std::cout, wide) {}
+  Watcher(std::int64_t job, bool wide, PathView path)
+      : job_(job), live_(::isatty(STDOUT_FILENO) == 1), table_(std::cout, wide), path_(std::move(path)) {}
 
   void on_event(const ServerEvent& event) {
     last_id_ = event.id;
@@ -52,6 +69,7 @@ class Watcher {
         return;  // a row of another version: the live line keeps the last one understood
       }
       view_.iteration = view_.row->iteration;
+      view_.row_json = data;
       if (!live_) table_.print(*view_.row);
     } else if (event.name == "thermal") {
       try {
@@ -63,14 +81,16 @@ class Watcher {
         return;  // a row of another version: skipped like an unknown iteration row
       }
     }
-    if (live_) std::cout << "\r\033[K" << live_line(job_, view_);
+    if (live_) std::cout << "\r\033[K" << live_line(job_, view_, path_);
     std::cout.flush();
   }
 
   /// Ends the live line and prints how the job ended.
   void finish(const json& job) {
     view_.state = job.value("state", view_.state);
-    if (live_) std::cout << "\r\033[K" << live_line(job_, view_) << '\n';
+    if (live_) std::cout << "\r\033[K" << live_line(job_, view_, path_) << '\n';
+    // Piped output has no live line: the job's own progress line closes it.
+    if (!live_ && job.contains("progress")) std::cout << "job " << job_ << ": " << job["progress"].value("text", "") << '\n';
     std::cout << "job " << job_ << " " << view_.state;
     const json message = job.value("message", json());
     const json error = job.value("error", json());
@@ -88,6 +108,7 @@ class Watcher {
   std::int64_t job_;
   bool live_;
   ProgressTable table_;
+  PathView path_;
   JobView view_;
   std::string last_id_;
 };
@@ -103,7 +124,17 @@ int exit_code_of_job_state(const std::string& state) {
 
 int watch_job(ServiceClient& client, std::int64_t job, bool wide) {
   const std::string path = "/v1/jobs/" + std::to_string(job);
-  Watcher watcher(job, wide);
+  // The load path, the iteration limit and the time run so far, from the job as the watch begins.
+  PathView path_view;
+  {
+    const json first = json::parse(client.get(path));
+    const json progress = first.value("progress", json::object());
+    path_view.plan = service::load_plan_of_progress(progress);
+    path_view.max_iterations = first.value("max_iterations", 0);
+    const json started = first.value("started_at", json());
+    if (started.is_string()) path_view.elapsed_before = service::seconds_since(started.get<std::string>(), std::chrono::system_clock::now());
+  }
+  Watcher watcher(job, wide, std::move(path_view));
   constexpr int reconnects = 5;
   for (int attempt = 0;; ++attempt) {
     // The stream ends when the job has finished, or breaks (the server stopped: the job is then

@@ -15,10 +15,21 @@ int run_plot(const PlotOptions& options) {
   request.name = options.field;
   // Checked before the result is read: a typo should not cost the parse of a large document.
   plot::require_plot_name(request.name);
+  // --along sets the x axis of a gap row or contact pair: every other plot has none, and says so
+  // rather than draw something else than asked.
+  if (!options.along.empty() && (!options.path.empty() || (options.field != "closure" && options.field != "contact_pressure"))) {
+    throw std::invalid_argument("--along " + options.along + ": only the closure and contact_pressure plots run along a "
+                                "gap row or contact pair; the " + options.field +
+                                (options.path.empty() ? " plot has no such axis" : " plot along --path runs along the path"));
+  }
   const bool table = options.output_path.size() >= 4 &&
                      options.output_path.compare(options.output_path.size() - 4, 4, ".csv") == 0;
   if (!table) request.format = plot::image_format_for_path(options.output_path);
   require_writable(options.output_path, "-o");
+  request.set = options.set;
+  if (!options.set.empty() && options.field != "force") {
+    throw std::invalid_argument("--set " + options.set + ": only --field force plots a node set's reactions");
+  }
   request.width = options.width;
   request.height = options.height;
   try {

@@ -22,8 +22,9 @@ struct PlotOptions {
   std::string color_map = "auto";  ///< auto (diverging when the range spans zero, else viridis) or a map
   std::string centre;  ///< "r,z": the centre of sigma_radial, sigma_hoop, ..; empty: the origin
   std::string gaps;             ///< the gap row: "81-98" etc.; empty: every gap
-  std::string along = "index";  ///< gap row x axis: index | position | r | z
+  std::string along;            ///< gap row x axis: index | position | r | z (empty: index)
   std::string path;             ///< "r0,z0;r1,z1;..": plot the field along it
+  std::string set;              ///< --field force: the node set whose summed reactions to plot
   int samples = 201;
 };
 

@@ -60,7 +60,18 @@ bool ProgressTable::exact_row(const IterationRecord& row) const {
   return exact_.value_or(row.active_set_iterations > 0);
 }
 
-bool ProgressTable::classic_columns(const IterationRecord& row) const { return wide_ || !exact_row(row); }
+bool ProgressTable::classic_columns(const IterationRecord& row) const {
+  return gap_columns(row) && (wide_ || !exact_row(row));
+}
+
+bool has_gap_values(const IterationRecord& row) {
+  // A model without gap elements or contact pairs: no closures, no modulus, nothing closed (its 0s
+  // would read as measurements).
+  return row.active_set_iterations > 0 || !row.gap_closures.empty() || row.tensile_modulus != 0.0 ||
+         row.closed_gaps != 0 || row.max_closure != 0.0;
+}
+
+bool ProgressTable::gap_columns(const IterationRecord& row) const { return gaps_.value_or(has_gap_values(row)); }
 
 bool ProgressTable::friction_row(const IterationRecord& row) const { return friction_ || io::has_friction_columns(row); }
 
@@ -68,10 +79,10 @@ std::string ProgressTable::header_text(const IterationRecord& row) const {
   std::string line = column("iter", iteration_width);
   if (row.step > 0) line += column("step/inc", step_width);
   if (classic_columns(row)) line += column("E tension", modulus_width);
-  line += column(count_heading(exact_row(row)), count_width);
+  if (gap_columns(row)) line += column(count_heading(exact_row(row)), count_width);
   if (classic_columns(row)) line += column("non-conv", nonconverged_width);
-  line += column(average_heading(exact_row(row)), closure_width) + column("max clos %", closure_width) + column("yielded", count_width) +
-          column("N-L non-conv", plastic_width);
+  if (gap_columns(row)) line += column(average_heading(exact_row(row)), closure_width) + column("max clos %", closure_width);
+  line += column("yielded", count_width) + column("N-L non-conv", plastic_width);
   if (wide_) {
     for (const WatchedElement& e : row.watch_elements) {
       const std::string id = "el " + std::to_string(e.id);
@@ -94,10 +105,10 @@ std::string ProgressTable::row_text(const IterationRecord& row) const {
   std::string line = column(std::to_string(row.iteration) + (row.extrapolated ? "x" : ""), iteration_width);
   if (row.step > 0) line += column(std::to_string(row.step) + "/" + std::to_string(row.increment), step_width);
   if (classic_columns(row)) line += column(number("%.5g", row.tensile_modulus), modulus_width);
-  line += column(std::to_string(row.closed_gaps), count_width);
+  if (gap_columns(row)) line += column(std::to_string(row.closed_gaps), count_width);
   if (classic_columns(row)) line += column(nonconverged, nonconverged_width);
-  line += column(average(row), closure_width) + column(closure(row.max_closure), closure_width) +
-          column(std::to_string(row.yielded_elements), count_width) +
+  if (gap_columns(row)) line += column(average(row), closure_width) + column(closure(row.max_closure), closure_width);
+  line += column(std::to_string(row.yielded_elements), count_width) +
           column(std::to_string(row.nonconverged_plastic), plastic_width);
   if (wide_) {
     for (const WatchedElement& e : row.watch_elements) {
@@ -125,7 +136,9 @@ std::string live_summary(const IterationRecord& r) {
   std::string line;
   if (r.step > 0) line += "  step " + std::to_string(r.step) + " increment " + std::to_string(r.increment);
   char text[200];
-  if (r.active_set_iterations > 0) {
+  if (!has_gap_values(r)) {
+    std::snprintf(text, sizeof text, "  yielded %d  %.2f s", r.yielded_elements, r.seconds);
+  } else if (r.active_set_iterations > 0) {
     std::snprintf(text, sizeof text, "  closed %d  pairs %d  complement. %.1e  max clos %.1f %%  %.2f s", r.closed_gaps,
                   r.contact_pairs, r.complementarity, r.max_closure, r.seconds);
   } else {
@@ -169,6 +182,7 @@ void ProgressTable::print(const IterationRecord& row) {
     out_ << header_text(row) << '\n';
     // Exact-mode rows carry their active sets; the header fixes the columns for every later row.
     if (!exact_) exact_ = row.active_set_iterations > 0;
+    if (!gaps_) gaps_ = has_gap_values(row);
   }
   out_ << row_text(row) << '\n';
   out_.flush();

@@ -45,10 +45,14 @@ class ProgressTable {
   [[nodiscard]] bool exact_row(const IterationRecord& row) const;
   [[nodiscard]] bool classic_columns(const IterationRecord& row) const;
   [[nodiscard]] bool friction_row(const IterationRecord& row) const;
+  /// The gap columns (closed, average and maximum closure; classic: E tension, non-conv): models
+  /// with gap elements or contact only (has_gap_values), fixed with the header.
+  [[nodiscard]] bool gap_columns(const IterationRecord& row) const;
   std::ostream& out_;
   bool wide_;
   bool friction_;  // friction columns: set by the model, or by the first row that has them
   std::optional<bool> exact_;  // set when the header is printed: exact-contact columns or not
+  std::optional<bool> gaps_;   // set when the header is printed: gap columns or not
 };
 
 /// The key columns of a row on one line, for the live display of `saasgaps watch` (after "job 3
@@ -56,5 +60,9 @@ class ProgressTable {
 /// rows "  closed 4  pairs 17  complement. 2.5e-15  max clos 100.0 %  0.12 s"; stepped rows begin
 /// with "  step 2 increment 3"; rows with friction end with "  stick 11  slip 6  friction 3.0e-13".
 std::string live_summary(const IterationRecord& row);
+
+/// Whether a row has gap values to show: gap closures, a tensile modulus, closed gaps or exact
+/// contact. A model without gap elements or contact has none, and its table no gap columns.
+bool has_gap_values(const IterationRecord& row);
 
 }  // namespace saasgaps::cli

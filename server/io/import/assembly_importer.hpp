@@ -105,6 +105,12 @@ class Importer {
 
   // ---- loads (assembly_loads.cpp)
   void loads(json& model);
+  /// A loads object (at p) as the model's, or nullopt when it is no object (reported).
+  std::optional<json> converted_loads(const json& loads, const std::string& p);
+
+  // ---- load steps (assembly_steps.cpp) and the named sets of the groups used (assembly_sets.cpp)
+  void steps(json& model);
+  void sets(json& model) const;
   void pressures(const json& loads, const std::string& p, json& out);
   void nodal_forces(const json& loads, const std::string& p, json& out);
   void temperatures(const json& loads, const std::string& p, json& out);
@@ -145,6 +151,7 @@ class Importer {
   std::optional<MeshGroups> groups_;  ///< once the mesh is loaded
   std::set<int> material_ids_;
   std::map<int, int> surface_material_;  ///< Gmsh surface tag -> material id, from regions
+  std::map<std::string, const PhysicalGroup*> used_groups_;  ///< every named group a value names, by name
   GeneratedOrigins origins_;
 };
 

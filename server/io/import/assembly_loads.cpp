@@ -20,14 +20,18 @@ namespace saasgaps::io::assembly {
 void Importer::loads(json& model) {
   const auto it = doc_.find("loads");
   if (it == doc_.end()) return;
+  if (auto out = converted_loads(*it, "/loads")) model["loads"] = std::move(*out);
+}
+
+std::optional<json> Importer::converted_loads(const json& loads, const std::string& p) {
   const auto kinds = load_kind_names.names();
-  if (!check_object(*it, "/loads", {}, kinds, reporter())) return;
+  if (!check_object(loads, p, {}, kinds, reporter())) return std::nullopt;
   json out = json::object();
-  pressures(*it, "/loads", out);
-  nodal_forces(*it, "/loads", out);
-  temperatures(*it, "/loads", out);
-  if (const auto b = it->find("body_force"); b != it->end()) out["body_force"] = *b;
-  model["loads"] = std::move(out);
+  pressures(loads, p, out);
+  nodal_forces(loads, p, out);
+  temperatures(loads, p, out);
+  if (const auto b = loads.find("body_force"); b != loads.end()) out["body_force"] = *b;
+  return out;
 }
 
 /// pressures: [{group (curve), normal?, shear?}] on every edge of the group, each edge listed in the

@@ -91,6 +91,7 @@ const PhysicalGroup* Importer::named_group(const json& value, const std::string&
   std::string problem;
   const PhysicalGroup* g = groups_->find(value.get<std::string>(), use.dims, use.role, use.needs, problem);
   if (g == nullptr) report(at, problem);
+  if (g != nullptr && !g->name.empty()) used_groups_.emplace(g->name, g);
   return g;
 }
 

@@ -17,7 +17,7 @@ namespace assembly {
 /// every problem of the document; only a document that is not an object stops at once.
 json Importer::run() {
   if (!object(doc_, "", {"schema_version", "title", "mesh", "analysis", "materials", "regions", "constraints"},
-              {"description", "units", "order", "loads", "gaps", "thermal", "solver", "output"})) {
+              {"description", "units", "order", "loads", "gaps", "thermal", "solver", "output", "steps"})) {
     throw ModelError(std::move(issues_), "assembly");
   }
   if (const auto v = doc_.find("schema_version"); v != doc_.end()) {
@@ -35,7 +35,9 @@ json Importer::run() {
   gaps(model);
   constraints(model);
   loads(model);
+  steps(model);
   thermal(model);
+  sets(model);
   for (const char* key : {"solver", "output"}) {
     if (const auto v = doc_.find(key); v != doc_.end()) model[key] = *v;
   }

@@ -31,8 +31,24 @@ void write_history_row(JsonWriter& out, const IterationRecord& r) {
   out.field("iteration", r.iteration)
       .field("max_closure", r.max_closure)
       .field("nonconverged_gaps", r.nonconverged_gaps)
-      .field("nonconverged_plastic", r.nonconverged_plastic)
-      .field("seconds", r.seconds);
+      .field("nonconverged_plastic", r.nonconverged_plastic);
+  // The end of a converged increment only (history_json.hpp).
+  if (!r.pair_forces.empty()) {
+    out.key("pair_forces").begin_array();
+    for (const PairForce& f : r.pair_forces) {
+      out.begin_object().field("fr", f.f_r).field("fz", f.f_z);
+      out.key("surfaces").begin_array().value(f.surfaces[0]).value(f.surfaces[1]).end_array().end_object();
+    }
+    out.end_array();
+  }
+  out.field("seconds", r.seconds);
+  if (!r.set_reactions.empty()) {
+    out.key("set_reactions").begin_array();
+    for (const SetReaction& f : r.set_reactions) {
+      out.begin_object().field("fr", f.f_r).field("fz", f.f_z).field("set", f.set).end_object();
+    }
+    out.end_array();
+  }
   if (friction) out.field("slip_points", r.slip_points);
   if (stepped) out.field("step", r.step);
   if (friction) out.field("stick_points", r.stick_points);
@@ -113,6 +129,10 @@ json history_row_json(const IterationRecord& r) {
     row["step"] = r.step;
     row["increment"] = r.increment;
   }
+  for (const SetReaction& f : r.set_reactions) row["set_reactions"].push_back({{"set", f.set}, {"fr", f.f_r}, {"fz", f.f_z}});
+  for (const PairForce& f : r.pair_forces) {
+    row["pair_forces"].push_back({{"surfaces", json::array({f.surfaces[0], f.surfaces[1]})}, {"fr", f.f_r}, {"fz", f.f_z}});
+  }
   return row;
 }
 
@@ -139,6 +159,16 @@ IterationRecord history_row_from_json(const json& j) {
   r.friction_residual = j.value("friction_residual", 0.0);
   r.step = j.value("step", 0);
   r.increment = j.value("increment", 0);
+  if (const auto sets = j.find("set_reactions"); sets != j.end()) {
+    for (const json& f : *sets) r.set_reactions.push_back({f.at("set").get<std::string>(), f.at("fr").get<double>(), f.at("fz").get<double>()});
+  }
+  if (const auto pairs = j.find("pair_forces"); pairs != j.end()) {
+    for (const json& f : *pairs) {
+      r.pair_forces.push_back({{f.at("surfaces").at(0).get<std::string>(), f.at("surfaces").at(1).get<std::string>()},
+                               f.at("fr").get<double>(),
+                               f.at("fz").get<double>()});
+    }
+  }
   for (const json& e : j.at("watch").at("elements")) {
     r.watch_elements.push_back({e.at("id").get<int>(), e.at("sigma_r").get<double>(), e.at("sigma_z").get<double>(),
                                 e.at("tau_rz").get<double>(), e.at("sigma_theta").get<double>(),

@@ -16,7 +16,8 @@ namespace saasgaps::io {
 /// nonconverged_plastic, seconds, tensile_modulus, watch {elements, gaps}, yielded_elements; in
 /// exact contact mode also active_set_iterations, complementarity and contact_pairs; in a stepped
 /// model step and increment; with friction (has_friction_columns) friction_residual, slip_points
-/// and stick_points.
+/// and stick_points; at the end of a converged increment, pair_forces [{fr, fz, surfaces}] (models
+/// with contact pairs) and set_reactions [{fr, fz, set}] (models whose constraints name node sets).
 void write_history_row(JsonWriter& out, const IterationRecord& row);
 
 /// Whether the row carries the friction columns stick_points, slip_points and friction_residual: a

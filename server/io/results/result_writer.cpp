@@ -180,8 +180,13 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s, const 
     out.begin_object().field("fr", r.f_r).field("fz", r.f_z).field("node", r.id).end_object();
   }
   out.end_array();
-  out.field("reference_temperature", model.reference_temperature)
-      .field("status", s.status == RunStatus::converged ? "converged" : "not_converged");
+  out.field("reference_temperature", model.reference_temperature);
+  if (!model.reaction_groups.empty()) {  // models whose constraints name node sets only
+    out.key("set_reactions").begin_array();
+    for (const SetReaction& r : s.set_reactions) out.begin_object().field("fr", r.f_r).field("fz", r.f_z).field("set", r.set).end_object();
+    out.end_array();
+  }
+  out.field("status", s.status == RunStatus::converged ? "converged" : "not_converged");
   if (!s.steps.empty()) {  // stepped models only
     // A transient heat run's steps are its output times: each gives its time and the node
     // temperatures there (the temperature history), in the model's node order.

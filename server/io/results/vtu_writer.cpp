@@ -3,7 +3,9 @@
 #include "solver/fe/element_family.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <string_view>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -202,12 +204,29 @@ std::string vtu_document(const ResultArrays& result, VtuFormat format) {
     }
     m.piece.point_data.push_back({"reaction" + vtu_unit_suffix(document, "force"), 3, std::move(force)});
   }
+  // Plane models name their components x, y (the result's r, z) and z out of the plane; axisymmetric
+  // ones keep the cylindrical names (docs/vtu.md).
+  const bool plane = document.value("analysis", std::string()).starts_with("plane");
+  const auto named = [plane](const char* key) -> std::string {
+    static constexpr std::array<std::pair<std::string_view, std::string_view>, 10> in_plane{{
+        {"sigma_r", "sigma_x"}, {"sigma_z", "sigma_y"}, {"tau_rz", "tau_xy"}, {"sigma_theta", "sigma_z"},
+        {"eps_r", "eps_x"}, {"eps_z", "eps_y"}, {"gamma_rz", "gamma_xy"}, {"eps_theta", "eps_z"},
+        {"q_r", "q_x"}, {"q_z", "q_y"}}};
+    if (plane) {
+      for (const auto& [cylindrical, planar] : in_plane) {
+        if (cylindrical == key) return std::string(planar);
+      }
+    }
+    return key;
+  };
   add_contact_point_data(document, nodes, stress, length, m.piece.point_data);
-  // The recovered nodal stresses (docs/recovery.md), named "recovered_*": NaN at a node of no solid.
+  // The recovered nodal stresses (docs/recovery.md), named "recovered_" and the component (plane or
+  // cylindrical as the cells' stresses): NaN at a node of no solid.
   if (std::any_of(nodes.stress[0].begin(), nodes.stress[0].end(), [](double v) { return !std::isnan(v); })) {
-    const std::array<const char*, 5> names{"recovered_sigma_r", "recovered_sigma_z", "recovered_tau_rz",
-                                           "recovered_sigma_theta", "recovered_effective"};
-    for (std::size_t k = 0; k < names.size(); ++k) m.piece.point_data.push_back({names[k] + stress, 1, nodes.stress[k]});
+    const std::array<const char*, 5> keys{"sigma_r", "sigma_z", "tau_rz", "sigma_theta", "effective"};
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      m.piece.point_data.push_back({"recovered_" + named(keys[k]) + stress, 1, nodes.stress[k]});
+    }
   }
 
   // ---- Cell data: element-only values (0 on gaps) and gap-only values (0 on solids), by their
@@ -245,17 +264,17 @@ std::string vtu_document(const ResultArrays& result, VtuFormat format) {
     cells.push_back({"material", 1, std::move(material)});
   }
   for (const char* key : {"sigma_r", "sigma_z", "tau_rz", "sigma_theta", "sigma_1", "sigma_2"}) {
-    solid_values(key + stress, key);
+    solid_values(named(key) + stress, key);
   }
   solid_values("principal_angle", "angle");
   m.piece.active_cell_scalars = "effective" + stress;
   solid_values(m.piece.active_cell_scalars, "effective");
-  for (const char* key : {"eps_r", "eps_z", "gamma_rz", "eps_theta"}) solid_values(key, key);
+  for (const char* key : {"eps_r", "eps_z", "gamma_rz", "eps_theta"}) solid_values(named(key), key);
   // Thermal runs: the element heat flux (power / area; the result has it on every solid or none).
   if (const auto q = std::find(result.element_keys.begin(), result.element_keys.end(), "q_r");
       m.solids->size() > 0 && q != result.element_keys.end() &&
       m.solids->first_missing[static_cast<std::size_t>(q - result.element_keys.begin())] != std::size_t{0}) {
-    for (const char* key : {"q_r", "q_z"}) solid_values(key, key);
+    for (const char* key : {"q_r", "q_z"}) solid_values(named(key), key);
   }
   // The estimated error in the energy norm per element (results with an error estimate).
   if (const auto err = std::find(result.element_keys.begin(), result.element_keys.end(), "error");
@@ -265,6 +284,7 @@ std::string vtu_document(const ResultArrays& result, VtuFormat format) {
   }
   solid_flags("yield", "yield", 0);
   solid_flags("plastic_converged", "plastic_converged", 1);
+  if (m.gaps.empty()) return encode_vtu(m.piece, format);  // no gap elements: no all-zero gap arrays
   gap_values("gap_closure", gap_member("closure"));
   gap_values("gap_eps_m", gap_member("eps_m"));
   gap_values("gap_sigma_m" + stress, gap_member("sigma_m"));

@@ -12,12 +12,12 @@ namespace {
 
 constexpr std::array<std::string_view, section_count> section_keys{
     "schema_version", "title", "description", "units", "analysis", "nodes", "materials",
-    "elements", "gaps", "constraints", "loads", "solver", "output", "steps", "contact", "thermal"};
+    "elements", "gaps", "sets", "constraints", "loads", "solver", "output", "steps", "contact", "thermal"};
 
 constexpr std::array<std::string_view, 7> required_root_keys{"schema_version", "title", "analysis", "nodes",
                                                             "materials", "elements", "constraints"};
-constexpr std::array<std::string_view, 9> optional_root_keys{"description", "units", "gaps", "loads", "solver",
-                                                            "output", "steps", "contact", "thermal"};
+constexpr std::array<std::string_view, 10> optional_root_keys{"description", "units", "gaps", "sets", "loads",
+                                                             "solver", "output", "steps", "contact", "thermal"};
 
 }  // namespace
 
@@ -36,11 +36,12 @@ std::span<const Section> dependencies(Section s) {
   static constexpr std::array<Section, 1> on_analysis{Section::analysis};
   static constexpr std::array<Section, 2> on_nodes_and_materials{Section::nodes, Section::materials};
   static constexpr std::array<Section, 2> on_nodes_and_elements{Section::nodes, Section::elements};
-  static constexpr std::array<Section, 1> on_nodes{Section::nodes};
-  static constexpr std::array<Section, 3> on_loads{Section::analysis, Section::nodes, Section::elements};
+  static constexpr std::array<Section, 3> on_nodes_and_every_element{Section::nodes, Section::elements, Section::gaps};
+  static constexpr std::array<Section, 2> on_nodes_and_sets{Section::nodes, Section::sets};
+  static constexpr std::array<Section, 4> on_loads{Section::analysis, Section::nodes, Section::elements, Section::sets};
   static constexpr std::array<Section, 2> on_all_elements{Section::elements, Section::gaps};
-  static constexpr std::array<Section, 4> on_loads_and_constraints{Section::analysis, Section::nodes,
-                                                                   Section::elements, Section::constraints};
+  static constexpr std::array<Section, 5> on_loads_and_constraints{Section::analysis, Section::nodes, Section::elements,
+                                                                   Section::sets, Section::constraints};
   // thermal judges its edges, sources and conflicts against every section before it.
   static constexpr std::array<Section, 8> on_everything_before{
       Section::analysis, Section::nodes, Section::materials, Section::elements,
@@ -49,7 +50,8 @@ std::span<const Section> dependencies(Section s) {
     case Section::nodes: return on_analysis;
     case Section::elements: return on_nodes_and_materials;
     case Section::gaps: return on_nodes_and_elements;
-    case Section::constraints: return on_nodes;
+    case Section::sets: return on_nodes_and_every_element;
+    case Section::constraints: return on_nodes_and_sets;
     case Section::loads: return on_loads;
     case Section::output: return on_all_elements;
     case Section::steps: return on_loads_and_constraints;
@@ -108,6 +110,7 @@ void SectionReader::read_section(Section s, const json* value) {
     case Section::solver: read_solver(root); break;
     case Section::output: read_output(root); break;
     case Section::steps: read_steps(root); break;
+    case Section::sets: read_sets(root); break;
     case Section::contact: read_contact(root); break;
     case Section::thermal: read_thermal(root); break;
     case Section::nodes:
@@ -381,13 +384,18 @@ void SectionReader::read_gaps(const Obj& root) {
 
 /// One of a non-empty array of {node, r?, z?} with r and/or z; no component of a node twice.
 void SectionReader::read_constraint(const json& item, const std::string& pointer) {
-  if (auto c = read_constraint_item(item, pointer, prescribed_)) model_.constraints.push_back(*c);
+  for (const Constraint& c : read_constraint_item(item, pointer, prescribed_)) model_.constraints.push_back(c);
 }
 
 /// {node, r?, z?} with r and/or z; a component of a node not already in `seen` (which it joins).
-std::optional<Constraint> SectionReader::read_constraint_item(const json& item, const std::string& pointer,
-                                                              PrescribedAt& seen) {
-  if (!object(item, pointer, {"node"}, {"r", "z"})) return std::nullopt;
+/// {set, r?, z?}: the same for each node of a node set (read_set_constraint).
+std::vector<Constraint> SectionReader::read_constraint_item(const json& item, const std::string& pointer,
+                                                            PrescribedAt& seen) {
+  if (item.is_object() && item.contains("set") && !item.contains("node")) {
+    if (!object(item, pointer, {"set"}, {"r", "z"})) return {};
+    return read_set_constraint(Obj{&item, pointer}, seen);
+  }
+  if (!object(item, pointer, {"node"}, {"r", "z"})) return {};
   const Obj o{&item, pointer};
   const json* node_id = o.find("node");
   const Entry* node = node_id == nullptr ? nullptr : resolve_node(*node_id, Where(o.pointer, "node"));
@@ -398,7 +406,7 @@ std::optional<Constraint> SectionReader::read_constraint_item(const json& item, 
     report(pointer, "the constraint of node " + (node_id ? quote(*node_id) : std::string("?")) +
                         " prescribes neither r nor z; give r and/or z (the prescribed displacement)");
   }
-  if (node == nullptr) return std::nullopt;
+  if (node == nullptr) return {};
   c.node = node->index;
   for (const char component : {'r', 'z'}) {
     const std::string_view key = component == 'r' ? "r" : "z";
@@ -406,10 +414,10 @@ std::optional<Constraint> SectionReader::read_constraint_item(const json& item, 
     const auto [first, fresh] = seen.emplace(std::pair{node->index, component}, o.at(key));
     if (!fresh) {
       report(o.at(key), std::string(key) + " of node " + quote(*node_id) + " is already prescribed at " +
-                            first->second + "; prescribe each component once");
+                            first->second.pointer + "; prescribe each component once");
     }
   }
-  return c;
+  return {c};
 }
 
 void SectionReader::read_loads(const Obj& root) {
@@ -458,6 +466,11 @@ void SectionReader::read_pressures(const Obj& loads, Loads& into) {
   const EdgeOwners owners = solid_edge_owners();
   for (std::size_t i = 0; i < list->size(); ++i) {
     const std::string pointer = pointer_append(loads.at("pressures"), i);
+    const json& item = (*list)[i];
+    if (item.is_object() && item.contains("set") && !item.contains("nodes")) {
+      read_set_pressure(Obj{&item, pointer}, owners, into);
+      continue;
+    }
     if (!object((*list)[i], pointer, {"nodes"}, {"normal", "shear"})) continue;
     const Obj o{&(*list)[i], pointer};
     EdgePressure p;

@@ -6,7 +6,8 @@
 /// section whole; both give the same issues in the same order.
 ///
 /// Files: section_reader.cpp (the sections, in document order), section_steps.cpp (load steps),
-/// section_contact.cpp (contact surfaces and pairs),
+/// section_contact.cpp (contact surfaces and pairs), section_sets.cpp (named sets of nodes, edges
+/// and elements, and the constraints and pressures that name them),
 /// section_thermal.cpp (heat conduction: the thermal section and the materials' k and c),
 /// section_checks.cpp (generic
 /// value checks and temperature tables), section_references.cpp (ids, references and element
@@ -146,10 +147,10 @@ inline int as_index(std::size_t i) { return static_cast<int>(i); }
 
 /// The top-level members of a model document, in the order the reader judges them.
 enum class Section {
-  schema_version, title, description, units, analysis, nodes, materials, elements, gaps, constraints, loads,
+  schema_version, title, description, units, analysis, nodes, materials, elements, gaps, sets, constraints, loads,
   solver, output, steps, contact, thermal
 };
-constexpr std::size_t section_count = 16;
+constexpr std::size_t section_count = 17;
 
 /// The member name of a section.
 std::string_view section_key(Section s);
@@ -350,9 +351,33 @@ class SectionReader {
   void read_element(const json& item, const std::string& pointer);
   void read_gaps(const Obj& root);
   void read_constraint(const json& item, const std::string& pointer);
-  /// (node index, component) -> pointer of the value that prescribed it.
-  using PrescribedAt = std::map<std::pair<int, char>, std::string>;
-  std::optional<Constraint> read_constraint_item(const json& item, const std::string& pointer, PrescribedAt& seen);
+  /// Where a component was prescribed, and its value when a node set prescribed it (two sets that
+  /// share a node may prescribe the same value there).
+  struct Prescribed {
+    Prescribed(std::string at) : pointer(std::move(at)) {}  // NOLINT: a node's own constraint
+    Prescribed(std::string at, double value) : pointer(std::move(at)), set_value(value) {}
+    std::string pointer;
+    std::optional<double> set_value;
+  };
+  /// (node index, component) -> where the value that prescribed it is.
+  using PrescribedAt = std::map<std::pair<int, char>, Prescribed>;
+  /// {node, r?, z?}: one constraint; {set, r?, z?}: one per node of the set (section_sets.cpp).
+  std::vector<Constraint> read_constraint_item(const json& item, const std::string& pointer, PrescribedAt& seen);
+  // section_sets.cpp
+  void read_sets(const Obj& root);
+  void read_node_sets(const Obj& sets);
+  void read_edge_sets(const Obj& sets);
+  void read_element_sets(const Obj& sets);
+  /// The constraints of {set, r?, z?} (checked by the caller), each component once per node unless
+  /// another set gave it the same value; the set joins the model's reaction groups.
+  std::vector<Constraint> read_set_constraint(const Obj& o, PrescribedAt& seen);
+  /// {set, normal?, shear?} (at o, not yet checked): the pressure on every edge of an edge set, each
+  /// a boundary edge (one owner in `owners`).
+  void read_set_pressure(const Obj& o, const std::map<std::pair<int, int>, std::vector<int>>& owners, Loads& into);
+  /// The nodes (indices) of the node set o["set"] names; nullptr when it names none (reported).
+  const std::vector<int>* resolve_set(const Obj& o, std::string_view kind);
+  /// The edges of the edge set o["set"] names; nullptr when it names none (reported).
+  const std::vector<std::array<int, 2>>* resolve_edge_set(const Obj& o);
   void read_loads(const Obj& root);
   void read_loads_object(const Obj& loads, Loads& into);
   void read_nodal_forces(const Obj& loads, Loads& into);
@@ -406,6 +431,13 @@ class SectionReader {
   const Range* radius_ = &any_number;  ///< nodes: the range of r
   std::size_t item_ = 0;               ///< index of the item being read
   PrescribedAt prescribed_;  ///< constraints: (node index, component) -> pointer
+  // Named sets (section_sets.cpp), by name: node indices (ascending), edges [a, b] by node index,
+  // element ids. sets_complete_ is false when the sets section could not be read whole, so that a
+  // name it may have defined is not reported as unknown.
+  std::map<std::string, std::vector<int>> node_sets_;
+  std::map<std::string, std::vector<std::array<int, 2>>> edge_sets_;
+  std::map<std::string, std::vector<int>> element_sets_;
+  bool sets_complete_ = true;
   std::vector<std::string> temperature_pointers_;  ///< every loads.temperatures given (thermal excludes them)
   /// take_nodal_temperatures: (node index, T) of /loads/temperatures/nodal, in the text's order.
   std::optional<std::vector<std::pair<int, double>>> typed_temperatures_;

@@ -60,8 +60,9 @@ std::optional<Step> SectionReader::read_step(const json& item, const std::string
   if (const json* constraints = array_field(o, "constraints", 0)) {
     PrescribedAt seen;
     for (std::size_t i = 0; i < constraints->size(); ++i) {
-      const auto c = read_constraint_item((*constraints)[i], pointer_append(o.at("constraints"), i), seen);
-      if (c) step.constraints.push_back(*c);
+      for (const Constraint& c : read_constraint_item((*constraints)[i], pointer_append(o.at("constraints"), i), seen)) {
+        step.constraints.push_back(c);
+      }
     }
   }
   if (!valid) return std::nullopt;

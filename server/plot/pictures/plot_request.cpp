@@ -6,6 +6,7 @@
 
 #include "plot/pictures/contact_plot.hpp"
 #include "plot/pictures/convergence_plot.hpp"
+#include "plot/pictures/force_plot.hpp"
 #include "plot/pictures/friction_plot.hpp"
 #include "plot/result/field.hpp"
 
@@ -44,12 +45,15 @@ std::vector<std::string> plot_names() {
   for (const FieldInfo& f : fields()) names.emplace_back(f.name);
   names.emplace_back("convergence");
   names.emplace_back("friction");
+  names.emplace_back("force");
   return names;
 }
 
 io::ResultSelection result_selection_for(const PlotRequest& request) {
   // The convergence plot reads the history and the gaps, the friction plot the contact pairs: no mesh.
-  if (request.name == "convergence" || request.name == "friction") return {.mesh = false, .element_keys = {}};
+  if (request.name == "convergence" || request.name == "friction" || request.name == "force") {
+    return {.mesh = false, .element_keys = {}};
+  }
   // Every other plot draws the mesh (result_mesh.cpp), and an element field reads its stored
   // values (field.cpp). (Callers have checked the name: every plot but convergence is a field.)
   io::ResultSelection selection;
@@ -71,7 +75,7 @@ namespace {
 std::optional<DataTable> draw(const Canvas& canvas, const PlotResult& result, const PlotRequest& request) {
   require_plot_name(request.name);
   if (request.path) {
-    if (request.name == "convergence" || request.name == "friction") {
+    if (request.name == "convergence" || request.name == "friction" || request.name == "force") {
       throw std::invalid_argument("the " + request.name + " plot does not run along a path");
     }
     return draw_path_plot(canvas, result, request.name, *request.path, request.centre);
@@ -80,6 +84,8 @@ std::optional<DataTable> draw(const Canvas& canvas, const PlotResult& result, co
     draw_convergence_plot(canvas, result.document());
   } else if (request.name == "friction") {
     return draw_friction_plot(canvas, result.document());
+  } else if (request.name == "force") {
+    return draw_force_plot(canvas, result.document(), request.set);
   } else if (request.name == "contact_pressure") {
     return draw_contact_plot(canvas, result, request.row);
   } else if (request.name == "closure") {
@@ -110,7 +116,7 @@ std::string render_table(const PlotResult& result, const PlotRequest& request) {
   Canvas canvas(ImageFormat::png, request.width, request.height);
   const std::optional<DataTable> table = draw(canvas, result, request);
   if (!table) {
-    throw std::invalid_argument("a data table (.csv) is made for closure, contact_pressure, friction and a field along a path, "
+    throw std::invalid_argument("a data table (.csv) is made for closure, contact_pressure, friction, force and a field along a path, "
                                 "not for '" + request.name + "'");
   }
   return table->csv();

@@ -47,6 +47,7 @@ struct PlotRequest {
   ClosureOptions closure;  ///< for the closure plot
   GapRowOptions row;       ///< the gaps the closure and contact_pressure plots run along
   std::optional<PathOptions> path;  ///< set: a line plot of the field along this path
+  std::string set;  ///< "force": the node set whose summed reactions to plot (force_plot.hpp)
 };
 
 /// Sets the deformation of a contour plot from its text form: "auto" or a positive magnification;

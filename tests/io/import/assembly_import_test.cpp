@@ -288,6 +288,40 @@ TEST(AssemblyImport, GroupsMissingMisspeltOrOfTheWrongDimension) {
   }
 }
 
+TEST(AssemblyImport, StepsNameGroupsAndEveryGroupUsedBecomesANamedSet) {
+  json assembly = load(data_dir / "two_blocks.assembly.json");
+  assembly["steps"] = json::parse(R"([{"name": "hold", "increments": 2},
+      {"name": "lift", "constraints": [{"group": "top", "z": 0.001}],
+       "loads": {"pressures": [{"group": "top", "normal": 50.0}]}}])");
+  const json model = io::import_assembly(assembly, data_dir);
+  // One set per named group used, under its name: points and curves give nodes, curves edges,
+  // surfaces elements.
+  for (const char* name : {"bottom", "left", "corner", "top", "lower_top", "upper_bottom"}) {
+    EXPECT_TRUE(model["sets"]["nodes"].contains(name)) << name;
+  }
+  EXPECT_TRUE(model["sets"]["edges"].contains("top"));
+  EXPECT_FALSE(model["sets"]["edges"].contains("corner"));
+  EXPECT_TRUE(model["sets"]["elements"].contains("upper"));
+  ASSERT_EQ(model["steps"].size(), 2U);
+  EXPECT_EQ(model["steps"][0], (json{{"name", "hold"}, {"increments", 2}}));
+  EXPECT_EQ(model["steps"][1]["constraints"][0], (json{{"set", "top"}, {"z", 0.001}}));
+  EXPECT_EQ(model["steps"][1]["loads"]["pressures"].size(), model["sets"]["edges"]["top"].size());
+  const Model m = io::read_model(model);
+  ASSERT_EQ(m.reaction_groups.size(), 1U);
+  EXPECT_EQ(m.reaction_groups[0].name, "top");
+  EXPECT_EQ(m.reaction_groups[0].nodes.size(), model["sets"]["nodes"]["top"].size());
+
+  // A misspelt group in a step is the step's error, at its pointer.
+  assembly["steps"][1]["constraints"][0]["group"] = "tpo";
+  const InputIssue issue = single_issue(assembly, data_dir);
+  EXPECT_EQ(issue.pointer, "/steps/1/constraints/0/group");
+  EXPECT_NE(issue.detail.find("did you mean \"top\"?"), std::string::npos) << issue.detail;
+  // A model reader's finding on a step keeps the step's pointer.
+  assembly["steps"][1]["constraints"][0]["group"] = "top";
+  assembly["steps"][1]["increments"] = 0;
+  EXPECT_EQ(single_issue(assembly, data_dir).pointer, "/steps/1/increments");
+}
+
 TEST(AssemblyImport, FacesWhoseNodesDoNotFaceEachOther) {
   const Scratch scratch;
   scratch.write("two_blocks.msh", two_blocks_with("8 1 1.01 0", "8 1.4 1.01 0"));

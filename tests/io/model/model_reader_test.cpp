@@ -10,6 +10,8 @@
 #include <random>
 #include <sstream>
 #include <limits>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -128,7 +130,7 @@ std::string in_contract_order(const json& document) {
   if (!document.is_object()) return document.dump();
   std::string text = "{";
   for (const char* key : {"schema_version", "title", "description", "units", "analysis", "nodes", "materials",
-                          "elements", "gaps", "constraints", "loads", "solver", "output", "steps", "contact",
+                          "elements", "gaps", "sets", "constraints", "loads", "solver", "output", "steps", "contact",
                           "thermal"}) {
     if (!document.contains(key)) continue;
     text += (text.size() > 1 ? ",\"" : "\"") + std::string(key) + "\":" + document[key].dump();
@@ -1452,6 +1454,81 @@ TEST(ModelReaderRules, GapConductanceIsANumberOrATableOverPressure) {
   const Model transient_run = read_model(transient(with(thermal, "/thermal", json{{"type", "steady"}})));
   ASSERT_TRUE(transient_run.gaps->conductance.has_value());
   EXPECT_EQ(transient_run.thermal->type, ThermalType::transient);
+}
+
+// ------------------------------------------------------------------------------------------------
+// Named sets (docs/model.md, "Named sets")
+
+/// valid_model() with its bottom row of nodes and its top edge as sets that a constraint and a
+/// pressure name, and an element set.
+json model_with_sets() {
+  json m = valid_model();
+  m["sets"] = json::parse(R"({"nodes": {"base": [7, 8, 9], "corner": [7]},
+                              "edges": {"top": [[5, 4]]},
+                              "elements": {"left": [1, 11]}})");
+  m["constraints"] = json::parse(R"([{"set": "base", "z": 0}, {"node": 7, "r": 0}, {"node": 1, "r": 0},
+                                     {"node": 11, "r": 0, "z": 0}])");
+  m["loads"]["pressures"][0] = json::parse(R"({"set": "top", "normal": 1000})");
+  return m;
+}
+
+/// node index -> (u_r, u_z) of a model's constraints, merged.
+std::map<int, std::pair<std::optional<double>, std::optional<double>>> prescribed(const std::vector<Constraint>& list) {
+  std::map<int, std::pair<std::optional<double>, std::optional<double>>> out;
+  for (const Constraint& c : list) {
+    if (c.u_r) out[c.node].first = c.u_r;
+    if (c.u_z) out[c.node].second = c.u_z;
+  }
+  return out;
+}
+
+TEST(ModelReaderSets, SetConstraintsAndPressuresExpandToWhatTheirNodesWouldGive) {
+  const Model plain = read_model(valid_model());
+  const Model named = read_model(model_with_sets());
+  EXPECT_TRUE(issues_of(model_with_sets()).empty());  // the streaming readers agree (issues_of checks)
+  EXPECT_EQ(prescribed(named.constraints), prescribed(plain.constraints));
+  ASSERT_EQ(named.loads.pressures.size(), plain.loads.pressures.size());
+  EXPECT_EQ(named.loads.pressures[0].element, plain.loads.pressures[0].element);
+  EXPECT_EQ(named.loads.pressures[0].normal, 1000.0);
+  // Only the node set a constraint names is a reaction group; nodes by index, ascending.
+  ASSERT_EQ(named.reaction_groups.size(), 1u);
+  EXPECT_EQ(named.reaction_groups[0].name, "base");
+  EXPECT_EQ(named.reaction_groups[0].nodes, (std::vector<int>{6, 7, 8}));
+  EXPECT_TRUE(plain.reaction_groups.empty());
+  // A step's constraint may name a set too, and its group joins the list once.
+  json stepped = model_with_sets();
+  stepped["steps"] = json::parse(R"([{"name": "down", "constraints": [{"set": "base", "z": -0.01}, {"set": "corner", "r": 0.001}]}])");
+  const Model read = read_model(stepped);
+  ASSERT_EQ(read.reaction_groups.size(), 2u);
+  EXPECT_EQ(read.reaction_groups[1].name, "corner");
+  EXPECT_EQ(read.steps[0].constraints.size(), 4u);
+}
+
+TEST(ModelReaderSets, ErrorsNameTheSetAndItsPointer) {
+  const json m = model_with_sets();
+  EXPECT_TRUE(rejects(with(m, "/constraints/0/set", "bse"), "/constraints/0/set",
+                      {"unknown node set \"bse\"", "\"base\"", "\"corner\""}));
+  EXPECT_TRUE(rejects(with(m, "/steps", json::parse(R"([{"name": "a", "constraints": [{"set": "pushed", "z": 0.1}]}])")),
+                      "/steps/0/constraints/0/set", {"unknown node set \"pushed\""}));
+  EXPECT_TRUE(rejects(with(m, "/loads/pressures/0/set", "bottom"), "/loads/pressures/0/set", {"unknown edge set \"bottom\"", "\"top\""}));
+  EXPECT_TRUE(rejects(with(m, "/sets/nodes/base/1", 99), "/sets/nodes/base/1", {"99"}));
+  EXPECT_TRUE(rejects(with(m, "/sets/nodes/base/2", 7), "/sets/nodes/base/2", {"already in set \"base\""}));
+  EXPECT_TRUE(rejects(with(m, "/sets/nodes/base", json::array()), "/sets/nodes/base", {"non-empty"}));
+  EXPECT_TRUE(rejects(with(m, "/sets/edges/top/0", json{5, 1}), "/sets/edges/top/0", {"[5, 1]", "set \"top\""}));
+  EXPECT_TRUE(rejects(with(m, "/sets/edges/top/0", json{2, 5}), "/loads/pressures/0/set", {"two solid elements"}));
+  EXPECT_TRUE(rejects(with(m, "/sets/elements/left/0", 42), "/sets/elements/left/0", {"42"}));
+  EXPECT_TRUE(rejects(with(m, "/sets/shapes", json::object()), "/sets/shapes", {"unknown key"}));
+  // Two sets that share a node may give it the same value, not another one.
+  json shared = with(m, "/sets/nodes/left_side", json{7, 4});
+  shared["constraints"].push_back(json::parse(R"({"set": "left_side", "z": 0})"));
+  shared["constraints"][1] = json::parse(R"({"node": 1, "r": 0})");
+  shared["constraints"][2] = json::parse(R"({"node": 7, "r": 0})");
+  EXPECT_TRUE(issues_of(shared).empty());
+  shared["constraints"][4]["z"] = 0.5;
+  EXPECT_TRUE(rejects(shared, "/constraints/4/z", {"node 7", "set \"left_side\"", "/constraints/0/z", "another value"}));
+  // A node's own constraint after a set's is prescribed twice, as for two nodes.
+  EXPECT_TRUE(rejects(with(m, "/constraints/1", json::parse(R"({"node": 8, "z": 0})")), "/constraints/1/z",
+                      {"already prescribed at /constraints/0/z"}));
 }
 
 }  // namespace

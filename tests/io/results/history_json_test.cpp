@@ -97,5 +97,25 @@ TEST(HistoryJson, RowsWithoutFrictionColumnsReadAsZero) {
   EXPECT_TRUE(r.same_numbers(exact_row()));
 }
 
+TEST(HistoryJson, IncrementEndsCarrySetReactionsAndPairForcesThroughTextAndTree) {
+  IterationRecord row = friction_row();
+  row.set_reactions = {{"pushed", 0.25, 1474.3}, {"outer_support", -0.25, -1474.3}};
+  row.pair_forces = {{{"outer_bore", "inner_outside"}, 1.5, -1474.3}};
+  const std::string text = history_row_text(row);
+  EXPECT_EQ(json::parse(text).dump(), history_row_json(row).dump());  // alphabetical, as the tree
+  EXPECT_NE(text.find(R"("set_reactions":[{"fr":0.25,"fz":1474.3,"set":"pushed"})"), std::string::npos) << text;
+  EXPECT_NE(text.find(R"("pair_forces":[{"fr":1.5,"fz":-1474.3,"surfaces":["outer_bore","inner_outside"]}])"),
+            std::string::npos)
+      << text;
+  const IterationRecord back = history_row_from_json(json::parse(text));
+  EXPECT_TRUE(back.same_numbers(row));
+  // A row without them (not an increment's end, or no sets or pairs) writes neither.
+  EXPECT_EQ(history_row_text(friction_row()).find("set_reactions"), std::string::npos);
+  EXPECT_EQ(history_row_text(friction_row()).find("pair_forces"), std::string::npos);
+  IterationRecord other = row;
+  other.set_reactions[0].f_z += 1.0;
+  EXPECT_FALSE(other.same_numbers(row));
+}
+
 }  // namespace
 }  // namespace saasgaps::io

@@ -50,6 +50,31 @@ std::string array_text(const std::string& vtu, const std::string& name) {
   return squeezed;
 }
 
+TEST(VtuWriter, PlaneModelsNameTheirAxesAndAModelWithoutGapsHasNoGapArrays) {
+  // Issue 33: a plane model's stresses are sigma_x, sigma_y, tau_xy and sigma_z (out of the plane),
+  // not cylindrical components; a model without gap elements carries no all-zero gap_* arrays.
+  json plane = triangle_and_gap();
+  plane["analysis"] = "plane_strain";
+  plane["gaps"] = json::array();
+  const std::string vtu = result_to_vtu(plane, VtuFormat::ascii);
+  EXPECT_EQ(array_text(vtu, "sigma_x"), "0.1");
+  EXPECT_EQ(array_text(vtu, "sigma_y"), "2");
+  EXPECT_EQ(array_text(vtu, "tau_xy"), "3");
+  EXPECT_EQ(array_text(vtu, "sigma_z"), "4");
+  EXPECT_EQ(array_text(vtu, "eps_x"), "0.001");
+  EXPECT_EQ(array_text(vtu, "gamma_xy"), "0.003");
+  EXPECT_EQ(array_text(vtu, "eps_z"), "0.004");
+  for (const char* gone : {"Name=\"sigma_r\"", "Name=\"sigma_theta\"", "Name=\"eps_theta\"", "Name=\"gap_"}) {
+    EXPECT_EQ(vtu.find(gone), std::string::npos) << gone;
+  }
+  // Axisymmetric models keep the cylindrical names (the test above), with their gaps.
+  json ring = triangle_and_gap();
+  ring["gaps"] = json::array();
+  const std::string axisymmetric = result_to_vtu(ring, VtuFormat::ascii);
+  EXPECT_EQ(array_text(axisymmetric, "sigma_theta"), "4");
+  EXPECT_EQ(axisymmetric.find("Name=\"gap_"), std::string::npos);
+}
+
 TEST(VtuWriter, SolidsThenGapsWithTheirTypesAndData) {
   const std::string vtu = result_to_vtu(triangle_and_gap(), VtuFormat::ascii);
   EXPECT_NE(vtu.find("NumberOfPoints=\"5\" NumberOfCells=\"2\""), std::string::npos);
