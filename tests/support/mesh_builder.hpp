@@ -1,6 +1,7 @@
 #pragma once
 /// Models built in code for tests and benchmarks: structured grids mapped onto any shape.
 
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -21,6 +22,25 @@ struct Grid {
 /// (counter-clockwise when map preserves orientation). Ids continue after the largest in use.
 Grid add_grid(Model& model, int ni, int nj, const std::function<Vec2(double, double)>& map, int material,
               double angle_deg = 0.0);
+
+/// Node indices of a structured grid of quad8 elements: (2 ni + 1) x (2 nj + 1) positions, corners at
+/// even (i, j), mid-side nodes where one of them is odd, none where both are (-1).
+struct Quad8Grid {
+  int ni = 0;
+  int nj = 0;
+  std::vector<int> nodes;  ///< index of position (i, j) at i + (2 ni + 1) j, i in 0..2 ni
+  [[nodiscard]] int at(int i, int j) const { return nodes[static_cast<std::size_t>(i + (2 * ni + 1) * j)]; }
+  /// Corner (i, j) of the element grid, i in 0..ni.
+  [[nodiscard]] int corner(int i, int j) const { return at(2 * i, 2 * j); }
+  /// The corner pairs of element row j's edges along i (row j of corners, i = 0..ni-1).
+  [[nodiscard]] std::vector<std::array<int, 2>> row_edges(int j) const;
+  /// Every node (corners and mid-side) of corner row j, i from 0 up.
+  [[nodiscard]] std::vector<int> row_nodes(int j) const;
+};
+
+/// As add_grid, with quad8 elements whose mid-side nodes are at map of the mid parameters (on the
+/// curves map draws: the true circle of a ring's face).
+Quad8Grid add_quad8_grid(Model& model, int ni, int nj, const std::function<Vec2(double, double)>& map, int material);
 
 /// A ring r0..r1 meshed on its own: `radial` x `around` quadrilaterals (grid i radial, j round).
 /// Plane analyses: the whole ring about the origin, closed round (grid row `around` is row 0, so

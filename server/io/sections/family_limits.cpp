@@ -69,23 +69,6 @@ std::vector<InputIssue> element_family_input_issues(const Model& model) {
     }
   }
 
-  if (model.contact) {
-    for (std::size_t i = 0; i < model.contact->surfaces.size(); ++i) {
-      const SurfaceDefinition& s = model.contact->surfaces[i];
-      const std::string edges = pointer_append(pointer_append("/contact/surfaces", i), "edges");
-      for (std::size_t k = 0; k < s.edges.size(); ++k) {
-        const auto found = curved.find(key(s.edges[k][0], s.edges[k][1]));
-        if (found == curved.end()) continue;
-        issues.push_back({pointer_append(edges, k),
-                          "surface \"" + s.name + "\": the edge [" + std::to_string(node_id(model, s.edges[k][0])) +
-                              ", " + std::to_string(node_id(model, s.edges[k][1])) + "] is an edge of " +
-                              element_words(model, found->second.element) +
-                              ": contact surfaces on quadratic elements are not available yet; mesh the bodies "
-                              "that touch with 3- or 4-node elements"});
-      }
-    }
-  }
-
   if (model.thermal) {
     std::size_t first = curved.begin()->second.element;
     for (const auto& [edge, c] : curved) first = std::min(first, c.element);

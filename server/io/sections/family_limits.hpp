@@ -3,7 +3,6 @@
 /// otherwise valid, as model errors at their JSON Pointers:
 /// - a gap element along an edge of a quadratic element (gap elements stay 4-node elements between
 ///   straight edges; the mid-side node would be left out of the contact), at /gaps/elements/<g>/nodes;
-/// - a contact surface edge of a quadratic element, at /contact/surfaces/<i>/edges/<k>;
 /// - heat conduction (a `thermal` section) with quadratic elements, at the first such element's
 ///   /elements/<e>/nodes.
 /// The report's quadrilateral, the CST and quad4i (4 nodes, conducting as the report's quadrilateral)
