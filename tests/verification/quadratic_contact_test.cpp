@@ -10,6 +10,7 @@
 //   point against the closed form of support/shrink_fit_rings.hpp; the axisymmetric slice too.
 // - Hertz, a quad8 cylinder on a quad8 block at 0.04 (a / 5) per edge near the contact: peak pressure,
 //   half-width and resultant.
+// - Cattaneo-Mindlin on quad8 (friction): the stick zone within one edge + 5 %.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -338,6 +339,99 @@ TEST(QuadraticContact, HertzOnQuad8) {
   EXPECT_NEAR(force.y(), -0.5 * hertz_P, 1e-10 * hertz_P);
   EXPECT_NEAR(force.x(), 0.0, 1e-10 * hertz_P);
   EXPECT_NEAR(reaction_sum(s.reactions).y(), 0.5 * hertz_P, 1e-8 * hertz_P);
+}
+
+// ---- Cattaneo-Mindlin on quad8 (as tests/verification/friction_surfaces_test.cpp's, Johnson 7.1):
+// the whole Hertz contact, a quad8 block (spacing h near the contact) and a quad8 body (0.72 h along
+// the parabola), pressed by a rigid platen (the body's top moved down, step 1), then sheared by
+// Q = ratio mu P on its top (step 2, 2 increments); held along x by friction alone. Every node of the
+// block's face is a contact point, mid-side nodes included.
+
+constexpr double mu = 0.3;
+
+struct CattaneoResult {
+  double a = 0.0;  ///< Hertz half-width for the measured P
+  double c = 0.0;  ///< measured stick half-width
+  double h = 0.0;  ///< edge length at the contact
+};
+
+CattaneoResult cattaneo(double h, double ratio) {
+  constexpr double sink = 0.006;
+  Model m;
+  m.analysis = AnalysisType::plane_strain;
+  m.materials = {testing::isotropic_material(1, hertz_E, hertz_nu)};
+  const auto mirrored = [](const std::vector<double>& half) {
+    std::vector<double> x;
+    for (std::size_t k = half.size() - 1; k > 0; --k) x.push_back(-half[k]);
+    x.insert(x.end(), half.begin(), half.end());
+    return x;
+  };
+  const std::vector<double> xb = mirrored(testing::hertz_graded(h)), xc = mirrored(testing::hertz_graded(0.72 * h));
+  const std::vector<double> depth = testing::hertz_graded(h);
+  const int nb = static_cast<int>(xb.size()) - 1, nc = static_cast<int>(xc.size()) - 1;
+  const int nd = static_cast<int>(depth.size()) - 1;
+  const testing::Quad8Grid block = testing::add_quad8_grid(
+      m, nb, nd, [&](double s, double t) { return Vec2(graded(xb, s), -graded(depth, 1.0 - t)); }, 0);
+  const testing::Quad8Grid body = testing::add_quad8_grid(
+      m, nc, nd,
+      [&](double s, double t) {
+        const double x = graded(xc, s), z0 = x * x / (2.0 * hertz_R);
+        return Vec2(x, z0 + graded(depth, t) * (hertz_size - z0) / hertz_size);
+      },
+      0);
+  ContactSettings& contact = m.contact.emplace();
+  contact.surfaces = {{"block", block.row_edges(nd)}, {"cylinder", body.row_edges(0)}};
+  SurfacePair& pair = contact.pairs.emplace_back();
+  pair.surfaces = {0, 1};
+  pair.friction = mu;
+  testing::fill_temperatures(m, 0.0);
+  for (const int n : block.row_nodes(0)) testing::constrain(m, n, 0.0, 0.0);
+  Step press;
+  press.name = "press";
+  for (const int n : body.row_nodes(nd)) press.constraints.push_back({n, std::nullopt, -sink});
+  m.steps = {press};
+  CattaneoResult r;
+  r.h = h;
+  const Solution pressed = solve(m);
+  EXPECT_EQ(pressed.status, RunStatus::converged) << pressed.message;
+  double P = 0.0;
+  const std::vector<int> top = body.row_nodes(nd);
+  for (const NodeReaction& n : pressed.reactions) {
+    for (const int t : top) {
+      if (n.id == m.nodes[static_cast<std::size_t>(t)].id) P -= n.f_z;
+    }
+  }
+  r.a = std::sqrt(4.0 * P * hertz_R / (std::numbers::pi * testing::hertz_E_star));
+  Step shear;
+  shear.name = "shear";
+  shear.increments = 2;
+  shear.loads = m.loads;
+  // A shear traction along +x (a -> b on the top's edges, which run left to right).
+  for (const auto& e : body.row_edges(nd)) {
+    shear.loads->pressures.push_back({owner(m, e[0], e[1]), e[0], e[1], 0.0, ratio * mu * P / (2.0 * hertz_size)});
+  }
+  m.steps = {press, shear};
+  const Solution s = solve(m);
+  EXPECT_EQ(s.status, RunStatus::converged) << s.message;
+  if (s.contact.empty()) return r;
+  double lo = 0.0, hi = 0.0;
+  for (const ContactPointResult& p : s.contact[0].points) {
+    if (p.state != ContactPointState::stick) continue;
+    lo = std::min(lo, p.r);
+    hi = std::max(hi, p.r);
+  }
+  r.c = 0.5 * (hi - lo);
+  return r;
+}
+
+TEST(QuadraticContact, CattaneoMindlinStickZoneOnQuad8) {
+  constexpr double ratio = 0.5;  // Q / (mu P)
+  const CattaneoResult r = cattaneo(hertz_a / 6.0, ratio);
+  const double c = r.a * std::sqrt(1.0 - ratio);
+  std::printf("Cattaneo-Mindlin on quad8, h = %.4g: a %.4g, c / a %.4f (closed form %.4f), |c - c_exact| %.3g "
+              "(bound h + 5 %% c = %.3g)\n", r.h, r.a, r.c / r.a, c / r.a, std::abs(r.c - c), r.h + 0.05 * c);
+  EXPECT_NEAR(r.c, c, r.h + 0.05 * c);  // the bound
+  EXPECT_NEAR(r.c, c, 0.01);             // observed 0.0069 (points every h / 2)
 }
 
 }  // namespace
