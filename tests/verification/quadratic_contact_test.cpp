@@ -191,34 +191,7 @@ FitResult check_fit(const Model& m) {
   return r;
 }
 
-/// The quarter-ring shrink fit on quad8: `radial` elements through each ring, around[0] edges on the
-/// shaft's face (side A), around[1] on the hub's; symmetric on both axes.
-Model quarter_fit(int radial, std::array<int, 2> around) {
-  Model m;
-  m.analysis = AnalysisType::plane_strain;
-  m.materials = {testing::isotropic_material(1, fit::E1, fit::nu1), testing::isotropic_material(2, fit::E2, fit::nu2)};
-  // add_quad8_grid's i runs radially, j round the quarter (counter-clockwise elements).
-  const testing::Quad8Grid shaft =
-      testing::add_quad8_grid(m, radial, around[0], testing::quarter_annulus(fit::a1, fit::b + 0.5 * fit::delta), 0);
-  const testing::Quad8Grid hub =
-      testing::add_quad8_grid(m, radial, around[1], testing::quarter_annulus(fit::b - 0.5 * fit::delta, fit::b2), 1);
-  const auto column = [](const testing::Quad8Grid& g, int i) {
-    Edges edges;
-    for (int j = 0; j < g.nj; ++j) edges.push_back({g.corner(i, j), g.corner(i, j + 1)});
-    return edges;
-  };
-  ContactSettings& contact = m.contact.emplace();
-  contact.surfaces = {{"shaft", column(shaft, radial)}, {"hub", column(hub, 0)}};
-  contact.pairs.emplace_back().surfaces = {0, 1};
-  for (const testing::Quad8Grid* g : {&shaft, &hub}) {
-    for (int i = 0; i <= 2 * g->ni; ++i) {
-      testing::constrain(m, g->at(i, 0), std::nullopt, 0.0);          // on the x axis: u_y = 0
-      testing::constrain(m, g->at(i, 2 * g->nj), 0.0, std::nullopt);  // on the y axis: u_x = 0
-    }
-  }
-  testing::fill_temperatures(m, 0.0);
-  return m;
-}
+Model quarter_fit(int radial, std::array<int, 2> around) { return fit::quarter_shrink_fit_quad8(radial, around); }
 
 TEST(QuadraticContact, LameFitOnCurvedQuad8Surfaces) {
   const FitResult r = check_fit(quarter_fit(4, {20, 16}));
