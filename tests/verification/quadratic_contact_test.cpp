@@ -194,6 +194,7 @@ FitResult check_fit(const Model& m) {
 Model quarter_fit(int radial, std::array<int, 2> around) { return fit::quarter_shrink_fit_quad8(radial, around); }
 
 TEST(QuadraticContact, LameFitOnCurvedQuad8Surfaces) {
+  EXPECT_EQ(quarter_fit(4, {20, 16}).nodes.size(), 522U);  // 1,044 unknowns (docs/performance.md)
   const FitResult r = check_fit(quarter_fit(4, {20, 16}));
   std::printf("quad8 quarter ring fit, 20 against 16: mean pressure %+.4f %%, worst point %.4f %% (%zu points), "
               "Lame %.4f\n", 100 * r.mean, 100 * r.worst, r.points, fit::lame_interference_pressure(AnalysisType::plane_strain));
@@ -333,13 +334,8 @@ CattaneoResult cattaneo(double h, double ratio) {
   Model m;
   m.analysis = AnalysisType::plane_strain;
   m.materials = {testing::isotropic_material(1, hertz_E, hertz_nu)};
-  const auto mirrored = [](const std::vector<double>& half) {
-    std::vector<double> x;
-    for (std::size_t k = half.size() - 1; k > 0; --k) x.push_back(-half[k]);
-    x.insert(x.end(), half.begin(), half.end());
-    return x;
-  };
-  const std::vector<double> xb = mirrored(testing::hertz_graded(h)), xc = mirrored(testing::hertz_graded(0.72 * h));
+  const std::vector<double> xb = testing::hertz_mirrored(testing::hertz_graded(h)),
+                            xc = testing::hertz_mirrored(testing::hertz_graded(0.72 * h));
   const std::vector<double> depth = testing::hertz_graded(h);
   const int nb = static_cast<int>(xb.size()) - 1, nc = static_cast<int>(xc.size()) - 1;
   const int nd = static_cast<int>(depth.size()) - 1;
