@@ -41,6 +41,7 @@ struct SideOwner {
   int element = -1;
   int from = -1;  ///< the side runs from -> to with the element on its left
   int to = -1;
+  int middle = -1;  ///< the mid-side node of a 3-node side, -1 for a straight one
 };
 
 std::string node_name(const Model& model, int i) {
@@ -64,7 +65,6 @@ const char* describe(SurfaceEdgeProblem problem) {
     case SurfaceEdgeProblem::branch: return "a third edge at one node: the edges are not a chain";
     case SurfaceEdgeProblem::opposite_side: return "its element is on the other side of the chain";
     case SurfaceEdgeProblem::disconnected: return "not connected to the chain of the first edge";
-    case SurfaceEdgeProblem::quadratic: return "a quadratic element: contact surfaces on quadratic elements are not available yet";
   }
   return "invalid edge";
 }
@@ -94,7 +94,9 @@ ContactSurface contact_surface(const Model& model, std::span<const std::array<in
       if (a == b) continue;  // a quad with a repeated node is a triangle
       const auto it = owners.find(side_key(a, b));
       if (it == owners.end()) continue;
-      it->second.push_back(ccw ? SideOwner{static_cast<int>(i), a, b} : SideOwner{static_cast<int>(i), b, a});
+      const int middle = side.count == 3 ? el.nodes[static_cast<std::size_t>(side.node[1])] : -1;
+      it->second.push_back(ccw ? SideOwner{static_cast<int>(i), a, b, middle}
+                               : SideOwner{static_cast<int>(i), b, a, middle});
     }
   }
 
@@ -123,11 +125,6 @@ ContactSurface contact_surface(const Model& model, std::span<const std::array<in
                             std::to_string(model.elements[static_cast<std::size_t>(found[0].element)].id) +
                             " and " +
                             std::to_string(model.elements[static_cast<std::size_t>(found[1].element)].id)});
-    } else if (const Element& el = model.elements[static_cast<std::size_t>(found.front().element)];
-               family(el.type).quadratic()) {
-      issues.push_back({i, SurfaceEdgeProblem::quadratic,
-                        name + ": an edge of element " + std::to_string(el.id) + ", " +
-                            describe(SurfaceEdgeProblem::quadratic)});
     } else {
       owner[i] = found.front();
     }
@@ -176,11 +173,21 @@ ContactSurface contact_surface(const Model& model, std::span<const std::array<in
   while (!visited[current]) {
     visited[current] = true;
     const SideOwner& o = owner[current];
-    const Vec2 t = node_position(model.nodes, o.to) - node_position(model.nodes, o.from);
-    surface.nodes.push_back(o.from);
-    surface.element.push_back(o.element);
-    surface.edge.push_back(current);
-    surface.normal.push_back(Vec2(t.y(), -t.x()).normalized());
+    // A 3-node side: two segments, corner -> mid-side node -> corner (its halves 0 and 1).
+    const std::array<int, 3> along{o.from, o.middle, o.to};
+    for (int h = 0; h < (o.middle < 0 ? 1 : 2); ++h) {
+      const int from = along[static_cast<std::size_t>(h)];
+      const int to = o.middle < 0 ? o.to : along[static_cast<std::size_t>(h + 1)];
+      const Vec2 t = node_position(model.nodes, to) - node_position(model.nodes, from);
+      if (o.middle >= 0 && surface.halves.size() < surface.element.size() + 1) {
+        surface.halves.resize(surface.element.size(), -1);  // the straight edges before the first 3-node one
+      }
+      if (!surface.halves.empty() || o.middle >= 0) surface.halves.push_back(static_cast<std::int8_t>(o.middle < 0 ? -1 : h));
+      surface.nodes.push_back(from);
+      surface.element.push_back(o.element);
+      surface.edge.push_back(current);
+      surface.normal.push_back(Vec2(t.y(), -t.x()).normalized());
+    }
     const auto next = starting.find(o.to);
     if (next == starting.end()) {
       surface.nodes.push_back(o.to);  // the open chain's free end

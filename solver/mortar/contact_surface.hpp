@@ -11,8 +11,16 @@
 /// so segment s runs nodes[s] -> nodes[s + 1] and its outward normal is the tangent turned clockwise:
 ///   n_s = (t_z, -t_r) / |t|,   t = x(nodes[s + 1]) - x(nodes[s]).
 /// An open chain starts at its free end; a closed one at the first listed edge.
+///
+/// A 3-node edge (of tri6, quad8, quad9: named by its corners, its mid-side node goes with it) is
+/// two segments of the chain, corner -> mid-side node -> corner, its two halves: the chain's nodes
+/// are every node of the surface, mid-side nodes included, and a segment's normal is that of its
+/// chord. The halves know their edge (half(), edge_nodes()): the mortar rows integrate over the edge's
+/// quadratic curve and interpolate with its quadratic shape functions (docs/contact-surfaces.md,
+/// section 7).
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -33,7 +41,6 @@ enum class SurfaceEdgeProblem {
   branch,         ///< a third edge at one node: the edges do not form a chain
   opposite_side,  ///< its element lies on the other side of the chain than its neighbour's
   disconnected,   ///< not on the chain of the first edge: the edges form more than one chain
-  quadratic,      ///< a side of a quadratic element (tri6, quad8, quad9): not available yet
 };
 
 /// The name of a problem as the io layer words it ("not a boundary edge", ...).
@@ -64,13 +71,27 @@ struct ContactSurface {
   bool closed = false;
   std::vector<int> element;        ///< per segment: the solid element (index) whose side it is
   std::vector<std::size_t> edge;   ///< per segment: index into the edge list given
-  std::vector<Vec2> normal;        ///< per segment: unit outward normal of its element
+  std::vector<Vec2> normal;        ///< per segment: unit outward normal of its element (of its chord)
+  /// Per segment: -1 for a straight 2-node edge; 0 or 1 for the first or second half of a 3-node edge
+  /// (corner -> mid-side node, mid-side node -> corner). Empty when every edge is straight.
+  std::vector<std::int8_t> halves;
 
   [[nodiscard]] std::size_t segment_count() const { return element.size(); }
   /// Node indices of segment s, in chain order.
   [[nodiscard]] std::array<int, 2> segment(std::size_t s) const {
     return {nodes[s], nodes[(s + 1) % nodes.size()]};
   }
+  /// -1 when segment s is a straight edge, else which half of its 3-node edge it is.
+  [[nodiscard]] int half(std::size_t s) const { return halves.empty() ? -1 : halves[s]; }
+  /// Chain positions (indices into `nodes`) of the 3-node edge segment s is a half of: corner,
+  /// mid-side node, corner in chain order. Only for segments with half(s) >= 0.
+  [[nodiscard]] std::array<std::size_t, 3> edge_positions(std::size_t s) const {
+    const std::size_t n = nodes.size();
+    const std::size_t first = half(s) == 0 ? s : (s + n - 1) % n;
+    return {first, (first + 1) % n, (first + 2) % n};
+  }
+  /// Whether chain position j is the mid-side node of a 3-node edge.
+  [[nodiscard]] bool mid_side(std::size_t j) const { return j < element.size() && half(j) == 1; }
 };
 
 /// The position (r, z) of node i.

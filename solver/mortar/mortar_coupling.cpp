@@ -2,6 +2,8 @@
 
 #include <cassert>
 #include <map>
+
+#include <Eigen/LU>
 #include <optional>
 
 #include "solver/mortar/dual_basis.hpp"
@@ -38,10 +40,113 @@ Vec2 bend_gradient(const Vec2& d, const Vec2& nu, double w, const Vec2& v) {
 }
 
 /// What the integrals give each node j of A's chain: D_j and the row's entries by node (M_jk, c_jk).
+/// D holds the straight segments' shares, whose A entries are left at 0 and get -D_j in the row;
+/// D_curved the 3-node edges' shares, whose A entries are integrated (-int psi_j N_i^A dA: -D_j for
+/// i = j and 0 for its neighbours where the edge is wholly covered).
 struct RowIntegrals {
   std::vector<double> D;
   std::vector<std::map<int, Term>> M;
+  std::vector<double> D_curved;
 };
+
+/// Adds what a point of B at parameter eta of master segment m (chord y1 -> y2) gives row `row`, with
+/// pw = weight x psi_j and v the direction the gap is measured along: a straight segment's two nodes
+/// (N = 1 - eta, eta, plus its smooth curve's bend), or a half of a 3-node edge's three nodes with
+/// the edge's quadratic shape functions at s = (h + eta) / 2.
+/// Where the line x + t v meets master segment m (chord y1 -> y2): its parameter eta, on the chord
+/// for a straight segment (its smooth curve enters through the bend), on the curve for a half of a
+/// 3-node edge (its points are the curve's).
+double master_parameter(const SurfaceGeometry& master_geometry, std::size_t m, const Vec2& y1, const Vec2& y2,
+                        const Vec2& x, const Vec2& v) {
+  const auto hit = meet(x, v, y1, y2);
+  assert(hit);
+  const int h = master_geometry.surface().half(m);
+  if (h < 0) return hit->first;
+  return meet_curve(x, v, master_geometry.quadratic_edge(m), h, hit->first).first;
+}
+
+void add_master_point(std::map<int, Term>& row, const SurfaceGeometry& master_geometry, std::size_t m,
+                      const Vec2& y1, const Vec2& y2, double eta, double pw, const Vec2& v) {
+  const ContactSurface& master = master_geometry.surface();
+  if (const int h = master.half(m); h >= 0) {
+    const auto at = master.edge_positions(m);
+    const auto N = QuadraticEdge::shape(0.5 * (h + eta));
+    for (std::size_t k = 0; k < 3; ++k) row[master.nodes[at[k]]].add(pw * N[k], pw * N[k] * v);
+    return;
+  }
+  const auto [b1, b2] = master.segment(m);
+  const Vec2 bend_b = bend_gradient(y2 - y1, master.normal[m], master_geometry.offset(m, eta, (y2 - y1).norm()), v);
+  row[b1].add(pw * (1.0 - eta), pw * ((1.0 - eta) * v - bend_b));
+  row[b2].add(pw * eta, pw * (eta * v + bend_b));
+}
+
+/// The rows' integrals over the 3-node edge whose first half is slave segment s0 (docs/contact-
+/// surfaces.md, section 7): the edge's quadratic curve X(s) and shape functions N_i(s) for A, the
+/// multiplier piecewise linear on its two halves, psi_j = sum_i A_ji phi_i (phi the hats of corner,
+/// mid-side node, corner), biorthogonal to N over the whole edge with the measure:
+///   H_ki = int_edge N_k phi_i dA,  d_k = int_edge N_k dA,  A = diag(d) H^-T,
+/// so int psi_j N_k dA = delta_jk d_k, d = (1/6, 2/3, 1/6) x the edge's area on a straight plane edge,
+/// and sum_j psi_j = 1 (H 1 = d). Its points are the curve's: the pieces end where B's nodes project
+/// onto the curve, and a point's partner on B is where its normal line meets B's curve (B's chord, for
+/// a straight segment of B, whose smooth curve enters through the bend).
+void integrate_curved_edge(const SurfaceMeasure& measure, const SurfaceGeometry& slave_geometry,
+                           const SurfaceGeometry& master_geometry, const std::vector<std::vector<Overlap>>& facing,
+                           std::size_t s0, RowIntegrals& sums) {
+  const ContactSurface& slave = slave_geometry.surface();
+  const std::vector<Vec2>& normal = slave_geometry.nodal_normals();
+  const auto at = slave.edge_positions(s0);
+  double covered_length = 0.0;
+  for (std::size_t h = 0; h < 2; ++h) {
+    for (const Overlap& o : facing[s0 + h]) covered_length += 0.5 * (o.piece.hi - o.piece.lo);
+  }
+  if (covered_length < min_covered_fraction) return;
+  const QuadraticEdge curve = slave_geometry.quadratic_edge(s0);
+  const auto hats = [](int h, double xi) {
+    return h == 0 ? Eigen::Vector3d(1.0 - xi, xi, 0.0) : Eigen::Vector3d(0.0, 1.0 - xi, xi);
+  };
+  const auto shape = [](int h, double xi) {
+    const auto N = QuadraticEdge::shape(0.5 * (h + xi));
+    return Eigen::Vector3d(N[0], N[1], N[2]);
+  };
+  // The basis over the whole edge, covered or not: over a covered part alone the hat of a corner
+  // whose half faces nothing would vanish (H singular), and a corner's d_k could be <= 0.
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();
+  for (int h = 0; h < 2; ++h) {
+    integrate_curved(curve, h, ParameterInterval{0.0, 1.0}, measure, [&](double xi, double w) {
+      const Eigen::Vector3d N = shape(h, xi);
+      H += w * N * hats(h, xi).transpose();
+      d += w * N;
+    });
+  }
+  const Eigen::Matrix3d A = d.asDiagonal() * H.transpose().inverse();
+  for (std::size_t k = 0; k < 3; ++k) sums.D_curved[at[k]] += d[static_cast<Eigen::Index>(k)];
+  for (int h = 0; h < 2; ++h) {
+    const std::size_t s = s0 + static_cast<std::size_t>(h);
+    const std::size_t i1 = at[static_cast<std::size_t>(h)], i2 = at[static_cast<std::size_t>(h) + 1];
+    for (const Overlap& o : facing[s]) {
+      const auto [b1, b2] = master_geometry.surface().segment(o.master);
+      const Vec2 y1 = node_position(master_geometry.nodes(), b1);
+      const Vec2 y2 = node_position(master_geometry.nodes(), b2);
+      integrate_curved(curve, h, o.piece, measure, [&](double xi, double w) {
+        const Vec2 x = curve.position(0.5 * (h + xi));  // the edge's own point
+        const Vec2 v = normal_at(normal[i1], normal[i2], xi);
+        const double eta = master_parameter(master_geometry, o.master, y1, y2, x, v);
+        const Eigen::Vector3d psi = A * hats(h, xi);
+        const Eigen::Vector3d N = shape(h, xi);
+        for (std::size_t j = 0; j < 3; ++j) {
+          std::map<int, Term>& row = sums.M[at[j]];
+          const double pw = w * psi[static_cast<Eigen::Index>(j)];
+          add_master_point(row, master_geometry, o.master, y1, y2, eta, pw, v);
+          for (std::size_t i = 0; i < 3; ++i) {
+            const double pn = pw * N[static_cast<Eigen::Index>(i)];
+            row[slave.nodes[at[i]]].add(-pn, -pn * v);
+          }
+        }
+      });
+    }
+  }
+}
 
 /// D and M over the pieces of each segment of A (`facing`, per segment) with the dual basis of the
 /// part each segment has covered.
@@ -52,11 +157,16 @@ RowIntegrals integrate_rows(const SurfaceMeasure& measure, const SurfaceGeometry
   const ContactSurface& master = master_geometry.surface();
   const std::vector<Vec2>& normal = slave_geometry.nodal_normals();
   const std::size_t n = slave.nodes.size();
-  RowIntegrals sums{std::vector<double>(n, 0.0), std::vector<std::map<int, Term>>(n)};
+  RowIntegrals sums{std::vector<double>(n, 0.0), std::vector<std::map<int, Term>>(n), std::vector<double>(n, 0.0)};
   std::vector<double>& D = sums.D;
   std::vector<std::map<int, Term>>& M = sums.M;
 
   for (std::size_t s = 0; s < slave.segment_count(); ++s) {
+    if (const int h = slave.half(s); h >= 0) {
+      // A 3-node edge: both halves at once, from its first.
+      if (h == 0) integrate_curved_edge(measure, slave_geometry, master_geometry, facing, s, sums);
+      continue;
+    }
     const std::size_t i1 = s;
     const std::size_t i2 = (s + 1) % n;
     const int a1 = slave.nodes[i1];
@@ -82,29 +192,30 @@ RowIntegrals integrate_rows(const SurfaceMeasure& measure, const SurfaceGeometry
       const auto [b1, b2] = master.segment(o.master);
       const Vec2 y1 = node_position(master_geometry.nodes(), b1);
       const Vec2 y2 = node_position(master_geometry.nodes(), b2);
-      integrate(x1, x2, o.piece, measure, [&](double xi, double w) {
+      const auto point = [&](double xi, double w) {
         const Vec2 x = (1.0 - xi) * x1 + xi * x2;
         const Vec2 nx = normal_at(normal[i1], normal[i2], xi);
-        const auto hit = meet(x, nx, y1, y2);
-        assert(hit);
-        const double eta = hit->first;
+        const double eta = master_parameter(master_geometry, o.master, y1, y2, x, nx);
         const Vec2 psi = basis.A * Vec2(1.0 - xi, xi);
         // The gap at xi is measured along n(xi): its change is n(xi) . (u_B(eta) - u_A(xi)), so every
         // node of both segments gets a vector coefficient (A's neighbour too: psi_j N_i n(xi) does not
         // vanish for i != j, only its scalar part does, by biorthogonality).
         const Vec2 v = gap_direction(normal[i1], normal[i2], xi);
-        const Vec2 bend_b = bend_gradient(y2 - y1, master.normal[o.master],
-                                          master_geometry.offset(o.master, eta, (y2 - y1).norm()), v);
         const Vec2 bend_a = bend_gradient(x2 - x1, slave.normal[s], slave_geometry.offset(s, xi, (x2 - x1).norm()), v);
         for (std::size_t j = 0; j < 2; ++j) {
           std::map<int, Term>& row = M[j == 0 ? i1 : i2];
           const double pw = w * psi[j];
-          row[b1].add(pw * (1.0 - eta), pw * ((1.0 - eta) * v - bend_b));
-          row[b2].add(pw * eta, pw * (eta * v + bend_b));
+          add_master_point(row, master_geometry, o.master, y1, y2, eta, pw, v);
           row[a1].add(0.0, -pw * ((1.0 - xi) * v - bend_a));
           row[a2].add(0.0, -pw * (xi * v + bend_a));
         }
-      });
+      };
+      // Facing a half of a 3-node edge, B's parameter is not a polynomial of xi: the curved rule.
+      if (master.half(o.master) >= 0) {
+        integrate<CurvedGauss>(x1, x2, o.piece, measure, point);
+      } else {
+        integrate(x1, x2, o.piece, measure, point);
+      }
     }
   }
   return sums;
@@ -141,7 +252,11 @@ MortarRows mortar_rows(const SurfaceMeasure& measure, const SurfaceGeometry& sla
   for (std::size_t s = 0; s < slave.segment_count(); ++s) {
     const Vec2 x1 = node_position(nodes, slave.nodes[s]);
     const Vec2 x2 = node_position(nodes, slave.nodes[(s + 1) % n]);
-    facing[s] = facing_pieces(x1, x2, normal[s], normal[(s + 1) % n], slave.normal[s], master_segments);
+    const int h = slave.half(s);
+    const std::optional<QuadraticEdge> curve =
+        h >= 0 ? std::optional<QuadraticEdge>(slave_geometry.quadratic_edge(s)) : std::nullopt;
+    facing[s] = facing_pieces(x1, x2, normal[s], normal[(s + 1) % n], slave.normal[s], master_segments,
+                              curve ? &*curve : nullptr, h);
   }
 
   // Integrals: D_j and the entries of each node's row.
@@ -151,7 +266,9 @@ MortarRows mortar_rows(const SurfaceMeasure& measure, const SurfaceGeometry& sla
   // Rows: one per node of A with a share of the covered area.
   MortarRows rows;
   for (std::size_t j = 0; j < n; ++j) {
-    if (D[j] <= 0.0) continue;
+    // Straight segments' share (their A entries get -D_j here) and 3-node edges' (integrated).
+    const double weight = D[j] + sums.D_curved[j];
+    if (weight <= 0.0) continue;
     const int slave_node = slave.nodes[j];
     const Vec2& nj = normal[j];
     std::map<int, Term>& entries = sums.M[j];
@@ -180,8 +297,8 @@ MortarRows mortar_rows(const SurfaceMeasure& measure, const SurfaceGeometry& sla
     const std::optional<double> nodal_gap = curve_distance(xj, nj, master_segments);
     rows.slave_node.push_back(slave_node);
     rows.normal.push_back(nj);
-    rows.g0.push_back(nodal_gap ? D[j] * *nodal_gap : nj.dot(weighted));
-    rows.weight.push_back(D[j]);
+    rows.g0.push_back(nodal_gap ? weight * *nodal_gap : nj.dot(weighted));
+    rows.weight.push_back(weight);
     rows.start.push_back(rows.node.size());
   }
   if (candidate_checks != nullptr) *candidate_checks += master_segments.candidates();

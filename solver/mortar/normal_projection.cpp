@@ -41,6 +41,38 @@ std::optional<double> project_onto_segment(const Vec2& x1, const Vec2& x2, const
   return best;
 }
 
+double project_onto_curve(const QuadraticEdge& curve, int h, const Vec2& n1, const Vec2& n2, const Vec2& y,
+                          double start) {
+  // F(xi) = (X(s) - y) x n(xi), s = (h + xi) / 2; F' = X'(s) / 2 x n + (X(s) - y) x (n2 - n1).
+  double xi = start;
+  for (int pass = 0; pass < 30; ++pass) {
+    const double s = 0.5 * (h + xi);
+    const Vec2 n = (1.0 - xi) * n1 + xi * n2;
+    const Vec2 e = curve.position(s) - y;
+    const double f = cross(e, n);
+    const double df = cross(0.5 * curve.tangent(s), n) + cross(e, n2 - n1);
+    if (df == 0.0) break;
+    const double step = f / df;
+    xi -= step;
+    if (std::abs(step) <= 1e-15) break;
+  }
+  return xi;
+}
+
+std::pair<double, double> meet_curve(const Vec2& x, const Vec2& n, const QuadraticEdge& curve, int h, double start) {
+  // G(eta) = (X(s) - x) x n, s = (h + eta) / 2; G' = X'(s) / 2 x n.
+  double eta = start;
+  for (int pass = 0; pass < 30; ++pass) {
+    const double s = 0.5 * (h + eta);
+    const double df = cross(0.5 * curve.tangent(s), n);
+    if (df == 0.0) break;
+    const double step = cross(curve.position(s) - x, n) / df;
+    eta -= step;
+    if (std::abs(step) <= 1e-15) break;
+  }
+  return {eta, n.dot(curve.position(0.5 * (h + eta)) - x) / n.squaredNorm()};
+}
+
 std::optional<std::pair<double, double>> meet(const Vec2& x, const Vec2& n, const Vec2& b1, const Vec2& b2) {
   // x + t n = b1 + eta e  <=>  t n - eta e = b1 - x; Cramer's rule on [n, -e].
   const Vec2 e = b2 - b1;

@@ -29,6 +29,16 @@ Vec2 normal_at(const Vec2& n1, const Vec2& n2, double xi);
 std::optional<double> project_onto_segment(const Vec2& x1, const Vec2& x2, const Vec2& n1, const Vec2& n2,
                                            const Vec2& y);
 
+/// The same on half h of a 3-node edge's curve X (surface_geometry.hpp): the half's parameter xi at
+/// which the line from X((h + xi) / 2) along n(xi) = (1 - xi) n1 + xi n2 passes through y (a cubic:
+/// Newton from `start`, the chord's root).
+double project_onto_curve(const QuadraticEdge& curve, int h, const Vec2& n1, const Vec2& n2, const Vec2& y,
+                          double start);
+
+/// Where the line x + t n meets half h of a 3-node edge's curve: (its parameter eta, t), Newton from
+/// `start` (the chord's eta).
+std::pair<double, double> meet_curve(const Vec2& x, const Vec2& n, const QuadraticEdge& curve, int h, double start);
+
 /// Where the line x + t n meets the line b1 + eta (b2 - b1): (eta, t), or nothing when parallel.
 std::optional<std::pair<double, double>> meet(const Vec2& x, const Vec2& n, const Vec2& b1, const Vec2& b2);
 

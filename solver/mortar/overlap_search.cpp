@@ -13,16 +13,28 @@ namespace {
 /// The pieces of slave segment x1 -> x2 (nodal normals n1, n2, segment normal ns) that face the
 /// master surface, each with the nearest facing master segment among `near`.
 std::vector<Overlap> overlaps(const Vec2& x1, const Vec2& x2, const Vec2& n1, const Vec2& n2, const Vec2& ns,
-                              const SurfaceGeometry& master_geometry, std::span<const std::size_t> near) {
+                              const SurfaceGeometry& master_geometry, std::span<const std::size_t> near,
+                              const QuadraticEdge* curve, int half) {
   const std::vector<Node>& nodes = master_geometry.nodes();
   const ContactSurface& master = master_geometry.surface();
   std::vector<Overlap> candidates;
   for (const std::size_t m : near) {
     if (ns.dot(master.normal[m]) >= 0.0) continue;  // not facing: the back of a closed surface
     const auto [b1, b2] = master.segment(m);
-    const auto xa = project_onto_segment(x1, x2, n1, n2, node_position(nodes, b1));
-    const auto xb = project_onto_segment(x1, x2, n1, n2, node_position(nodes, b2));
+    auto xa = project_onto_segment(x1, x2, n1, n2, node_position(nodes, b1));
+    auto xb = project_onto_segment(x1, x2, n1, n2, node_position(nodes, b2));
     if (!xa || !xb) continue;
+    if (curve != nullptr) {
+      // Onto the curve, near the chord's root; a node projecting well off the half stays off it (the
+      // curve's extrapolation beyond its edge may turn back), where its chord root is as good.
+      const auto refine = [&](double chord_root, int b) {
+        if (chord_root < -0.25 || chord_root > 1.25) return chord_root;
+        const double on_curve = project_onto_curve(*curve, half, n1, n2, node_position(nodes, b), chord_root);
+        return std::isfinite(on_curve) && on_curve >= -0.5 && on_curve <= 1.5 ? on_curve : chord_root;
+      };
+      xa = refine(*xa, b1);
+      xb = refine(*xb, b2);
+    }
     const double lo = std::max(0.0, std::min(*xa, *xb));
     const double hi = std::min(1.0, std::max(*xa, *xb));
     if (hi - lo > parameter_round_off) candidates.push_back({{lo, hi}, m});
@@ -86,7 +98,7 @@ MasterSegments::MasterSegments(const SurfaceGeometry& master, Pairing pairing) :
 }
 
 std::vector<Overlap> facing_pieces(const Vec2& x1, const Vec2& x2, const Vec2& n1, const Vec2& n2, const Vec2& ns,
-                                   const MasterSegments& master_segments) {
+                                   const MasterSegments& master_segments, const QuadraticEdge* curve, int half) {
   std::vector<Overlap> pieces;
   const Box box = box_of(x1, x2);
   const double length = (x2 - x1).norm();
@@ -94,7 +106,7 @@ std::vector<Overlap> facing_pieces(const Vec2& x1, const Vec2& x2, const Vec2& n
   const double margin = 1e3 * parameter_round_off * length;
   master_segments.search(box, length, SweptLines{x1, x2, n1, n2}, margin,
                          [&](std::span<const std::size_t> near, double reach, bool final) {
-    pieces = overlaps(x1, x2, n1, n2, ns, master_segments.master(), near);
+    pieces = overlaps(x1, x2, n1, n2, ns, master_segments.master(), near, curve, half);
     if (final) return true;
     const Box query = box.inflated(reach);
     double settled = 0.0;

@@ -84,8 +84,12 @@ class MasterSegments {
 /// line from x(xi) to that hit, which lies in the box (convex), so its bounding box overlaps the
 /// query's and it was a candidate). Pieces facing nothing are settled by the final query, of every
 /// segment that meets one of the slave segment's normal lines (only those can face it).
+///
+/// curve: when the slave segment is half `half` of a 3-node edge, that edge's curve: master nodes are
+/// projected onto the curve (project_onto_curve()), where the segment's points are.
 std::vector<Overlap> facing_pieces(const Vec2& x1, const Vec2& x2, const Vec2& n1, const Vec2& n2, const Vec2& ns,
-                                   const MasterSegments& master_segments);
+                                   const MasterSegments& master_segments, const QuadraticEdge* curve = nullptr,
+                                   int half = -1);
 
 /// The distance t along the unit direction n from x to the master's smooth curve (x + t n on it,
 /// t < 0 behind x; distance_to_curve()), searched like facing_pieces() with the curves' largest offset

@@ -39,7 +39,6 @@
 #include "solver/lac/cholmod_memory.hpp"
 #include "solver/lac/sparse_cholesky.hpp"
 #include "support/mesh_builder.hpp"
-#include "support/quadratic_grid.hpp"
 
 #include "stopwatch.hpp"
 
@@ -153,7 +152,7 @@ Model quadratic_block_model(int n, ElementType type) {
   m.analysis = AnalysisType::plane_strain;
   m.materials = {testing::isotropic_material(1, 30.0e6, 0.3, 6.5e-6)};
   const testing::QuadraticGrid g =
-      testing::add_quadratic_grid(m, n, n, [](double s, double t) { return Vec2(s, t); }, 0, type);
+      testing::add_quadratic_grid(m, type, n, n, [](double s, double t) { return Vec2(s, t); }, 0);
   for (int i = 0; i <= 2 * n; ++i) testing::constrain(m, g.at(i, 0), 0.0, 0.0);
   for (int i = 0; i < n; ++i) {
     m.loads.pressures.push_back({(n - 1) * n + i, g.at(2 * i, 2 * n), g.at(2 * i + 2, 2 * n), 1000.0, 0.0});

@@ -35,4 +35,12 @@ inline std::vector<double> hertz_graded(double h) {
   return x;
 }
 
+/// Both sides of x = 0 from one side's coordinates 0, x_1, ..., x_k: -x_k, ..., -x_1, 0, x_1, ..., x_k.
+inline std::vector<double> hertz_mirrored(const std::vector<double>& half) {
+  std::vector<double> x;
+  for (std::size_t k = half.size() - 1; k > 0; --k) x.push_back(-half[k]);
+  x.insert(x.end(), half.begin(), half.end());
+  return x;
+}
+
 }  // namespace saasgaps::testing

@@ -47,6 +47,25 @@ QuadraticGrid add_quadratic_grid(Model& model, ElementType type, int ni, int nj,
 /// (I = 0), as thermal edges (element index, corner a, corner b).
 std::vector<ThermalEdge> quadratic_grid_side(const Model& model, const QuadraticGrid& grid, char side);
 
+/// Node indices of a structured grid of quad8 elements: (2 ni + 1) x (2 nj + 1) positions, corners at
+/// even (i, j), mid-side nodes where one of them is odd, none where both are (-1).
+struct Quad8Grid {
+  int ni = 0;
+  int nj = 0;
+  std::vector<int> nodes;  ///< index of position (i, j) at i + (2 ni + 1) j, i in 0..2 ni
+  [[nodiscard]] int at(int i, int j) const { return nodes[static_cast<std::size_t>(i + (2 * ni + 1) * j)]; }
+  /// Corner (i, j) of the element grid, i in 0..ni.
+  [[nodiscard]] int corner(int i, int j) const { return at(2 * i, 2 * j); }
+  /// The corner pairs of element row j's edges along i (row j of corners, i = 0..ni-1).
+  [[nodiscard]] std::vector<std::array<int, 2>> row_edges(int j) const;
+  /// Every node (corners and mid-side) of corner row j, i from 0 up.
+  [[nodiscard]] std::vector<int> row_nodes(int j) const;
+};
+
+/// As add_grid, with quad8 elements whose mid-side nodes are at map of the mid parameters (on the
+/// curves map draws: the true circle of a ring's face).
+Quad8Grid add_quad8_grid(Model& model, int ni, int nj, const std::function<Vec2(double, double)>& map, int material);
+
 /// A ring r0..r1 meshed on its own: `radial` x `around` quadrilaterals (grid i radial, j round).
 /// Plane analyses: the whole ring about the origin, closed round (grid row `around` is row 0, so
 /// column_edges(g, i) of stacked_blocks.hpp is a closed chain). Axisymmetric: a slice r0..r1 of height 0.2 along z.

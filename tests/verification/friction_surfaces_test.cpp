@@ -523,14 +523,8 @@ CattaneoResult cattaneo(double h, double ratio) {
   Model m;
   m.analysis = AnalysisType::plane_strain;
   m.materials = {testing::isotropic_material(1, testing::hertz_E, testing::hertz_nu)};
-  // Both sides of x = 0: -x_k, ..., 0, ..., x_k.
-  const auto mirrored = [](const std::vector<double>& half) {
-    std::vector<double> x;
-    for (std::size_t k = half.size() - 1; k > 0; --k) x.push_back(-half[k]);
-    x.insert(x.end(), half.begin(), half.end());
-    return x;
-  };
-  const std::vector<double> xb = mirrored(testing::hertz_graded(h)), xc = mirrored(testing::hertz_graded(0.72 * h));
+  const std::vector<double> xb = testing::hertz_mirrored(testing::hertz_graded(h)),
+                            xc = testing::hertz_mirrored(testing::hertz_graded(0.72 * h));
   const std::vector<double> depth = testing::hertz_graded(h);
   const auto at = [](const std::vector<double>& xs, double s) {
     return xs[static_cast<std::size_t>(std::lround(s * static_cast<double>(xs.size() - 1)))];

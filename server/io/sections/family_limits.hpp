@@ -3,8 +3,8 @@
 /// otherwise valid, as model errors at their JSON Pointers:
 /// - a gap element along an edge of a quadratic element (gap elements stay 4-node elements between
 ///   straight edges; the mid-side node would be left out of the contact), at /gaps/elements/<g>/nodes;
-/// - a contact surface edge of a quadratic element, at /contact/surfaces/<i>/edges/<k> (contact
-///   conductance with it: contact surfaces carry it).
+/// - with a `thermal` section, a contact surface edge of a quadratic element, at
+///   /contact/surfaces/<i>/edges/<k> (contact itself runs on such edges; contact conductance not yet).
 /// Heat conduction runs on every family (solver/thermal/isoparametric_conduction.hpp). The report's
 /// quadrilateral, the CST and quad4i have no limit here.
 

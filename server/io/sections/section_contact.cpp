@@ -4,6 +4,7 @@
 /// contact_surface_input_issues (io/contact_check.hpp).
 #include "io/json/value_quote.hpp"
 #include "io/sections/section_reader.hpp"
+#include "solver/assembly/element_data.hpp"
 
 namespace saasgaps::io {
 
@@ -63,21 +64,43 @@ std::optional<SurfaceDefinition> SectionReader::read_surface(const json& item, c
   }
   const json* edges = array_field(o, "edges", 1);
   if (edges == nullptr) return std::nullopt;
+  std::optional<EdgeOwners> owners;  // for the mid-side nodes named in [a, m, b]
   for (std::size_t k = 0; k < edges->size(); ++k) {
     const json& edge = (*edges)[k];
     const std::string edge_pointer = pointer_append(o.at("edges"), k);
-    if (!edge.is_array() || edge.size() != 2) {
-      report(edge_pointer, "an edge must be an array of two node ids [a, b], got " + describe(edge));
+    if (!edge.is_array() || (edge.size() != 2 && edge.size() != 3)) {
+      report(edge_pointer, "an edge must be an array of two node ids [a, b] (or [a, m, b] with the mid-side node "
+                           "of a quadratic element's edge), got " + describe(edge));
       valid = false;
       continue;
     }
-    std::array<int, 2> nodes{-1, -1};
-    for (std::size_t end = 0; end < 2; ++end) {
-      if (const Entry* node = resolve_node(edge[end], Where(edge_pointer, end))) nodes[end] = node->index;
+    std::array<int, 3> named{-1, -1, -1};
+    for (std::size_t end = 0; end < edge.size(); ++end) {
+      if (const Entry* node = resolve_node(edge[end], Where(edge_pointer, end))) named[end] = node->index;
     }
-    if (nodes[0] < 0 || nodes[1] < 0) {
+    const std::array<int, 2> nodes{named[0], named[edge.size() - 1]};
+    if (nodes[0] < 0 || nodes[1] < 0 || (edge.size() == 3 && named[1] < 0)) {
       valid = false;
       continue;
+    }
+    if (edge.size() == 3 && solids_complete_) {
+      // The middle node must be the mid-side node of the edge between the corners (when one solid
+      // element has that edge: the surface check reports the others).
+      if (!owners) owners = solid_edge_owners();
+      const auto found = owners->find(std::minmax(nodes[0], nodes[1]));
+      if (found != owners->end() && found->second.size() == 1) {
+        const auto e = static_cast<std::size_t>(found->second.front());
+        const ElementEdge side = element_edge(model_, e, nodes[0], nodes[1]);
+        if (side.count != 3 || side.node[1] != named[1]) {
+          report(edge_pointer, "the middle node of " + quote(edge) + " is not the mid-side node of element " +
+                                   std::to_string(model_.elements[e].id) + "'s edge between its corners" +
+                                   (side.count == 3 ? " (that is node " +
+                                                          std::to_string(model_.nodes[static_cast<std::size_t>(side.node[1])].id) + ")"
+                                                    : " (a straight edge, which has none: name its two corners)"));
+          valid = false;
+          continue;
+        }
+      }
     }
     surface.edges.push_back(nodes);
   }

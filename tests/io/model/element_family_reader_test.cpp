@@ -1,5 +1,5 @@
 // The reader on element families: types, integrations, shapes, and what quadratic elements do not
-// carry yet (gap elements along their edges, contact surfaces), each an error at its
+// carry yet (gap elements along their edges, conductance across contact surfaces on them), each an error at its
 // JSON Pointer naming the element and the value; and the same model through the text path.
 #include <gtest/gtest.h>
 
@@ -105,11 +105,21 @@ TEST(ElementFamilyReader, AGapAlongAQuadraticEdgePointsToContactSurfaces) {
   expect_issue(d, "/gaps/elements/0/nodes", {"gap element 3", "[4, 3]", "element 1 (quad8)", "mid-side node 7", "contact surfaces"});
 }
 
-TEST(ElementFamilyReader, AContactSurfaceOnAQuadraticElementIsNotAvailableYet) {
+TEST(ElementFamilyReader, AContactSurfaceOnAQuadraticElementMayNameItsMidSideNode) {
   json d = two_bodies();
   d["contact"] = json::parse(R"({"surfaces": [{"name": "top", "edges": [[3, 4]]}, {"name": "under", "edges": [[9, 10]]}],
                                  "pairs": [{"surfaces": ["top", "under"]}]})");
-  expect_issue(d, "/contact/surfaces/0/edges/0", {"surface \"top\"", "[3, 4]", "element 1 (quad8)", "not available yet"});
+  const Model corners = read_model(d);
+  d["contact"]["surfaces"][0]["edges"][0] = json::array({3, 7, 4});
+  const Model named = read_model(d);
+  ASSERT_TRUE(named.contact);
+  EXPECT_EQ(named.contact->surfaces[0].edges, corners.contact->surfaces[0].edges);
+
+  d["contact"]["surfaces"][0]["edges"][0] = json::array({3, 6, 4});
+  expect_issue(d, "/contact/surfaces/0/edges/0", {"[3, 6, 4]", "not the mid-side node of element 1", "node 7"});
+  d["contact"]["surfaces"][0]["edges"][0] = json::array({3, 7, 4});
+  d["contact"]["surfaces"][1]["edges"][0] = json::array({9, 3, 10});  // the saas element's straight edge
+  expect_issue(d, "/contact/surfaces/1/edges/0", {"element 2", "straight edge"});
 }
 
 TEST(ElementFamilyReader, HeatConductionOnQuadraticElementsReadsItsEdgesThroughTheirMidSideNodes) {
@@ -122,6 +132,15 @@ TEST(ElementFamilyReader, HeatConductionOnQuadraticElementsReadsItsEdgesThroughT
   ASSERT_EQ(m.thermal->boundary.size(), 2U);
   EXPECT_EQ(m.thermal->boundary[0].edges[0].element, 0);  // the quad8's edge 1-5-2
   EXPECT_EQ(m.thermal->boundary[1].edges[0].element, 0);
+}
+
+TEST(ElementFamilyReader, ConductanceAcrossAQuadraticContactSurfaceIsNotAvailableYet) {
+  json d = two_bodies();
+  d["materials"][0]["table"][0]["k"] = 1.0;
+  d["thermal"] = json::parse(R"({"type": "steady", "boundary": [{"edges": [[1, 2]], "temperature": 100}]})");
+  d["contact"] = json::parse(R"({"surfaces": [{"name": "top", "edges": [[3, 4]]}, {"name": "under", "edges": [[9, 10]]}],
+                                 "pairs": [{"surfaces": ["top", "under"]}]})");
+  expect_issue(d, "/contact/surfaces/0/edges/0", {"surface \"top\"", "[3, 4]", "element 1 (quad8)", "heat conduction"});
 }
 
 TEST(ElementFamilyReader, APressureEdgeMayNameItsMidSideNode) {

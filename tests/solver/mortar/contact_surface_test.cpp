@@ -126,13 +126,14 @@ TEST(ContactSurface, RefusesAnEdgeThatIsNoSide) {
   EXPECT_NE(issue.detail.find("[10, 7]"), std::string::npos) << issue.detail;  // user ids
 }
 
-TEST(ContactSurface, RefusesAnEdgeOfAQuadraticElement) {
-  // A quad8 built in code: its sides run corner to corner (through the mid-side nodes, which a
-  // contact surface does not carry yet), so the surface names the element instead of "no side".
+TEST(ContactSurface, AQuadraticEdgeIsTwoHalvesThroughItsMidSideNode) {
+  // A quad8 built in code: its top edge, named by its corners, is a chain of three nodes, corner ->
+  // mid-side node -> corner (material on the left), two segments that know they are the halves of one
+  // 3-node edge; the mid-side node is never a corner.
   Model m;
   m.materials = {testing::isotropic_material(1, 1.0e6, 0.3)};
   const std::array<Vec2, 8> x{Vec2(0, 0), Vec2(2, 0), Vec2(2, 1), Vec2(0, 1),
-                              Vec2(1, 0), Vec2(2, 0.5), Vec2(1, 1), Vec2(0, 0.5)};
+                              Vec2(1, 0), Vec2(2, 0.5), Vec2(1, 1.1), Vec2(0, 0.5)};
   Element e;
   e.id = 7;
   e.type = ElementType::quad8;
@@ -142,10 +143,21 @@ TEST(ContactSurface, RefusesAnEdgeOfAQuadraticElement) {
     e.nodes[static_cast<std::size_t>(k)] = k;
   }
   m.elements = {e};
-  const SurfaceEdgeIssue issue = refusal(m, {{2, 3}});
-  EXPECT_EQ(issue.problem, SurfaceEdgeProblem::quadratic);
-  EXPECT_NE(issue.detail.find("edge [3, 4]: an edge of element 7"), std::string::npos) << issue.detail;
-  EXPECT_NE(issue.detail.find("not available yet"), std::string::npos) << issue.detail;
+  const ContactSurface s = contact_surface(m, Edges{{3, 2}, {2, 1}});
+  EXPECT_EQ(s.nodes, (std::vector<int>{1, 5, 2, 6, 3}));
+  EXPECT_FALSE(s.closed);
+  ASSERT_EQ(s.segment_count(), 4U);
+  EXPECT_EQ(s.halves, (std::vector<std::int8_t>{0, 1, 0, 1}));
+  EXPECT_EQ(s.edge, (std::vector<std::size_t>{1, 1, 0, 0}));
+  EXPECT_EQ(s.edge_positions(3), (std::array<std::size_t, 3>{2, 3, 4}));
+  EXPECT_TRUE(s.mid_side(1));
+  EXPECT_TRUE(s.mid_side(3));
+  EXPECT_FALSE(s.mid_side(2));
+  EXPECT_NEAR(s.normal[0].x(), 1.0, 1e-15);              // the right side's chord
+  EXPECT_NEAR(s.normal[2].dot(Vec2(0.1, 1).normalized()), 1.0, 1e-15);  // the top's first half, tilted up
+  const std::vector<bool> corner = corners(s);
+  EXPECT_TRUE(corner[2]);   // the element's corner, where the chain turns by 90 degrees
+  EXPECT_FALSE(corner[3]);  // the mid-side node of a bent edge
 }
 
 TEST(ContactSurface, RefusesAnEdgeOfTwoElements) {
