@@ -9,9 +9,10 @@
 
 namespace saasgaps::io {
 
-/// Opens `file` with Gmsh (a `.geo` is meshed in 2D with the options it sets itself) and returns
-/// the mesh; messages name the file as `shown`. Throws MeshTooLarge beyond `max_nodes` nodes,
+/// Opens `file` with Gmsh (a `.geo` is meshed in 2D with the options it sets itself, and with
+/// `sizes` as the background mesh size when given) and returns the mesh; messages name the file as `shown`. Throws MeshTooLarge beyond `max_nodes` nodes,
 /// std::bad_alloc when memory runs out, MeshError for anything else (never a Gmsh exception).
-GmshMesh read_with_gmsh(const std::filesystem::path& file, const std::filesystem::path& shown, std::size_t max_nodes);
+GmshMesh read_with_gmsh(const std::filesystem::path& file, const std::filesystem::path& shown, std::size_t max_nodes,
+                        const SizeField* sizes = nullptr);
 
 }  // namespace saasgaps::io
