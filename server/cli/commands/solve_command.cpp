@@ -208,6 +208,8 @@ int run_assembly_solve(const SolveOptions& options, const std::string& destinati
   const auto settings = io::read_adapt_settings(assembly, [](const std::string&, const std::string&) {});
   if (!assembly.contains("adapt") || !settings) {
     const Model model = io::read_model(io::import_assembly(assembly, base));
+    std::cerr << "imported " << options.model_path << ": " << model.nodes.size() << " nodes, " << model.elements.size()
+              << " elements\n";
     return solve_model(options, destination, model, {});
   }
   std::optional<OrderingCache> cache;

@@ -89,6 +89,11 @@ class UniformLe1 {
 };
 
 TEST(AdaptiveLoop, Le1ReachesOnePercentWithFewerNodesThanAUniformMesh) {
+  // The uniform mesh of 26000 nodes takes Gmsh 20 to 70 s on a loaded 2-core machine (the
+  // recombination): beyond the default 60 s.
+  io::MeshLimits limits = io::mesh_limits();
+  limits.seconds = 600;
+  io::set_mesh_limits(limits);
   const io::AdaptiveRun run = adapt(load(assemblies / "le1-adapt.assembly.json"), assemblies);
   ASSERT_TRUE(run.reached) << run.message;
   ASSERT_GE(run.cycles.size(), 2U);
@@ -105,7 +110,14 @@ TEST(AdaptiveLoop, Le1ReachesOnePercentWithFewerNodesThanAUniformMesh) {
   const double sigma_yy = run.solution.recovered.mean(static_cast<std::size_t>(d))[1];
   std::printf("LE1 adaptive: %zu nodes, relative error %.4g, sigma_yy at D %.4g (%.3g %% from 92.7)\n",
               run.model.nodes.size(), run.cycles.back().relative_error, sigma_yy, 100.0 * (sigma_yy / 92.7 - 1.0));
-  EXPECT_NEAR(sigma_yy / 92.7, 1.0, 0.015);
+  EXPECT_NEAR(sigma_yy / 92.7, 1.0, 0.015);  // the bound
+  EXPECT_NEAR(sigma_yy, 92.71, 0.05);          // docs/import.md and README: 92.71
+  // docs/import.md, README, docs/performance.md: 4 cycles, 148 .. 14303 nodes (Gmsh is deterministic;
+  // 2 % for another Gmsh build).
+  EXPECT_EQ(run.cycles.size(), 4U);
+  EXPECT_EQ(run.cycles.front().nodes, 148U);
+  EXPECT_NEAR(static_cast<double>(run.model.nodes.size()), 14303.0, 0.02 * 14303.0);
+  EXPECT_NEAR(run.cycles.front().relative_error, 0.1237, 0.0005);
 
   // Uniform meshes of the same geometry, halving the size until the estimate is as small.
   const UniformLe1 uniform;
@@ -121,6 +133,7 @@ TEST(AdaptiveLoop, Le1ReachesOnePercentWithFewerNodesThanAUniformMesh) {
   }
   ASSERT_GT(uniform_nodes, 0U) << "no uniform mesh down to lc = 0.0078 reaches " << reached;
   EXPECT_LT(run.model.nodes.size(), uniform_nodes);
+  EXPECT_NEAR(static_cast<double>(uniform_nodes), 26171.0, 0.02 * 26171.0);  // docs/import.md, README
 }
 
 /// The mean size (sqrt of the area) of the elements with a node within `band` of r = r0.
@@ -163,6 +176,11 @@ TEST(AdaptiveLoop, PressFitRefinesAtTheContactAndMeetsLame) {
               before, after, far_before, far_after);
   EXPECT_LT(after, before);
   EXPECT_LT(after / before, far_after / far_before);
+  EXPECT_LT(after / before, 0.4);          // docs/import.md: 0.0188 -> 0.0063 (0.34)
+  EXPECT_GT(far_after / far_before, 0.7);  // and 0.0161 -> 0.0132 (0.82)
+  EXPECT_EQ(run.cycles.size(), 2U);
+  EXPECT_NEAR(run.cycles.front().relative_error, 0.0041, 0.0001);
+  EXPECT_NEAR(run.cycles.back().relative_error, 0.0017, 0.0001);
 
   const double p = testing::lame_rings::plane_strain_interference_pressure({1.0, 1.5, 2.2, 30.0e6, 0.3, 10.0e6, 0.33},
                                                                            1.5e-4);
@@ -173,7 +191,7 @@ TEST(AdaptiveLoop, PressFitRefinesAtTheContactAndMeetsLame) {
   }
   std::printf("press fit adaptive: %zu nodes, worst contact pressure error %.3g %%\n", run.model.nodes.size(),
               100.0 * worst);
-  EXPECT_LT(worst, 0.005);
+  EXPECT_LT(worst, 0.001);  // observed 0.0645 %; docs/import.md: within 0.07 %
 }
 
 TEST(AdaptiveLoop, ALimitThatCannotBeMetStopsWithTheReachedError) {
@@ -185,7 +203,7 @@ TEST(AdaptiveLoop, ALimitThatCannotBeMetStopsWithTheReachedError) {
   EXPECT_EQ(run.solution.status, RunStatus::converged);
   EXPECT_NE(run.message.find("adaptation stopped at the limit max_cycles = 2 with relative error"), std::string::npos)
       << run.message;
-  EXPECT_NE(run.message.find("> target 0.001"), std::string::npos) << run.message;
+  EXPECT_NE(run.message.find("relative error 0.02793 > target 0.001"), std::string::npos) << run.message;  // docs/import.md
 }
 
 }  // namespace
