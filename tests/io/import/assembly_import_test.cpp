@@ -661,7 +661,7 @@ TEST(AssemblyImport, BadAdaptSettingsAreReportedAtTheirPointers) {
     const char* words;
   };
   const std::vector<Case> cases = {
-      {{{"target_error", 0.0}}, "/adapt/target_error", "target_error = 0 is out of range: need 0 < target_error < 1"},
+      {{{"target_error", 0.0}}, "/adapt/target_error", "target_error = 0.0 is out of range: need 0 < target_error < 1"},
       {{{"target_error", -0.1}}, "/adapt/target_error", "out of range"},
       {{{"target_error", 1.0}}, "/adapt/target_error", "target_error = 1.0 is out of range"},
       {{{"target_error", "1%"}}, "/adapt/target_error", "target_error must be a number"},
