@@ -334,6 +334,63 @@ TEST_F(SolveCommand, TransientHeatRunWithConductingGapsResumesMidWayToTheLastDig
   EXPECT_EQ(numbers(json_of(path("resumed.json"))), numbers(json_of(path("full.json"))));
 }
 
+// ---- an assembly given to solve: imported and solved in one command; with adapt, the loop
+
+TEST_F(SolveCommand, AnAssemblyIsImportedAndSolvedAsItsModelIs) {
+  const std::string assembly = example("assemblies/ring-press-fit.assembly.json");
+  ASSERT_EQ(saasgaps("import " + assembly + " -o " + path("model.json")).exit_code, 0);
+  ASSERT_EQ(saasgaps("solve -q " + path("model.json") + " -o " + path("two-steps.json")).exit_code, 0);
+  const Outcome r = saasgaps("solve -q " + assembly + " -o " + path("one-step.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("imported " + assembly), std::string::npos) << r.err;
+  const nlohmann::json one = numbers(json_of(path("one-step.json")));
+  EXPECT_FALSE(one.contains("adaptation"));
+  EXPECT_EQ(one, numbers(json_of(path("two-steps.json"))));
+  // Restart states belong to a model's text.
+  const Outcome state = saasgaps("solve -q " + assembly + " --state-out " + path("s.json") + " -o " + path("x.json"));
+  EXPECT_EQ(state.exit_code, 64);
+  EXPECT_NE(state.err.find("is an assembly; restart states belong to a model"), std::string::npos) << state.err;
+}
+
+TEST_F(SolveCommand, AnAdaptiveAssemblyWritesItsCyclesAndSaysWhenALimitStoppedIt) {
+  nlohmann::json a = json_of(example("assemblies/le1-adapt.assembly.json"));
+  a["mesh"] = example("assemblies/le1.geo");
+  a["adapt"] = {{"target_error", 0.03}, {"max_cycles", 4}};
+  std::ofstream(path("le1.json")) << a.dump();
+  const Outcome r = saasgaps("solve -q " + path("le1.json") + " -o " + path("le1-result.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("adapt cycle 2: "), std::string::npos) << r.err;
+  const nlohmann::json result = json_of(path("le1-result.json"));
+  ASSERT_TRUE(result.contains("adaptation"));
+  const nlohmann::json& rows = result["adaptation"];
+  ASSERT_GE(rows.size(), 2U);
+  EXPECT_EQ(rows.back()["nodes"], result["nodes"].size());
+  EXPECT_EQ(rows.back()["relative_error"], result["error_estimate"]["relative"]);
+  EXPECT_LE(rows.back()["relative_error"].get<double>(), 0.03);
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    EXPECT_EQ(rows[k]["cycle"], k + 1);
+    for (const char* part : {"mesh", "import", "solve", "sizes"}) EXPECT_GE(rows[k]["seconds"][part].get<double>(), 0.0);
+  }
+  EXPECT_NE(result["message"].get<std::string>().find("adaptation reached relative error"), std::string::npos);
+
+  a["adapt"] = {{"target_error", 0.001}, {"max_cycles", 2}};
+  std::ofstream(path("le1.json")) << a.dump();
+  const Outcome limit = saasgaps("solve -q " + path("le1.json") + " -o " + path("le1-result.json"));
+  EXPECT_EQ(limit.exit_code, 3) << limit.err;
+  const nlohmann::json stopped = json_of(path("le1-result.json"));
+  EXPECT_EQ(stopped["status"], "converged");
+  EXPECT_EQ(stopped["adaptation"].size(), 2U);
+  EXPECT_NE(stopped["message"].get<std::string>().find("adaptation stopped at the limit max_cycles = 2 with relative error"),
+            std::string::npos)
+      << stopped["message"];
+
+  a["mesh"] = example("assemblies/two_blocks.msh");
+  std::ofstream(path("le1.json")) << a.dump();
+  const Outcome msh = saasgaps("solve -q " + path("le1.json") + " -o " + path("le1-result.json"));
+  EXPECT_EQ(msh.exit_code, 2) << msh.err;
+  EXPECT_NE(msh.err.find("/adapt: adapt re-meshes the geometry"), std::string::npos) << msh.err;
+}
+
 }  // namespace
 
 namespace {

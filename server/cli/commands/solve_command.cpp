@@ -4,12 +4,18 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <functional>
 #include <iostream>
 
 #include "cli/common/file_io.hpp"
 #include "cli/common/progress_table.hpp"
 #include "cli/common/usage.hpp"
 #include "io/json/json_text.hpp"
+#include "io/import/adapt_settings.hpp"
+#include "io/import/adaptive_loop.hpp"
+#include "io/import/assembly_reader.hpp"
+#include "io/model/document_kind.hpp"
 #include "io/model/model_reader.hpp"
 #include "io/restart/read_card.hpp"
 #include "io/restart/state_codec.hpp"
@@ -74,6 +80,10 @@ void write_result(const SolveOptions& options, const std::string& destination, c
   }
 }
 
+int solve_model(const SolveOptions& options, const std::string& destination, const Model& model,
+                const std::string& digest);
+int run_assembly_solve(const SolveOptions& options, const std::string& destination, const std::string& text);
+
 }  // namespace
 
 std::string result_path_next_to(const std::string& model_path) {
@@ -93,8 +103,75 @@ int run_solve(const SolveOptions& options) {
   // states carry is computed on the way, when there is a state to write or read.
   std::string digest;
   const bool restarts = !options.state_out.empty() || !options.resume_from.empty();
-  const Model model = io::parse_model(read_file(options.model_path), restarts ? &digest : nullptr);
+  const std::string text = read_file(options.model_path);
+  Model model;
+  try {
+    model = io::parse_model(text, restarts ? &digest : nullptr);
+  } catch (const ModelError& e) {
+    if (!io::names_assembly(e)) throw;
+    return run_assembly_solve(options, destination, text);
+  }
+  return solve_model(options, destination, model, digest);
+}
 
+namespace {
+
+bool has_friction(const Model& model) {
+  return model.contact && std::any_of(model.contact->pairs.begin(), model.contact->pairs.end(),
+                                      [](const SurfacePair& pair) { return pair.friction > 0.0; });
+}
+
+/// One solve with the progress table (and restart states) of the command line.
+Solution solve_one(const SolveOptions& options, const Model& model, const std::string& digest,
+                   const RestartState* resume, const OrderingCache* cache) {
+  CommandLineObserver observer(options, digest, has_friction(model));
+  return solve_with_heat(model, &observer, resume, options.changes, cache);
+}
+
+/// Runs `solve`; when it throws, the result document records the failure too (main() reports it),
+/// except for bad input, which writes no result (as a model that does not read).
+template <class Solve>
+auto recorded(const SolveOptions& options, const std::string& destination, const Solve& solve) {
+  try {
+    return solve();
+  } catch (const ModelError&) {
+    throw;
+  } catch (const std::exception& e) {
+    if (destination != "-") {
+      write_result(options, destination, [&](io::JsonWriter& out) { io::write_failed_result(out, e.what()); });
+    }
+    throw;
+  }
+}
+
+/// The result written (and the VTU when asked); the exit code.
+int finish(const SolveOptions& options, const std::string& destination, const Model& model, const Solution& solution,
+           const std::function<void(io::JsonWriter&)>& leading, bool reached = true) {
+  std::cerr << solution.message << '\n';
+  if (solution.error_estimate) {
+    // The recovered stresses' verdict on the mesh (docs/recovery.md): error_estimate.relative.
+    char line[160];
+    std::snprintf(line, sizeof line, "estimated stress error %.2f %% in the energy norm (error_estimate.relative %.4g)\n",
+                  100.0 * solution.error_estimate->relative, solution.error_estimate->relative);
+    std::cerr << line;
+  }
+  write_result(options, destination, [&](io::JsonWriter& out) { io::write_result(out, model, solution, {}, leading); });
+  // Said only when the user did not name the file: they should not have to guess where it went.
+  if (options.result_path.empty() && destination != "-") {
+    std::cerr << "result written to " << destination << " (-o FILE names another file, -o - is standard output)\n";
+  }
+  // A VTU that cannot be written must not turn a good result into a failed one. The VTU writer
+  // works from a result tree: only this opt-in export builds one.
+  if (!options.vtu_path.empty()) {
+    // The result's text read as arrays, as `saasgaps export-vtu` reads the file: no tree of it.
+    write_file_atomically(options.vtu_path, io::result_to_vtu(io::read_result_arrays(io::result_text(model, solution),
+                                                                                     io::vtu_result_selection())));
+  }
+  return solution.status == RunStatus::converged && reached ? 0 : 3;
+}
+
+int solve_model(const SolveOptions& options, const std::string& destination, const Model& model,
+                const std::string& digest) {
   // Said by the HTTP resume body too (io/read_card.hpp): ignoring them would run something else
   // than what was asked.
   if (!model.gaps && options.changes.tensile_schedule) throw UsageError(std::string("solve --schedule: ") + io::no_gaps_schedule);
@@ -115,42 +192,53 @@ int run_solve(const SolveOptions& options) {
     }
     resume = io::state_from_json(saved, digest);
   }
-  const bool friction = model.contact && std::any_of(model.contact->pairs.begin(), model.contact->pairs.end(),
-                                                     [](const SurfacePair& pair) { return pair.friction > 0.0; });
-  CommandLineObserver observer(options, digest, friction);
   std::optional<OrderingCache> cache;
   if (!options.cache_dir.empty()) cache.emplace(options.cache_dir);
-  std::optional<Solution> solution;
-  try {
-    solution = solve_with_heat(model, &observer, resume ? &*resume : nullptr, options.changes, cache ? &*cache : nullptr);
-  } catch (const std::exception& e) {
-    // The failure is reported by main(); the result document records it too.
-    if (destination != "-") {
-      write_result(options, destination, [&](io::JsonWriter& out) { io::write_failed_result(out, e.what()); });
-    }
-    throw;
-  }
-  std::cerr << solution->message << '\n';
-  if (solution->error_estimate) {
-    // The recovered stresses' verdict on the mesh (docs/recovery.md): error_estimate.relative.
-    char line[160];
-    std::snprintf(line, sizeof line, "estimated stress error %.2f %% in the energy norm (error_estimate.relative %.4g)\n",
-                  100.0 * solution->error_estimate->relative, solution->error_estimate->relative);
-    std::cerr << line;
-  }
-  write_result(options, destination, [&](io::JsonWriter& out) { io::write_result(out, model, *solution); });
-  // Said only when the user did not name the file: they should not have to guess where it went.
-  if (options.result_path.empty() && destination != "-") {
-    std::cerr << "result written to " << destination << " (-o FILE names another file, -o - is standard output)\n";
-  }
-  // A VTU that cannot be written must not turn a good result into a failed one. The VTU writer
-  // works from a result tree: only this opt-in export builds one.
-  if (!options.vtu_path.empty()) {
-    // The result's text read as arrays, as `saasgaps export-vtu` reads the file: no tree of it.
-    write_file_atomically(options.vtu_path, io::result_to_vtu(io::read_result_arrays(io::result_text(model, *solution),
-                                                                                     io::vtu_result_selection())));
-  }
-  return solution->status == RunStatus::converged ? 0 : 3;
+  const Solution solution = recorded(options, destination, [&] {
+    return solve_one(options, model, digest, resume ? &*resume : nullptr, cache ? &*cache : nullptr);
+  });
+  return finish(options, destination, model, solution, {});
 }
+
+/// An assembly (docs/import.md) imported, then solved as its model is; with `adapt`, the adaptive
+/// loop (io/import/adaptive_loop.hpp), a line per cycle on stderr and the cycles in the result's
+/// `adaptation`. Restart states belong to a model's text, so they need the imported model
+/// (saasgaps import first).
+int run_assembly_solve(const SolveOptions& options, const std::string& destination, const std::string& text) {
+  if (!options.state_out.empty() || !options.resume_from.empty()) {
+    throw UsageError(std::string("solve ") + (options.state_out.empty() ? "--resume" : "--state-out") + ": " +
+                     options.model_path + " is an assembly; restart states belong to a model: run saasgaps import "
+                     "and solve the model it writes");
+  }
+  const nlohmann::json assembly = io::parse_document(text);
+  const std::filesystem::path base = std::filesystem::absolute(options.model_path).parent_path();
+  // A wrong `adapt` is reported by the import, with every other problem of the document.
+  const auto settings = io::read_adapt_settings(assembly, [](const std::string&, const std::string&) {});
+  if (!assembly.contains("adapt") || !settings) {
+    const Model model = io::read_model(io::import_assembly(assembly, base));
+    std::cerr << "imported " << options.model_path << ": " << model.nodes.size() << " nodes, " << model.elements.size()
+              << " elements\n";
+    return solve_model(options, destination, model, {});
+  }
+  std::optional<OrderingCache> cache;
+  if (!options.cache_dir.empty()) cache.emplace(options.cache_dir);
+  io::AdaptiveRun run = recorded(options, destination, [&] {
+    return io::run_adaptive(
+        assembly, base, io::FileAccess::anywhere, *settings,
+        [&](const Model& model) { return solve_one(options, model, {}, nullptr, cache ? &*cache : nullptr); },
+        [&](const io::AdaptCycle& c) {
+          std::cerr << "adapt cycle " << c.cycle << ": " << c.nodes << " nodes, " << c.elements
+                    << " elements, relative error " << c.relative_error << " (target " << settings->target_error
+                    << "; mesh " << c.mesh_seconds << " s, import " << c.import_seconds << " s, solve "
+                    << c.solve_seconds << " s)\n";
+        });
+  });
+  std::cerr << run.message << '\n';
+  run.solution.message += "; " + run.message;
+  return finish(options, destination, run.model, run.solution,
+                [&](io::JsonWriter& out) { io::write_adaptation(out, run.cycles); }, run.reached);
+}
+
+}  // namespace
 
 }  // namespace saasgaps::cli

@@ -23,6 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/import/adapt_settings.hpp"
 #include "io/import/assembly_files.hpp"
 #include "io/import/assembly_reader.hpp"
 #include "io/import/gap_generator.hpp"
@@ -46,9 +47,12 @@ struct GroupUse {
 
 class Importer {
  public:
-  Importer(const json& assembly, fs::path base, FileAccess access) : doc_(assembly), files_(std::move(base), access) {}
+  Importer(const json& assembly, fs::path base, FileAccess access, const SizeField* sizes = nullptr)
+      : doc_(assembly), files_(std::move(base), access), sizes_(sizes) {}
 
   json run();
+  /// Seconds the mesher took (read_gmsh_mesh), once run.
+  [[nodiscard]] double mesh_seconds() const { return mesh_seconds_; }
 
  private:
   void report(std::string pointer, std::string detail) {
@@ -73,6 +77,8 @@ class Importer {
 
   // ---- the mesh and its groups (assembly_mesh.cpp)
   void load_mesh();
+  /// What `adapt` needs of the mesh: a `.geo` file to re-mesh, and a first mesh within max_nodes.
+  void adapt_mesh(const AdaptSettings& adapt);
   /// The mesh's nodes as the model's, by their Gmsh tags.
   void nodes(json& model) const;
   /// The largest |r| or |z| of the mesh's nodes: the scale of round-off and of position tolerances.
@@ -143,6 +149,8 @@ class Importer {
 
   const json& doc_;
   AssemblyFiles files_;
+  const SizeField* sizes_ = nullptr;  ///< the background mesh size of a re-mesh, or none
+  double mesh_seconds_ = 0.0;
   std::vector<InputIssue> issues_;
   GmshMesh mesh_;
   bool mesh_loaded_ = false;

@@ -5,6 +5,7 @@
 #include "io/import/assembly_importer.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -33,7 +34,9 @@ void Importer::load_mesh() {
   }
   if (!path) return;
   try {
-    mesh_ = read_gmsh_mesh(*path, order ? static_cast<int>(*order) : 0);
+    const auto start = std::chrono::steady_clock::now();
+    mesh_ = read_gmsh_mesh(*path, order ? static_cast<int>(*order) : 0, sizes_);
+    mesh_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   } catch (const MeshTooLarge&) {
     throw;  // a limit, not a defect of the assembly: the service answers 413
   } catch (const MeshError& e) {
@@ -52,6 +55,23 @@ void Importer::load_mesh() {
   for (std::size_t i = 0; i < mesh_.r.size(); ++i) {
     positions_.emplace_back(mesh_.r[i], mesh_.z[i]);
     ids_.push_back(static_cast<int>(mesh_.node_tags[i]));
+  }
+}
+
+void Importer::adapt_mesh(const AdaptSettings& adapt) {
+  const auto name = doc_.find("mesh");
+  if (name == doc_.end() || !name->is_string()) return;  // reported by load_mesh()
+  const std::string mesh = name->get<std::string>();
+  if (fs::path(mesh).extension() != ".geo") {
+    report("/adapt", "adapt re-meshes the geometry, but the mesh " + quote_string(mesh) +
+                         " is not a Gmsh geometry (.geo): a .msh mesh has nothing to re-mesh; name the .geo it "
+                         "was meshed from, or remove adapt");
+    return;
+  }
+  if (mesh_loaded_ && mesh_.r.size() > adapt.max_nodes) {
+    report("/adapt/max_nodes", "max_nodes = " + std::to_string(adapt.max_nodes) + " is fewer than the first mesh's " +
+                                   std::to_string(mesh_.r.size()) + " nodes: nothing could be refined; raise it or "
+                                   "coarsen the geometry's sizes");
   }
 }
 

@@ -3,11 +3,14 @@
 #include <string>
 #include <utility>
 
+#include "io/import/adapt_settings.hpp"
 #include "io/import/assembly_importer.hpp"
 #include "io/json/value_rules.hpp"
 #include "solver/base/errors.hpp"
 
 namespace saasgaps::io {
+
+using nlohmann::json;
 
 namespace assembly {
 
@@ -17,7 +20,7 @@ namespace assembly {
 /// every problem of the document; only a document that is not an object stops at once.
 json Importer::run() {
   if (!object(doc_, "", {"schema_version", "title", "mesh", "analysis", "materials", "regions", "constraints"},
-              {"description", "units", "order", "loads", "gaps", "thermal", "solver", "output", "steps"})) {
+              {"description", "units", "order", "loads", "gaps", "thermal", "solver", "output", "steps", "adapt"})) {
     throw ModelError(std::move(issues_), "assembly");
   }
   if (const auto v = doc_.find("schema_version"); v != doc_.end()) {
@@ -29,7 +32,9 @@ json Importer::run() {
     if (const auto v = doc_.find(key); v != doc_.end()) model[key] = *v;
   }
   read_material_ids();
+  const auto adapt = read_adapt_settings(doc_, reporter());
   load_mesh();
+  if (adapt) adapt_mesh(*adapt);
   nodes(model);
   regions(model);
   gaps(model);
@@ -54,8 +59,11 @@ json Importer::run() {
 }  // namespace assembly
 
 nlohmann::json import_assembly(const nlohmann::json& assembly, const std::filesystem::path& base_directory,
-                               FileAccess access) {
-  return assembly::Importer(assembly, base_directory, access).run();
+                               FileAccess access, const SizeField* sizes, double* mesh_seconds) {
+  assembly::Importer importer(assembly, base_directory, access, sizes);
+  json model = importer.run();
+  if (mesh_seconds != nullptr) *mesh_seconds = importer.mesh_seconds();
+  return model;
 }
 
 }  // namespace saasgaps::io

@@ -17,6 +17,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/mesher/gmsh_mesh.hpp"
+
 namespace saasgaps::io {
 
 /// Which files an assembly may name.
@@ -26,9 +28,12 @@ enum class FileAccess {
 };
 
 /// Builds the model document. Relative file names (the mesh, a temperature file) are resolved
-/// against `base_directory`, the assembly file's own directory. Throws ModelError, or MeshTooLarge
-/// when the mesh passes the limits of io/mesher/gmsh_mesh.hpp.
+/// against `base_directory`, the assembly file's own directory. `sizes`, when given, is the
+/// background mesh size the `.geo` is re-meshed with (the adaptive loop). Throws ModelError, or
+/// MeshTooLarge when the mesh passes the limits of io/mesher/gmsh_mesh.hpp. `mesh_seconds`, when
+/// given, receives the time the mesher took.
 nlohmann::json import_assembly(const nlohmann::json& assembly, const std::filesystem::path& base_directory,
-                               FileAccess access = FileAccess::anywhere);
+                               FileAccess access = FileAccess::anywhere, const SizeField* sizes = nullptr,
+                               double* mesh_seconds = nullptr);
 
 }  // namespace saasgaps::io

@@ -138,7 +138,7 @@ std::string dimension_name(int dim) {
   }
 }
 
-GmshMesh read_gmsh_mesh(const fs::path& path, int order) {
+GmshMesh read_gmsh_mesh(const fs::path& path, int order, const SizeField* sizes) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) {
     throw MeshError("mesh file " + path.string() + " does not exist or is not a regular file");
@@ -149,6 +149,10 @@ GmshMesh read_gmsh_mesh(const fs::path& path, int order) {
   }
   // The directory the file really lies in is the mesher's whole world: a symbolic link resolved
   // here, not inside the sandbox (where its target would not exist).
+  if (sizes != nullptr && extension != ".geo") {
+    throw MeshError("mesh file " + path.string() + " is not a geometry (.geo): only a geometry can be re-meshed with "
+                    "new element sizes");
+  }
   const fs::path real = fs::canonical(path, ec);
   if (ec) throw MeshError("mesh file " + path.string() + ": " + ec.message());
   const MeshLimits limits = mesh_limits();
@@ -164,6 +168,9 @@ GmshMesh read_gmsh_mesh(const fs::path& path, int order) {
                std::to_string(order)};
   // No environment: no locale to load (Gmsh reads numbers in the C locale), no HOME, no GMSH_*.
   spec.inherit_environment = false;
+  // The size field goes on standard input: the mesher reads it before it confines itself, so the
+  // sandbox gains no file.
+  if (sizes != nullptr) spec.input = mesher::encode_sizes(*sizes, limits.max_nodes);
   spec.limit = std::chrono::seconds(limits.seconds);
   spec.max_output = mesher::output_limit(limits.max_nodes);
   spec.max_error = max_error_bytes;

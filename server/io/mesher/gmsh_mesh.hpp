@@ -94,13 +94,25 @@ struct GmshMesh {
   std::vector<PhysicalGroup> groups;
 };
 
+/// A background mesh size for re-meshing a geometry (the adaptive loop, io/import/adapt_sizes.hpp):
+/// element sizes (lengths, the model's unit) at the nodes of a triangulation of the previous mesh,
+/// interpolated linearly inside each triangle. Gmsh takes it as a post-processing view ("ST" list
+/// data) used by a PostView field set as the background mesh; sizes from points, curvature and the
+/// boundary are then off, so the field alone decides.
+struct SizeField {
+  std::vector<double> x, y;   ///< node coordinates (Gmsh x = r, y = z)
+  std::vector<double> size;   ///< the element size wanted at each node (> 0, finite)
+  std::vector<std::array<int, 3>> triangles;  ///< node indices, any orientation
+};
+
 /// Opens `path` with Gmsh in the sandboxed mesher (a `.geo` is meshed in 2D with the options it
-/// sets itself) and returns the mesh. order 1 or 2 meshes a `.geo` with elements of that order
-/// whatever it sets (Mesh.ElementOrder; order 2 also Mesh.SecondOrderLinear = 0, so that mid-side
-/// nodes lie on the true curves; Mesh.SecondOrderIncomplete stays the file's: 1 for quad8, 0 for
-/// quad9); 0 leaves the file's own. Throws MeshTooLarge beyond the limits, MeshError for
-/// everything else that goes wrong (the message names the file and, for a limit, the limit).
-GmshMesh read_gmsh_mesh(const std::filesystem::path& path, int order = 0);
+/// sets itself, and with `sizes` as its background mesh size when given: only a `.geo`) and returns
+/// the mesh. order 1 or 2 meshes a `.geo` with elements of that order whatever it sets
+/// (Mesh.ElementOrder; order 2 also Mesh.SecondOrderLinear = 0, so that mid-side nodes lie on the
+/// true curves; Mesh.SecondOrderIncomplete stays the file's: 1 for quad8, 0 for quad9); 0 leaves the
+/// file's own. Throws MeshTooLarge beyond the limits, MeshError for everything else that goes wrong
+/// (the message names the file and, for a limit, the limit).
+GmshMesh read_gmsh_mesh(const std::filesystem::path& path, int order = 0, const SizeField* sizes = nullptr);
 
 /// "dimension 1 (curve)": the name of a dimension for messages.
 std::string dimension_name(int dim);

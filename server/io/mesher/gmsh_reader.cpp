@@ -330,6 +330,35 @@ GmshMesh read_open_model(const fs::path& path, std::size_t max_nodes, int order)
   return mesh;
 }
 
+/// The size field as the background mesh size: a view of "ST" list data (one scalar triangle per
+/// triangle: 3 x, 3 y, 3 z, 3 values) used by a PostView field. Any mesh the geometry made itself is
+/// cleared; sizes from points, curvature and the boundary are off, so the field alone decides
+/// (a transfinite curve or surface still keeps its own node count).
+void use_size_field(const SizeField& f) {
+  gmsh::model::mesh::clear();
+  std::vector<double> data;
+  data.reserve(f.triangles.size() * 12);
+  for (const auto& t : f.triangles) {
+    for (const int k : t) data.push_back(f.x[static_cast<std::size_t>(k)]);
+    for (const int k : t) data.push_back(f.y[static_cast<std::size_t>(k)]);
+    for (int i = 0; i < 3; ++i) data.push_back(0.0);
+    for (const int k : t) data.push_back(f.size[static_cast<std::size_t>(k)]);
+  }
+  const int view = gmsh::view::add("sizes");
+  gmsh::view::addListData(view, "ST", static_cast<int>(f.triangles.size()), data);
+  const int field = gmsh::model::mesh::field::add("PostView");
+  gmsh::model::mesh::field::setNumber(field, "ViewTag", view);
+  gmsh::model::mesh::field::setAsBackgroundMesh(field);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  // A point the view does not cover (on a curved boundary, a little outside the previous mesh's
+  // chords, beyond the search tolerance) takes the largest size asked for, not Gmsh's 1e22.
+  if (!f.size.empty()) {
+    gmsh::option::setNumber("Mesh.MeshSizeMax", *std::max_element(f.size.begin(), f.size.end()));
+  }
+}
+
 /// Gmsh 4.8 throws std::string (or std::exception) from its API; its last error says more.
 std::string gmsh_failure(const std::string& thrown) {
   std::string last;
@@ -343,7 +372,8 @@ std::string gmsh_failure(const std::string& thrown) {
 
 }  // namespace
 
-GmshMesh read_with_gmsh(const fs::path& file, const fs::path& path, std::size_t max_nodes, int order) {
+GmshMesh read_with_gmsh(const fs::path& file, const fs::path& path, std::size_t max_nodes, int order,
+                        const SizeField* sizes) {
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) {
     throw MeshError("mesh file " + path.string() + " does not exist or is not a regular file");
@@ -351,6 +381,7 @@ GmshMesh read_with_gmsh(const fs::path& file, const fs::path& path, std::size_t 
   try {
     const GmshSession session;
     gmsh::open(file.string());
+    if (sizes != nullptr) use_size_field(*sizes);
     return read_open_model(path, max_nodes, order);
   } catch (const MeshError&) {
     throw;

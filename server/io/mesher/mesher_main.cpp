@@ -2,7 +2,8 @@
 //
 // ORDER: 0 (a .geo's own element order), 1 or 2 (read_gmsh_mesh in io/mesher/gmsh_mesh.hpp).
 // Reads DIRECTORY/FILE with Gmsh inside the sandbox of io/mesher_sandbox.hpp (DIRECTORY becomes
-// "/", nothing outside it exists) and writes the mesh to standard output in the encoding of
+// "/", nothing outside it exists), with the size field on standard input as its background mesh
+// size when there is one (io/mesher_protocol.hpp; read, bounded, before the sandbox), and writes the mesh to standard output in the encoding of
 // io/mesher_protocol.hpp; errors go to standard error, named as SHOWN, with the exit codes of
 // mesher::Exit. Started by io/gmsh_mesh.cpp for every mesh read, never by hand.
 #include <unistd.h>
@@ -34,6 +35,18 @@ int report(int code, const std::string& message) {
   return code;
 }
 
+/// Standard input, or false when it passes `limit` bytes.
+bool read_input(std::string& bytes, std::size_t limit) {
+  char buffer[65536];
+  for (;;) {
+    const ssize_t n = ::read(STDIN_FILENO, buffer, sizeof buffer);
+    if (n == 0) return true;
+    if (n < 0) return false;
+    bytes.append(buffer, static_cast<std::size_t>(n));
+    if (bytes.size() > limit) return false;
+  }
+}
+
 bool write_all(const std::string& bytes) {
   std::size_t done = 0;
   while (done < bytes.size()) {
@@ -63,6 +76,18 @@ int main(int argc, char** argv) {
   if (file.empty() || file.find('/') != std::string::npos || file == "." || file == "..") {
     return report(mesher::usage, "saasgaps-mesher: FILE must be a plain file name, got \"" + file + "\"");
   }
+  std::string input;
+  if (!read_input(input, mesher::size_input_limit(max_nodes))) {
+    return report(mesher::mesh_error, "the size field for " + shown + " is larger than its bound of " +
+                                          std::to_string(mesher::size_input_limit(max_nodes)) + " bytes");
+  }
+  SizeField sizes;
+  try {
+    if (!input.empty()) sizes = mesher::decode_sizes(input, max_nodes);
+  } catch (const MeshError& e) {
+    return report(mesher::mesh_error, e.what());
+  }
+  std::string{}.swap(input);
   try {
     enter_sandbox(argv[1], limits);
   } catch (const SandboxError& e) {
@@ -70,7 +95,7 @@ int main(int argc, char** argv) {
                                           "); a mesh is read only inside that sandbox");
   }
   try {
-    const GmshMesh mesh = read_with_gmsh("/" + file, shown, max_nodes, order);
+    const GmshMesh mesh = read_with_gmsh("/" + file, shown, max_nodes, order, sizes.size.empty() ? nullptr : &sizes);
     return write_all(mesher::encode(mesh)) ? mesher::ok : report(mesher::mesh_error, "cannot write the mesh");
   } catch (const MeshTooLarge& e) {
     return report(mesher::too_many_nodes, e.what());

@@ -1,7 +1,9 @@
 #include "io/mesher/mesher_protocol.hpp"
 
 #include <cstdint>
+#include <cmath>
 #include <cstring>
+#include <utility>
 #include <type_traits>
 
 namespace saasgaps::io::mesher {
@@ -10,11 +12,14 @@ namespace {
 
 constexpr std::string_view magic = "SGMESH2\n";  // 2: faces of up to 9 nodes, edges with a mid-side node
 constexpr std::string_view trailer = "END\n";
+constexpr std::string_view size_magic = "SGSIZE1\n";
 
 // Bytes per record of the encoding, for the bounds below.
 constexpr std::size_t node_bytes = 8 + 8 + 8;
 constexpr std::size_t face_bytes = 8 + 4 + 4 + 9 * 4;
 constexpr std::size_t edge_bytes = 3 * 4;
+constexpr std::size_t size_node_bytes = 3 * 8;
+constexpr std::size_t triangle_bytes = 3 * 4;
 
 class Writer {
  public:
@@ -34,7 +39,8 @@ class Writer {
 /// Reads the encoding front to back; every read is checked against what remains.
 class Reader {
  public:
-  Reader(std::string_view bytes, const std::string& source) : rest_(bytes), source_(source) {}
+  /// `prefix` begins every message: what the bytes were meant to be.
+  Reader(std::string_view bytes, std::string prefix) : rest_(bytes), prefix_(std::move(prefix)) {}
 
   template <class T>
   T get() {
@@ -71,7 +77,7 @@ class Reader {
   }
   [[nodiscard]] bool done() const { return rest_.empty(); }
   [[noreturn]] void fail(const std::string& what) const {
-    throw MeshError("the mesher's output for " + source_ + " is not a valid mesh: " + what);
+    throw MeshError(prefix_ + what);
   }
 
  private:
@@ -79,7 +85,7 @@ class Reader {
     if (rest_.size() < n) fail(std::string("it ends before ") + what);
   }
   std::string_view rest_;
-  const std::string& source_;
+  std::string prefix_;
 };
 
 }  // namespace
@@ -136,7 +142,7 @@ std::string encode(const GmshMesh& mesh) {
 }
 
 GmshMesh decode(std::string_view bytes, std::size_t max_nodes, const std::string& source) {
-  Reader in(bytes, source);
+  Reader in(bytes, "the mesher's output for " + source + " is not a valid mesh: ");
   in.expect(magic, "header");
   GmshMesh mesh;
   const std::size_t nodes = in.count(node_bytes, "nodes");
@@ -191,6 +197,86 @@ GmshMesh decode(std::string_view bytes, std::size_t max_nodes, const std::string
   in.expect(trailer, "end marker");
   if (!in.done()) in.fail("bytes after the end marker");
   return mesh;
+}
+
+std::size_t size_input_limit(std::size_t max_nodes) {
+  const std::size_t nodes = size_field_node_factor * max_nodes;
+  return size_magic.size() + 16 + nodes * (size_node_bytes + 2 * triangle_bytes) + trailer.size();
+}
+
+namespace {
+
+/// The bounds decode_sizes() sets, said the same way whichever side finds them broken.
+void check_sizes(const SizeField& f, std::size_t max_nodes, Reader& in) {
+  const std::size_t n = f.size.size();
+  if (n > size_field_node_factor * max_nodes) {
+    in.fail(std::to_string(n) + " nodes, more than " + std::to_string(size_field_node_factor) + " x the limit of " +
+            std::to_string(max_nodes) + " nodes");
+  }
+  if (f.triangles.size() > 2 * size_field_node_factor * max_nodes) {
+    in.fail(std::to_string(f.triangles.size()) + " triangles, more than twice its node bound");
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(f.x[i]) || !std::isfinite(f.y[i]) || !std::isfinite(f.size[i]) || !(f.size[i] > 0.0)) {
+      in.fail("node " + std::to_string(i) + " has the size " + std::to_string(f.size[i]) + " at (" +
+              std::to_string(f.x[i]) + ", " + std::to_string(f.y[i]) + "); sizes are finite and > 0");
+    }
+  }
+}
+
+}  // namespace
+
+std::string encode_sizes(const SizeField& field, std::size_t max_nodes) {
+  Reader check({}, "the size field is not valid: ");
+  if (field.x.size() != field.size.size() || field.y.size() != field.size.size()) {
+    check.fail("its coordinates and sizes differ in number");
+  }
+  check_sizes(field, max_nodes, check);
+  Writer w;
+  w.bytes(size_magic);
+  w.count(field.size.size());
+  for (std::size_t i = 0; i < field.size.size(); ++i) {
+    w.put(field.x[i]);
+    w.put(field.y[i]);
+    w.put(field.size[i]);
+  }
+  w.count(field.triangles.size());
+  for (const auto& t : field.triangles) {
+    for (const int k : t) {
+      if (k < 0 || static_cast<std::size_t>(k) >= field.size.size()) check.fail("a triangle's node index " + std::to_string(k));
+      w.put(static_cast<std::int32_t>(k));
+    }
+  }
+  w.bytes(trailer);
+  return w.take();
+}
+
+SizeField decode_sizes(std::string_view bytes, std::size_t max_nodes) {
+  Reader in(bytes, "the size field on the mesher's input is not valid: ");
+  if (bytes.size() > size_input_limit(max_nodes)) in.fail(std::to_string(bytes.size()) + " bytes, beyond its bound");
+  in.expect(size_magic, "header");
+  SizeField f;
+  const std::size_t n = in.count(size_node_bytes, "nodes");
+  if (n > size_field_node_factor * max_nodes) {
+    in.fail(std::to_string(n) + " nodes, more than " + std::to_string(size_field_node_factor) + " x the limit of " +
+            std::to_string(max_nodes) + " nodes");
+  }
+  f.x.resize(n);
+  f.y.resize(n);
+  f.size.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    f.x[i] = in.get<double>();
+    f.y[i] = in.get<double>();
+    f.size[i] = in.get<double>();
+  }
+  f.triangles.resize(in.count(triangle_bytes, "triangles"));
+  for (auto& t : f.triangles) {
+    for (int& k : t) k = in.node(n, false);
+  }
+  check_sizes(f, max_nodes, in);
+  in.expect(trailer, "end marker");
+  if (!in.done()) in.fail("bytes after the end marker");
+  return f;
 }
 
 }  // namespace saasgaps::io::mesher

@@ -13,6 +13,13 @@
 ///   u64 p, then p x {i32 point, i32 node}                                    points
 ///   u64 g, then g x {i32 dim, i32 tag, u64 len, len bytes name, u64 k, k x i32 entity}  groups
 ///   "END\n"
+///
+/// The size field for re-meshing (SizeField), from the parent on the mesher's standard input
+/// (empty input: no size field), decoded by the mesher as bounded input too:
+///   "SGSIZE1\n"
+///   u64 n, then n x {f64 x, f64 y, f64 size}                                   nodes
+///   u64 t, then t x {3 x i32 node}                                             triangles
+///   "END\n"
 
 #include <cstddef>
 #include <string>
@@ -40,5 +47,19 @@ std::string encode(const GmshMesh& mesh);
 /// The mesh, or MeshError saying what is wrong with the bytes (truncated, a count beyond what
 /// remains or beyond `max_nodes`, a node index out of range); `source` names the file in messages.
 GmshMesh decode(std::string_view bytes, std::size_t max_nodes, const std::string& source);
+
+/// The size field's nodes may be at most this many times the node limit (a previous mesh within
+/// the limit, its quadratic nodes included), its triangles twice that.
+constexpr std::size_t size_field_node_factor = 4;
+
+/// Bytes a size field within `max_nodes` may take: what the mesher reads at most.
+std::size_t size_input_limit(std::size_t max_nodes);
+
+/// The size field's encoding; throws MeshError when it passes the bounds decode_sizes() sets (more
+/// nodes than size_field_node_factor * max_nodes, a size not finite and > 0, an index out of range).
+std::string encode_sizes(const SizeField& field, std::size_t max_nodes);
+
+/// The size field, or MeshError saying what is wrong with the bytes.
+SizeField decode_sizes(std::string_view bytes, std::size_t max_nodes);
 
 }  // namespace saasgaps::io::mesher

@@ -29,6 +29,10 @@ bool missing_schema_version(const std::vector<InputIssue>& issues) {
 
 }  // namespace
 
+bool names_assembly(const ModelError& error) {
+  return unknown_top_level_key(error.issues(), "mesh") && unknown_top_level_key(error.issues(), "regions");
+}
+
 void rethrow_naming_document(const ModelError& error) {
   const std::vector<InputIssue>& issues = error.issues();
   if (missing_schema_version(issues)) {

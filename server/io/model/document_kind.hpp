@@ -22,4 +22,8 @@ DocumentKind document_kind(const nlohmann::json& document);
 /// streaming reader keeps no tree, so the kind is read off the issues it found.
 [[noreturn]] void rethrow_naming_document(const ModelError& error);
 
+/// Whether the model reader's issues show an assembly document (docs/import.md): unknown top-level
+/// keys "mesh" and "regions", which only an assembly has. `saasgaps solve` then imports it.
+bool names_assembly(const ModelError& error);
+
 }  // namespace saasgaps::io

@@ -126,8 +126,11 @@ void write_contact_pair(JsonWriter& out, const ContactPairResult& pair, double f
 
 }  // namespace
 
-void write_result(JsonWriter& out, const Model& model, const Solution& s, const ItemPieces& pieces) {
-  out.begin_object().field("analysis", analysis_type_names.name(model.analysis));
+void write_result(JsonWriter& out, const Model& model, const Solution& s, const ItemPieces& pieces,
+                  const std::function<void(JsonWriter&)>& leading) {
+  out.begin_object();
+  if (leading) leading(out);
+  out.field("analysis", analysis_type_names.name(model.analysis));
   if (model.contact) {  // models with contact surfaces only: other results stay as they were
     out.key("contact").begin_array();
     for (std::size_t k = 0; k < s.contact.size(); ++k) {

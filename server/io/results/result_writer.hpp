@@ -15,6 +15,7 @@
 /// ("_" sorts before "s"). Nothing but the writer's
 /// 64 KiB buffer is held: the document never exists as a tree.
 
+#include <functional>
 #include <string>
 
 #include "io/json/json_writer.hpp"
@@ -27,7 +28,9 @@ namespace saasgaps::io {
 /// The result of a finished run. A stopped run reports status not_converged (it can be resumed).
 /// The nodes and elements are formatted in pieces on several threads (io/parallel_items.hpp; the
 /// same text on one).
-void write_result(JsonWriter& out, const Model& model, const Solution& solution, const ItemPieces& pieces = {});
+/// `leading` writes members that sort before "analysis" (the adaptive loop's "adaptation").
+void write_result(JsonWriter& out, const Model& model, const Solution& solution, const ItemPieces& pieces = {},
+                  const std::function<void(JsonWriter&)>& leading = {});
 
 /// The result document of a run that failed (singular model, bad restart state, ...).
 void write_failed_result(JsonWriter& out, const std::string& message);

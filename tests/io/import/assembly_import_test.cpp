@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 
+#include "io/import/adapt_settings.hpp"
 #include "io/import/assembly_reader.hpp"
 #include "io/import/gap_generator.hpp"
 #include "io/model/model_reader.hpp"
@@ -889,6 +890,70 @@ TEST(GapGenerator, GeneratedAnglesRunAcrossTheGapOrTheNodesAreNamed) {
       << sheared.problems.front();
   EXPECT_NE(sheared.problems.front().find("more than 30 degrees off perpendicular to its faces"), std::string::npos)
       << sheared.problems.front();
+}
+
+// ---- adapt: the settings of the adaptive loop, each bad value at its pointer
+
+TEST(AssemblyImport, AdaptSettingsAreReadFromAGeoAssembly) {
+  json a = load(assemblies_dir / "ring-fit.assembly.json");
+  a["adapt"] = {{"target_error", 0.05}};
+  EXPECT_NO_THROW((void)io::import_assembly(a, assemblies_dir));
+  const auto none = [](const std::string& p, std::string d) { ADD_FAILURE() << p << ": " << d; };
+  const auto s = io::read_adapt_settings(a, none);
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->target_error, 0.05);
+  EXPECT_EQ(s->max_cycles, 6);
+  EXPECT_EQ(s->max_nodes, 200000U);
+  a["adapt"] = {{"target_error", 0.01}, {"max_cycles", 3}, {"max_nodes", 5000}};
+  const auto t = io::read_adapt_settings(a, none);
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->max_cycles, 3);
+  EXPECT_EQ(t->max_nodes, 5000U);
+  EXPECT_FALSE(io::read_adapt_settings(load(assemblies_dir / "ring-fit.assembly.json"), none));
+}
+
+TEST(AssemblyImport, BadAdaptSettingsAreReportedAtTheirPointers) {
+  const json ring = load(assemblies_dir / "ring-fit.assembly.json");
+  const auto issue = [&](const json& adapt) {
+    json a = ring;
+    a["adapt"] = adapt;
+    return single_issue(a, assemblies_dir);
+  };
+  struct Case {
+    json adapt;
+    const char* pointer;
+    const char* words;
+  };
+  const std::vector<Case> cases = {
+      {{{"target_error", 0.0}}, "/adapt/target_error", "target_error = 0.0 is out of range: need 0 < target_error < 1"},
+      {{{"target_error", -0.1}}, "/adapt/target_error", "out of range"},
+      {{{"target_error", 1.0}}, "/adapt/target_error", "target_error = 1.0 is out of range"},
+      {{{"target_error", "1%"}}, "/adapt/target_error", "target_error must be a number"},
+      {{{"max_cycles", 3}}, "/adapt", "\"target_error\""},
+      {{{"target_error", 0.02}, {"max_cycles", 0}}, "/adapt/max_cycles", "max_cycles = 0 is out of range: need 1 <= max_cycles <= 50"},
+      {{{"target_error", 0.02}, {"max_cycles", 1000000}}, "/adapt/max_cycles", "max_cycles = 1000000 is out of range"},
+      {{{"target_error", 0.02}, {"max_cycles", 2.5}}, "/adapt/max_cycles", "max_cycles must be an integer, got the number 2.5"},
+      {{{"target_error", 0.02}, {"max_nodes", 10}}, "/adapt/max_nodes", "max_nodes = 10 is out of range: need 100 <= max_nodes"},
+      // The ring's first mesh has 450 nodes: a limit below it leaves nothing to refine.
+      {{{"target_error", 0.02}, {"max_nodes", 300}}, "/adapt/max_nodes", "fewer than the first mesh's 450 nodes"},
+      {{{"target_error", 0.02}, {"cycles", 3}}, "/adapt/cycles", "unknown key \"cycles\""},
+      {json(0.02), "/adapt", "expected an object"},
+  };
+  for (const Case& c : cases) {
+    const InputIssue i = issue(c.adapt);
+    EXPECT_EQ(i.pointer, c.pointer) << c.adapt.dump();
+    EXPECT_NE(i.detail.find(c.words), std::string::npos) << c.adapt.dump() << ": " << i.detail;
+  }
+}
+
+TEST(AssemblyImport, AdaptWithAMshMeshHasNothingToRemesh) {
+  json a = load(data_dir / "two_blocks.assembly.json");
+  a["adapt"] = {{"target_error", 0.02}};
+  const InputIssue i = single_issue(a, data_dir);
+  EXPECT_EQ(i.pointer, "/adapt");
+  EXPECT_NE(i.detail.find("\"two_blocks.msh\" is not a Gmsh geometry (.geo): a .msh mesh has nothing to re-mesh"),
+            std::string::npos)
+      << i.detail;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 #include "io/mesher/mesher_protocol.hpp"
 
@@ -95,6 +96,73 @@ TEST(MesherProtocol, DocumentedLimits) {
   EXPECT_EQ(mesher::output_limit(1000) - mesher::output_limit(0), 280000u);
   EXPECT_EQ(mesher::output_limit(0), 16u + (1u << 20));
   EXPECT_GE(concurrent_meshers(), 2);
+}
+
+// ---- the size field the parent sends the mesher for a re-mesh (read by the mesher as hostile input)
+
+SizeField square_sizes() {
+  SizeField f;
+  f.x = {0, 1, 1, 0};
+  f.y = {0, 0, 1, 1};
+  f.size = {0.1, 0.2, 0.3, 0.4};
+  f.triangles = {{0, 1, 2}, {0, 2, 3}};
+  return f;
+}
+
+TEST(MesherProtocol, SizeFieldRoundTrip) {
+  const SizeField f = square_sizes();
+  const SizeField g = mesher::decode_sizes(mesher::encode_sizes(f, 1000), 1000);
+  EXPECT_EQ(g.x, f.x);
+  EXPECT_EQ(g.y, f.y);
+  EXPECT_EQ(g.size, f.size);
+  EXPECT_EQ(g.triangles, f.triangles);
+  EXPECT_LE(mesher::encode_sizes(f, 1000).size(), mesher::size_input_limit(1000));
+}
+
+TEST(MesherProtocol, ForgedSizeFieldsAreRefused) {
+  const std::string good = mesher::encode_sizes(square_sizes(), 1000);
+  const auto refused = [](const std::string& bytes, std::size_t max_nodes, const char* words) {
+    try {
+      (void)mesher::decode_sizes(bytes, max_nodes);
+      ADD_FAILURE() << "accepted: " << words;
+    } catch (const MeshError& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("the size field on the mesher's input is not valid"), std::string::npos);
+    }
+  };
+  refused(good.substr(0, good.size() - 1), 1000, "end marker");
+  refused(good.substr(0, 20), 1000, "beyond the data");
+  refused("SGMESH1\n" + good.substr(8), 1000, "no header");
+  refused(good + "x", 1000, "bytes after the end marker");
+  // The first triangle's first index (after the header, the count, 4 nodes of 24 bytes and the
+  // triangle count) pointing past the nodes.
+  const std::size_t first_index = 8 + 8 + 4 * 24 + 8;
+  refused(with_int(good, first_index, 4), 1000, "node index 4 outside the 4 nodes");
+  refused(with_int(good, first_index, -1), 1000, "node index -1");
+  // A size of 0 (the first node's size, after x and y).
+  std::string zero = good;
+  const double nothing = 0.0;
+  std::memcpy(zero.data() + 8 + 8 + 16, &nothing, sizeof nothing);
+  refused(zero, 1000, "sizes are finite and > 0");
+  // More nodes than the bound of 4 x the node limit.
+  refused(good, 0, "bytes, beyond its bound");
+  // A count beyond the data cannot make the reader allocate.
+  std::string huge = good;
+  const std::uint64_t many = std::uint64_t{1} << 60;
+  std::memcpy(huge.data() + 8, &many, sizeof many);
+  refused(huge, 1000, "beyond the data");
+}
+
+TEST(MesherProtocol, ASizeFieldOutOfBoundsIsNotSent) {
+  SizeField f = square_sizes();
+  f.size[2] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW((void)mesher::encode_sizes(f, 1000), MeshError);
+  f = square_sizes();
+  f.triangles.push_back({0, 1, 9});
+  EXPECT_THROW((void)mesher::encode_sizes(f, 1000), MeshError);
+  f = square_sizes();
+  f.size.pop_back();
+  EXPECT_THROW((void)mesher::encode_sizes(f, 1000), MeshError);
 }
 
 }  // namespace
