@@ -31,9 +31,10 @@ class ServiceFixture : public ::testing::Test {
     return std::string(std::istreambuf_iterator<char>(in), {});
   }
 
-  /// POST a model; returns the job id (asserting 202).
+  /// POST a model as a new job (?cache=off: these tests submit the same models again and mean new
+  /// jobs; the result cache has tests of its own); returns the job id (asserting 202).
   static std::int64_t submit(httplib::Client& client, const std::string& body, const httplib::Headers& headers = {}) {
-    const httplib::Result r = client.Post("/v1/jobs", headers, body, "application/json");
+    const httplib::Result r = client.Post("/v1/jobs?cache=off", headers, body, "application/json");
     EXPECT_TRUE(r) << httplib::to_string(r.error());
     if (!r) return 0;
     EXPECT_EQ(r->status, 202) << r->body;
