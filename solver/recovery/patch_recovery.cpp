@@ -85,6 +85,10 @@ struct Fit {
   }
 };
 
+/// The corners of an element: its family's, or 3 for a report element given 3 nodes (a tri3 that
+/// older models and tests type as saas).
+int corner_count(const Element& el) { return std::min(family(el.type).corner_count, el.node_count); }
+
 /// Node -> solid elements incidence: element index and the node's local index in it.
 struct Incidence {
   std::vector<std::uint32_t> first;
@@ -196,12 +200,12 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
         std::optional<Polynomial> poly;
         for (std::uint32_t k = in.first[n]; k < in.first[n + 1]; ++k) {
           const Element& el = model.elements[in.element[k]];
-          const ElementFamily& fam = family(el.type);
           const int a = in.local[k];
-          if (el.material != m || a >= fam.corner_count) continue;
+          const int corners = corner_count(el);
+          if (el.material != m || a >= corners) continue;
           poly = poly ? common(*poly, polynomial_of(el.type)) : polynomial_of(el.type);
-          neighbours.push_back(el.nodes[(a + 1) % fam.corner_count]);
-          neighbours.push_back(el.nodes[(a + fam.corner_count - 1) % fam.corner_count]);
+          neighbours.push_back(el.nodes[(a + 1) % corners]);
+          neighbours.push_back(el.nodes[(a + corners - 1) % corners]);
           const ElementSamples& es = samples[in.element[k]];
           for (int p = 0; p < es.count; ++p) points.push_back(&es.point[static_cast<std::size_t>(p)]);
         }
@@ -239,7 +243,7 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
         for (std::uint32_t k = in.first[n]; k < in.first[n + 1]; ++k) {
           const Element& el = model.elements[in.element[k]];
           if (el.material != m) continue;
-          const int corners = family(el.type).corner_count;
+          const int corners = corner_count(el);
           for (int c = 0; c < corners; ++c) {
             const auto node = static_cast<std::size_t>(el.nodes[c]);
             if (node == n) continue;
