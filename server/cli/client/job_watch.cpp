@@ -12,7 +12,7 @@
 #include "cli/common/usage.hpp"
 #include "io/results/history_json.hpp"
 #include "io/results/thermal_row_json.hpp"
-#include "service/http/job_progress.hpp"
+#include "io/results/load_progress.hpp"
 
 namespace saasgaps::cli {
 
@@ -28,10 +28,10 @@ struct JobView {
   json row_json;  ///< the last iteration event's row, for the progress line
 };
 
-/// Where the job is on its load path (service/http/job_progress.hpp), from the job as the watch
+/// Where the job is on its load path (io/results/load_progress.hpp), from the job as the watch
 /// began: the load path, the iteration limit and when it started.
 struct PathView {
-  service::LoadPlan plan;
+  io::LoadPlan plan;
   int max_iterations = 0;
   std::chrono::steady_clock::time_point since = std::chrono::steady_clock::now();
   double elapsed_before = 0.0;  ///< seconds the job had run when the watch began
@@ -42,7 +42,7 @@ struct PathView {
 std::string live_line(std::int64_t job, const JobView& view, const PathView& path) {
   const double elapsed =
       path.elapsed_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - path.since).count();
-  const json progress = service::job_progress(path.plan, view.row_json, view.state == "running",
+  const json progress = io::job_progress(path.plan, view.row_json, view.state == "running",
                                               view.state == "converged", path.max_iterations, elapsed);
   std::string line = "job " + std::to_string(job) + "  " + view.state + "  " + progress.value("text", std::string());
   if (view.row) line += live_summary(*view.row);
@@ -129,10 +129,10 @@ int watch_job(ServiceClient& client, std::int64_t job, bool wide) {
   {
     const json first = json::parse(client.get(path));
     const json progress = first.value("progress", json::object());
-    path_view.plan = service::load_plan_of_progress(progress);
+    path_view.plan = io::load_plan_of_progress(progress);
     path_view.max_iterations = first.value("max_iterations", 0);
     const json started = first.value("started_at", json());
-    if (started.is_string()) path_view.elapsed_before = service::seconds_since(started.get<std::string>(), std::chrono::system_clock::now());
+    if (started.is_string()) path_view.elapsed_before = io::seconds_since(started.get<std::string>(), std::chrono::system_clock::now());
   }
   Watcher watcher(job, wide, std::move(path_view));
   constexpr int reconnects = 5;

@@ -158,15 +158,15 @@ void HttpApi::list(const httplib::Request& req, httplib::Response& res) {
 void HttpApi::show(const httplib::Request& req, httplib::Response& res) {
   const JobRecord job = store_.get(job_in_path(req));
   json body = job_json(job);
-  LoadPlan plan;
+  io::LoadPlan plan;
   {
     std::lock_guard lock(plans_mutex_);
     const auto known = plans_.find(job.id);
-    plan = known != plans_.end() ? known->second : plans_.emplace(job.id, load_plan(store_.model(job.id))).first->second;
+    plan = known != plans_.end() ? known->second : plans_.emplace(job.id, io::load_plan(store_.model(job.id))).first->second;
   }
   const json row = body["last_row"];
-  const double elapsed = job.started_at ? seconds_since(*job.started_at, std::chrono::system_clock::now()) : 0.0;
-  body["progress"] = job_progress(plan, row, job.state == JobState::running, job.state == JobState::converged,
+  const double elapsed = job.started_at ? io::seconds_since(*job.started_at, std::chrono::system_clock::now()) : 0.0;
+  body["progress"] = io::job_progress(plan, row, job.state == JobState::running, job.state == JobState::converged,
                                   job.max_iterations, elapsed);
   send_json(res, 200, body);
 }

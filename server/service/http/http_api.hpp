@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "service/http/event_stream.hpp"
-#include "service/http/job_progress.hpp"
+#include "io/results/load_progress.hpp"
 #include "service/http/request_guard.hpp"
 #include "service/http/result_routes.hpp"
 #include "service/studies/study_routes.hpp"
@@ -80,9 +80,9 @@ class HttpApi {
   EventStreams streams_;
   ResultRoutes results_;
   StudyRoutes studies_;
-  /// Each job's load path, read once from its model for the progress line (job_progress.hpp).
+  /// Each job's load path, read once from its model for the progress line (io/results/load_progress.hpp).
   std::mutex plans_mutex_;
-  std::map<std::int64_t, LoadPlan> plans_;
+  std::map<std::int64_t, io::LoadPlan> plans_;
 };
 
 }  // namespace saasgaps::service

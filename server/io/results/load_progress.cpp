@@ -1,4 +1,4 @@
-#include "service/http/job_progress.hpp"
+#include "io/results/load_progress.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include "io/json/json_subset.hpp"
 
-namespace saasgaps::service {
+namespace saasgaps::io {
 
 using nlohmann::json;
 
@@ -26,7 +26,7 @@ LoadPlan load_plan(std::string_view model_text) {
   LoadPlan plan;
   try {
     // Only the steps' names and increments: one pass over the text, no tree of the mesh.
-    const json model = io::parse_json_subset(model_text, [](int depth, std::string_view section, std::string_view key) {
+    const json model = parse_json_subset(model_text, [](int depth, std::string_view section, std::string_view key) {
       if (depth == 1) return key == "steps";
       // The steps' own members (their loads and constraints have no such keys).
       return section == "steps" && (key == "name" || key == "increments");
@@ -116,4 +116,4 @@ double seconds_since(const std::string& utc, std::chrono::system_clock::time_poi
   return std::max(0.0, std::chrono::duration<double>(now - then).count());
 }
 
-}  // namespace saasgaps::service
+}  // namespace saasgaps::io

@@ -1,12 +1,12 @@
-// The progress line of a job (service/http/job_progress.hpp): the load path read from a model's
+// The progress line of a job (io/results/load_progress.hpp): the load path read from a model's
 // text, the fraction of it done, the time left, and the line watch and the dashboard show.
 #include <gtest/gtest.h>
 
 #include <chrono>
 
-#include "service/http/job_progress.hpp"
+#include "io/results/load_progress.hpp"
 
-namespace saasgaps::service {
+namespace saasgaps::io {
 namespace {
 
 using nlohmann::json;
@@ -56,4 +56,4 @@ TEST(JobProgress, SecondsSinceReadsTheServicesTimes) {
 }
 
 }  // namespace
-}  // namespace saasgaps::service
+}  // namespace saasgaps::io

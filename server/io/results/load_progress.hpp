@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace saasgaps::service {
+namespace saasgaps::io {
 
 /// A model's load path: each step's name and increments, in order; empty for a model without steps.
 struct LoadPlan {
@@ -36,8 +36,8 @@ LoadPlan load_plan_of_progress(const nlohmann::json& progress);
 nlohmann::json job_progress(const LoadPlan& plan, const nlohmann::json& row, bool running, bool converged,
                             int max_iterations, double elapsed_seconds);
 
-/// Seconds from an ISO 8601 UTC time as the service writes it (utc_time.hpp) to `now`; 0 when the
+/// Seconds from an ISO 8601 UTC time as the service writes it (service/ops/utc_time.hpp) to `now`; 0 when the
 /// text is not such a time.
 double seconds_since(const std::string& utc, std::chrono::system_clock::time_point now);
 
-}  // namespace saasgaps::service
+}  // namespace saasgaps::io
