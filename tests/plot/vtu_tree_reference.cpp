@@ -6,6 +6,7 @@
 #include "io/results/vtu_writer.hpp"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 #include <unordered_map>
 #include <vector>
@@ -176,8 +177,26 @@ std::string vtu_document(const json& result, VtuFormat format) {
     }
     m.piece.point_data.push_back({"reaction" + vtu_unit_suffix(result, "force"), 3, std::move(force)});
   }
+  // Plane models name their components in the plane's axes (x, y = r, z; z out of the plane).
+  const bool plane = result.value("analysis", std::string()).starts_with("plane");
+  const auto named = [plane](const std::string& key) -> std::string {
+    static const std::map<std::string, std::string> in_plane{
+        {"sigma_r", "sigma_x"}, {"sigma_z", "sigma_y"}, {"tau_rz", "tau_xy"}, {"sigma_theta", "sigma_z"},
+        {"eps_r", "eps_x"},     {"eps_z", "eps_y"},     {"gamma_rz", "gamma_xy"}, {"eps_theta", "eps_z"},
+        {"q_r", "q_x"},         {"q_z", "q_y"}};
+    const auto found = in_plane.find(key);
+    return plane && found != in_plane.end() ? found->second : key;
+  };
   // Contact surfaces: their points on side A's nodes.
   add_contact_arrays(result, nodes, m.piece.point_data);
+  // The recovered nodal stresses, 0 at a node of no solid element.
+  if (std::any_of(nodes.begin(), nodes.end(), [](const json& n) { return n.contains("sigma_r"); })) {
+    for (const char* key : {"sigma_r", "sigma_z", "tau_rz", "sigma_theta", "effective"}) {
+      std::vector<double> v;
+      for (const json& n : nodes) v.push_back(n.value(key, 0.0));
+      m.piece.point_data.push_back({"recovered_" + named(key) + stress, 1, std::move(v)});
+    }
+  }
 
   // ---- Cell data: element-only values (0 on gaps) and gap-only values (0 on solids), by their
   // document keys.
@@ -195,18 +214,23 @@ std::string vtu_document(const json& result, VtuFormat format) {
   cells = id_arrays(m);
   ints("material", [](const Cell& c) { return c.gap ? 0 : c.data->value("material", 0); });
   for (const char* key : {"sigma_r", "sigma_z", "tau_rz", "sigma_theta", "sigma_1", "sigma_2"}) {
-    reals(key + stress, key, false);
+    reals(named(key) + stress, key, false);
   }
   reals("principal_angle", "angle", false);
   m.piece.active_cell_scalars = "effective" + stress;
   reals(m.piece.active_cell_scalars, "effective", false);
-  for (const char* key : {"eps_r", "eps_z", "gamma_rz", "eps_theta"}) reals(key, key, false);
+  for (const char* key : {"eps_r", "eps_z", "gamma_rz", "eps_theta"}) reals(named(key), key, false);
   // Thermal runs: the element heat flux (the result has it on every solid or none).
   if (std::any_of(m.cells.begin(), m.cells.end(), [](const Cell& c) { return !c.gap && c.data->contains("q_r"); })) {
-    for (const char* key : {"q_r", "q_z"}) reals(key, key, false);
+    for (const char* key : {"q_r", "q_z"}) reals(named(key), key, false);
+  }
+  if (std::any_of(m.cells.begin(), m.cells.end(), [](const Cell& c) { return !c.gap && c.data->contains("error"); })) {
+    reals("error", "error", false);
   }
   ints("yield", [](const Cell& c) { return !c.gap && c.data->at("yield").get<bool>() ? 1 : 0; });
   ints("plastic_converged", [](const Cell& c) { return c.gap || c.data->at("plastic_converged").get<bool>() ? 1 : 0; });
+  // No gap elements: no gap arrays.
+  if (std::none_of(m.cells.begin(), m.cells.end(), [](const Cell& c) { return c.gap; })) return encode_vtu(m.piece, format);
   reals("gap_closure", "closure", true);
   reals("gap_eps_m", "eps_m", true);
   reals("gap_sigma_m" + stress, "sigma_m", true);

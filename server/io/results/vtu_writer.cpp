@@ -221,11 +221,14 @@ std::string vtu_document(const ResultArrays& result, VtuFormat format) {
   };
   add_contact_point_data(document, nodes, stress, length, m.piece.point_data);
   // The recovered nodal stresses (docs/recovery.md), named "recovered_" and the component (plane or
-  // cylindrical as the cells' stresses): NaN at a node of no solid.
+  // cylindrical as the cells' stresses).
   if (std::any_of(nodes.stress[0].begin(), nodes.stress[0].end(), [](double v) { return !std::isnan(v); })) {
     const std::array<const char*, 5> keys{"sigma_r", "sigma_z", "tau_rz", "sigma_theta", "effective"};
     for (std::size_t k = 0; k < keys.size(); ++k) {
-      m.piece.point_data.push_back({"recovered_" + named(keys[k]) + stress, 1, nodes.stress[k]});
+      // 0 at a node of no solid element, as a cell's missing value (VTK's ASCII reader reads no "nan").
+      std::vector<double> v = nodes.stress[k];
+      for (double& x : v) x = std::isnan(x) ? 0.0 : x;
+      m.piece.point_data.push_back({"recovered_" + named(keys[k]) + stress, 1, std::move(v)});
     }
   }
 
