@@ -150,6 +150,56 @@ Fit fit_patch(const Vec2& centre, Polynomial most, std::span<const SamplingPoint
   }
 }
 
+/// The sampling points of one patch: those of corner node n's elements in material m, and their
+/// mirror images when n is on a symmetry line. Kept in the caller's buffers (reused per patch).
+class PatchPoints {
+ public:
+  PatchPoints(const Model& model, const Incidence& in, std::span<const ElementSamples> samples,
+              const SymmetryLines* symmetry)
+      : model_(model), in_(in), samples_(samples), symmetry_(symmetry) {}
+
+  /// Gathers corner n's patch in material m; nullopt when n is a corner of none of them.
+  std::optional<Polynomial> gather(std::size_t n, int m) {
+    points_.clear();
+    mirrored_.clear();
+    std::optional<Polynomial> poly;
+    for (std::uint32_t k = in_.first[n]; k < in_.first[n + 1]; ++k) {
+      const Element& el = model_.elements[in_.element[k]];
+      if (el.material != m || in_.local[k] >= corner_count(el)) continue;
+      poly = poly ? common(*poly, polynomial_of(el.type)) : polynomial_of(el.type);
+      const ElementSamples& es = samples_[in_.element[k]];
+      for (int p = 0; p < es.count; ++p) points_.push_back(&es.point[static_cast<std::size_t>(p)]);
+    }
+    if (mirrored(n)) {
+      // Reserved first: points_ keeps pointers into mirrored_.
+      mirrored_.reserve(points_.size());
+      for (const SamplingPoint* p : points_) {
+        mirrored_.push_back({symmetry_->mirror_point(model_, n, p->x), symmetry_->mirror_value(n, p->value)});
+      }
+      for (const SamplingPoint& p : mirrored_) points_.push_back(&p);
+    }
+    return poly;
+  }
+
+  [[nodiscard]] bool mirrored(std::size_t n) const { return symmetry_ != nullptr && symmetry_->on_line(n); }
+  [[nodiscard]] std::span<const SamplingPoint* const> points() const { return points_; }
+
+ private:
+  const Model& model_;
+  const Incidence& in_;
+  std::span<const ElementSamples> samples_;
+  const SymmetryLines* symmetry_;
+  std::vector<const SamplingPoint*> points_;
+  std::vector<SamplingPoint> mirrored_;
+};
+
+/// The polynomial a boundary node's value is extrapolated with from a patch fitted with `poly` over
+/// `points` points (see the header): the complete quadratic for a linear patch with enough points.
+Polynomial boundary_polynomial(Polynomial poly, std::size_t points) {
+  const auto quadratic_terms = static_cast<std::size_t>(monomials_of(Polynomial::quadratic).count);
+  return poly == Polynomial::linear && points >= 2 * quadratic_terms ? Polynomial::quadratic : poly;
+}
+
 }  // namespace
 
 std::array<Vec4, max_element_nodes> element_nodal_values(const Model& model, const RecoveredField& field, std::size_t e) {
@@ -161,8 +211,10 @@ std::array<Vec4, max_element_nodes> element_nodal_values(const Model& model, con
   return out;
 }
 
-RecoveredField recover_field(const Model& model, std::span<const ElementSamples> samples) {
+RecoveredField recover_field(const Model& model, std::span<const ElementSamples> samples, const SymmetryLines* symmetry) {
   assert(samples.size() == model.elements.size());
+  assert(symmetry == nullptr || symmetry->empty() || symmetry->kind.size() == model.nodes.size());
+  if (symmetry != nullptr && symmetry->empty()) symmetry = nullptr;
   const std::size_t node_count = model.nodes.size();
   const Incidence in = incidence(model);
 
@@ -189,38 +241,37 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
   std::vector<Fit> fits(side_count);
   std::vector<std::uint8_t> interior(side_count, 0);
   for_each_range(node_count, [&](std::size_t begin, std::size_t end, unsigned) {
-    std::vector<const SamplingPoint*> points;
+    PatchPoints patch(model, in, samples, symmetry);
     std::vector<int> neighbours;
     for (std::size_t n = begin; n < end; ++n) {
       const Vec2 x(model.nodes[n].r, model.nodes[n].z);
       for (std::uint32_t s = f.first[n]; s < f.first[n + 1]; ++s) {
         const int m = f.material[s];
-        points.clear();
+        const std::optional<Polynomial> poly = patch.gather(n, m);
+        if (!poly) continue;  // only a mid-side or centre node in this material
         neighbours.clear();
-        std::optional<Polynomial> poly;
         for (std::uint32_t k = in.first[n]; k < in.first[n + 1]; ++k) {
           const Element& el = model.elements[in.element[k]];
           const int a = in.local[k];
           const int corners = corner_count(el);
           if (el.material != m || a >= corners) continue;
-          poly = poly ? common(*poly, polynomial_of(el.type)) : polynomial_of(el.type);
           neighbours.push_back(el.nodes[(a + 1) % corners]);
           neighbours.push_back(el.nodes[(a + corners - 1) % corners]);
-          const ElementSamples& es = samples[in.element[k]];
-          for (int p = 0; p < es.count; ++p) points.push_back(&es.point[static_cast<std::size_t>(p)]);
         }
-        if (neighbours.empty()) continue;  // only a mid-side or centre node in this material
-        // Interior: every edge at n (to a neighbouring corner) is shared by exactly two elements.
+        // Interior: every edge at n (to a neighbouring corner) is shared by exactly two elements,
+        // or lies along n's symmetry line (its mirror image is the other).
         std::sort(neighbours.begin(), neighbours.end());
         bool closed = true;
         for (std::size_t i = 0; i < neighbours.size() && closed;) {
           std::size_t j = i;
           while (j < neighbours.size() && neighbours[j] == neighbours[i]) ++j;
-          closed = j - i == 2;
+          const bool along_line =
+              patch.mirrored(n) && symmetry->same_line(model, n, static_cast<std::size_t>(neighbours[i]));
+          closed = j - i == 2 || (j - i == 1 && along_line);
           i = j;
         }
         interior[s] = closed ? 1 : 0;
-        fits[s] = fit_patch(x, *poly, points);
+        fits[s] = fit_patch(x, *poly, patch.points());
       }
     }
   });
@@ -228,9 +279,15 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
   // Pass 2, per side: the value from the patches that reach it (see the header), pulled so that
   // each side is written by one thread.
   for_each_range(node_count, [&](std::size_t begin, std::size_t end, unsigned) {
-    std::vector<std::uint32_t> reached;
+    PatchPoints patch(model, in, samples, symmetry);
+    struct Reached {
+      std::uint32_t side;
+      std::size_t node;
+    };
+    std::vector<Reached> reached;
     for (std::size_t n = begin; n < end; ++n) {
       const Vec2 x(model.nodes[n].r, model.nodes[n].z);
+      const bool on_line = symmetry != nullptr && symmetry->on_line(n);
       for (std::uint32_t s = f.first[n]; s < f.first[n + 1]; ++s) {
         if (interior[s] != 0) {
           f.value[s] = fits[s].at(x);
@@ -239,7 +296,7 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
         const int m = f.material[s];
         // The corner sides of material m whose patches hold node n: the corners of n's elements in m.
         reached.clear();
-        if (fits[s].made) reached.push_back(s);
+        if (fits[s].made) reached.push_back({s, n});
         for (std::uint32_t k = in.first[n]; k < in.first[n + 1]; ++k) {
           const Element& el = model.elements[in.element[k]];
           if (el.material != m) continue;
@@ -247,27 +304,43 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
           for (int c = 0; c < corners; ++c) {
             const auto node = static_cast<std::size_t>(el.nodes[c]);
             if (node == n) continue;
-            const int cs = f.side(node, m);
-            if (std::find(reached.begin(), reached.end(), static_cast<std::uint32_t>(cs)) == reached.end()) {
-              reached.push_back(static_cast<std::uint32_t>(cs));
+            const auto cs = static_cast<std::uint32_t>(f.side(node, m));
+            if (std::none_of(reached.begin(), reached.end(), [&](const Reached& r) { return r.side == cs; })) {
+              reached.push_back({cs, node});
             }
           }
         }
+        // A patch's value at n: its own fit, or refitted with the boundary polynomial; a patch off
+        // n's symmetry line also with its mirror image (weight 2: the mirrored mesh's patch too).
+        const auto value_from = [&](const Reached& r, Vec4& sum, double& weight) {
+          const Fit* fit = &fits[r.side];
+          Fit refit;
+          if (fit->polynomial == Polynomial::linear) {
+            patch.gather(r.node, m);
+            const Polynomial higher = boundary_polynomial(Polynomial::linear, patch.points().size());
+            if (higher != Polynomial::linear) {
+              refit = fit_patch(fit->centre, higher, patch.points());
+              fit = &refit;
+            }
+          }
+          const Vec4 v = fit->at(x);
+          if (on_line && !symmetry->same_line(model, n, r.node)) {
+            sum += v + symmetry->mirror_value(n, v);
+            weight += 2.0;
+          } else {
+            sum += v;
+            weight += 1.0;
+          }
+        };
         Vec4 sum = Vec4::Zero();
-        int count = 0;
-        for (const std::uint32_t c : reached) {
-          if (interior[c] != 0) {
-            sum += fits[c].at(x);
-            ++count;
-          }
+        double weight = 0.0;
+        for (const Reached& r : reached) {
+          if (interior[r.side] != 0) value_from(r, sum, weight);
         }
-        if (count == 0) {
-          for (const std::uint32_t c : reached) {
-            sum += fits[c].at(x);
-            ++count;
-          }
+        if (weight == 0.0) {
+          for (const Reached& r : reached) value_from(r, sum, weight);
         }
-        f.value[s] = sum / std::max(count, 1);
+        f.value[s] = sum / std::max(weight, 1.0);
       }
     }
   });

@@ -41,7 +41,8 @@ StressRecovery recover_stresses(const Model& model, std::span<const double> disp
     }
   });
   StressRecovery out;
-  out.stress = recover_field(model, samples);
+  const SymmetryLines symmetry = stress_symmetry_lines(model);
+  out.stress = recover_field(model, samples, &symmetry);
   std::vector<ElementError> errors(count);
   for_each_range(count, [&](std::size_t begin, std::size_t end, unsigned) {
     std::array<Constitutive, max_material_points> scratch;

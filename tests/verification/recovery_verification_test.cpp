@@ -148,12 +148,20 @@ TEST(RecoveryLe1, SaasSixteenBySixteenRecoversSigmaYyAtD) {
   const double centre = c.solution.elements[0].stress[zz];
   std::printf("LE1 saas 16 x 16: recovered %.3f (%+.4f), element centre %.3f (%+.4f)\n", recovered,
               recovered / le1_target - 1.0, centre, centre / le1_target - 1.0);
-  EXPECT_NEAR(centre / le1_target - 1.0, -0.1625, 0.002);     // observed -0.1625
-  EXPECT_NEAR(recovered / le1_target - 1.0, -0.0448, 0.002);  // observed -0.0448
+  EXPECT_NEAR(centre / le1_target - 1.0, -0.1625, 0.002);  // observed -0.1625
+  // Observed +0.0234 (the issue asks within 3 %): D lies on the symmetry line y = 0, whose patches
+  // hold their mirror images, and its value is extrapolated with quadratic fits of the linear
+  // patches. Plain SPR (one-sided linear patches) gives -0.0448 on this mesh.
+  EXPECT_NEAR(recovered / le1_target - 1.0, 0.0234, 0.002);
+  EXPECT_LT(std::abs(recovered / le1_target - 1.0), 0.03);
 }
 
 TEST(RecoveryLe1, Quad8RecoversSigmaYyAtDAndConverges) {
-  const std::array<double, 3> observed{0.0509, 0.0122, 0.0006};  // 8 x 8, 16 x 16, 32 x 32
+  // 8 x 8, 16 x 16, 32 x 32. The issue asks 1 % at 8 x 8; +1.29 % is D's value as the mean of the
+  // patch on the symmetry line (mirrored: -6.3 % alone) and the diagonal patch with its mirror
+  // image (+5 % alone), each extrapolated one element outwards (docs/recovery.md). Plain SPR:
+  // +5.09 %, +1.22 %, +0.06 %.
+  const std::array<double, 3> observed{0.0129, 0.0041, -0.0003};
   for (int k = 0; k < 3; ++k) {
     const int n = 8 << k;
     const Le1 c = le1("quad8", n);
@@ -301,12 +309,12 @@ std::pair<Model, Solution> l_shape(const std::string& type, int n) {
 TEST(RecoveryEffectivity, Le1Smooth) {
   const Effectivity quad8 = effectivity("LE1 quad8", 8, [](int n) { return le1_solved("quad8", n); });
   const Effectivity saas = effectivity("LE1 saas", 8, [](int n) { return le1_solved("saas", n); });
-  // Observed: quad8 8 x 8 1.499 (4 x 4: 1.78), an overestimate outside the issue's 0.8 .. 1.25: the
-  // boundary nodes near D, where sigma_yy falls by a third within one element, are extrapolated
-  // from interior patches (LE1 sigma_yy at D +5 % above), and their excess counts in the estimate.
-  // The SAAS element at 8 x 8: 0.893. Both limits agree to 1e-5 (1.216747e-3, 1.216757e-3).
-  EXPECT_NEAR(quad8.index, 1.499, 0.01);
-  EXPECT_NEAR(saas.index, 0.893, 0.01);
+  // Observed: quad8 8 x 8 1.349 (plain SPR 1.499), an overestimate outside the issue's 0.8 .. 1.25:
+  // the boundary nodes near D, where sigma_yy falls by a third within one element, are
+  // extrapolated from interior patches, and their excess counts in the estimate. The SAAS element
+  // at 8 x 8: 0.881. Both limits agree to 1e-5 (1.216747e-3, 1.216757e-3).
+  EXPECT_NEAR(quad8.index, 1.349, 0.01);
+  EXPECT_NEAR(saas.index, 0.881, 0.01);
   EXPECT_GT(saas.index, 0.7);
   EXPECT_LT(saas.index, 1.4);
 }
@@ -314,9 +322,9 @@ TEST(RecoveryEffectivity, Le1Smooth) {
 TEST(RecoveryEffectivity, LShapeWithSingularities) {
   const Effectivity quad8 = effectivity("L quad8", 2, [](int n) { return l_shape("quad8", n); });
   const Effectivity saas = effectivity("L saas", 4, [](int n) { return l_shape("saas", n); });
-  // Observed: quad8 2 x 2 per unit (12 elements) 0.873, the SAAS element 4 x 4 per unit 0.921.
+  // Observed: quad8 2 x 2 per unit (12 elements) 0.873, the SAAS element 4 x 4 per unit 0.866.
   EXPECT_NEAR(quad8.index, 0.873, 0.01);
-  EXPECT_NEAR(saas.index, 0.921, 0.01);
+  EXPECT_NEAR(saas.index, 0.866, 0.01);
   EXPECT_GT(quad8.index, 0.8);
   EXPECT_LT(quad8.index, 1.25);
   EXPECT_GT(saas.index, 0.7);
