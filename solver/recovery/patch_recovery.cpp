@@ -193,13 +193,6 @@ class PatchPoints {
   std::vector<SamplingPoint> mirrored_;
 };
 
-/// The polynomial a boundary node's value is extrapolated with from a patch fitted with `poly` over
-/// `points` points (see the header): the complete quadratic for a linear patch with enough points.
-Polynomial boundary_polynomial(Polynomial poly, std::size_t points) {
-  const auto quadratic_terms = static_cast<std::size_t>(monomials_of(Polynomial::quadratic).count);
-  return poly == Polynomial::linear && points >= 2 * quadratic_terms ? Polynomial::quadratic : poly;
-}
-
 }  // namespace
 
 std::array<Vec4, max_element_nodes> element_nodal_values(const Model& model, const RecoveredField& field, std::size_t e) {
@@ -279,7 +272,6 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
   // Pass 2, per side: the value from the patches that reach it (see the header), pulled so that
   // each side is written by one thread.
   for_each_range(node_count, [&](std::size_t begin, std::size_t end, unsigned) {
-    PatchPoints patch(model, in, samples, symmetry);
     struct Reached {
       std::uint32_t side;
       std::size_t node;
@@ -310,20 +302,10 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
             }
           }
         }
-        // A patch's value at n: its own fit, or refitted with the boundary polynomial; a patch off
-        // n's symmetry line also with its mirror image (weight 2: the mirrored mesh's patch too).
+        // A patch's value at n; a patch off n's symmetry line also with its mirror image (weight 2:
+        // the mirrored mesh's patch too).
         const auto value_from = [&](const Reached& r, Vec4& sum, double& weight) {
-          const Fit* fit = &fits[r.side];
-          Fit refit;
-          if (fit->polynomial == Polynomial::linear) {
-            patch.gather(r.node, m);
-            const Polynomial higher = boundary_polynomial(Polynomial::linear, patch.points().size());
-            if (higher != Polynomial::linear) {
-              refit = fit_patch(fit->centre, higher, patch.points());
-              fit = &refit;
-            }
-          }
-          const Vec4 v = fit->at(x);
+          const Vec4 v = fits[r.side].at(x);
           if (on_line && !symmetry->same_line(model, n, r.node)) {
             sum += v + symmetry->mirror_value(n, v);
             weight += 2.0;

@@ -25,17 +25,11 @@
 ///  - a node that no interior patch reaches (a region one element thick, a lone element) takes the
 ///    mean over the boundary patches it belongs to, its own included.
 ///
-/// Two refinements of those rules at the region's boundary, where values are extrapolated:
-///  - symmetry lines (symmetry_lines.hpp): the patch of a corner on a line is completed by the mirror
-///    images of its points, and its edges along the line count as shared, so such a corner is
-///    interior when its other edges are; a node on a line that takes a mean counts each patch whose
-///    corner is off its line twice, as itself and as its mirror image (the mesh mirrored);
-///  - boundary values from linear patches (saas, tri3, quad4i) are fitted with the complete
-///    quadratic when the patch has at least twice as many points as the quadratic has terms (a
-///    plane extrapolated half a patch outwards misses the field's curvature: LE1's sigma_yy at D
-///    with the report's element at 16 x 16, -5.2 % linear, +1.6 % quadratic; docs/recovery.md).
-///    Quadratic families keep their own polynomial: a cubic there extrapolates worse (LE1 quad8
-///    8 x 8 at D: -0.6 % serendipity, -2.1 % cubic).
+/// Symmetry lines (symmetry_lines.hpp) refine those rules at the region's boundary, where values
+/// are extrapolated: the patch of a corner on a line is completed by the mirror images of its
+/// points, and its edges along the line count as shared, so such a corner is interior when its other
+/// edges are; a node on a line that takes a mean counts each patch whose corner is off its line
+/// twice, as itself and as its mirror image (the mesh mirrored).
 ///
 /// Each side of a material interface is recovered on its own: a node where materials meet holds
 /// one value per material (a "side"). One pass over the patches, each fitted once, in parallel:
