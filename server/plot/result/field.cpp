@@ -73,6 +73,15 @@ const std::vector<FieldInfo>& fields() {
   return all;
 }
 
+const char* source_phrase(FieldSource source) {
+  switch (source) {
+    case FieldSource::recovered: return "recovered stresses";
+    case FieldSource::averaged: return "nodal averages of element values";
+    case FieldSource::nodal: return "nodal values";
+  }
+  return "";
+}
+
 std::string field_names() {
   std::string names;
   for (const FieldInfo& f : fields()) names += (names.empty() ? "" : ", ") + std::string(f.name);

@@ -62,6 +62,14 @@ struct FieldInfo {
   Cylindrical cylindrical = Cylindrical::none;
 };
 
+/// Where the values a picture or a probe interpolates inside the elements come from
+/// (element_field.hpp): the recovered nodal stresses, nodal averages of element values, or the
+/// nodes' own values.
+enum class FieldSource { recovered, averaged, nodal };
+
+/// "recovered stresses", "nodal averages of element values" or "nodal values", for subtitles.
+const char* source_phrase(FieldSource source);
+
 /// Every field, element fields first.
 const std::vector<FieldInfo>& fields();
 
