@@ -205,5 +205,38 @@ TEST(ContourPlot, TheColourBarAndTheMaxLabelReadTheRecoveredField) {
   EXPECT_GT(legend.levels.front() + step, bottom);
 }
 
+TEST(ContourPlot, TheErrorMapGivesEachElementItsOwnError) {
+  json document = quad8_patch();
+  const std::array<double, 3> errors{0.25, 0.75, 0.5};
+  for (std::size_t e = 0; e < errors.size(); ++e) document["elements"][e]["error"] = errors[e];
+  const PlotResult result(document);
+  const ElementField field(result, find_field("error"));
+  EXPECT_EQ(field.source(), FieldSource::element);
+  const PointLocator locator(result.mesh());
+  // On the edge elements 1 and 2 share, each keeps its own value: the map is not averaged.
+  const std::vector<Location> edge = locator.locate_all(2.15, 0.3);
+  ASSERT_EQ(edge.size(), 2U);
+  EXPECT_EQ(field.value(edge[0]), 0.25);
+  EXPECT_EQ(field.value(edge[1]), 0.75);
+  const Canvas canvas(ImageFormat::png, 800, 600);
+  ContourOptions options;
+  options.field = "error";
+  const ContourLegend legend = draw_contour_plot(canvas, result, options);
+  EXPECT_EQ(legend.source, FieldSource::element);
+  EXPECT_EQ(legend.max, 0.75);
+  EXPECT_EQ(legend.max_element, 2);
+  EXPECT_EQ(legend.min, 0.25);
+  EXPECT_EQ(legend.min_element, 1);
+  // A result without estimates says so.
+  document = quad8_patch();
+  const PlotResult without(document);
+  try {
+    (void)ElementField(without, find_field("error"));
+    ADD_FAILURE() << "no error without estimates";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("this result has none"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace saasgaps::plot

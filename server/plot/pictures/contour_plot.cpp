@@ -432,9 +432,13 @@ ContourLegend draw_contour_plot(const Canvas& canvas, const PlotResult& result, 
   const bool uniform = bands_of.uniform;
   const auto extreme_text = [&](const char* what, int k) {
     const auto i = static_cast<std::size_t>(k);
+    const std::string element = "element " + std::to_string(mesh.solids[samples.element[i]].id);
+    // A field constant in each element has its extreme in the whole element, not at a point.
+    if (field_values.source() == FieldSource::element) {
+      return std::string(what) + " " + format_value(samples.values[samples.extreme[i]]) + " in " + element;
+    }
     return std::string(what) + " " + format_value(samples.values[samples.extreme[i]]) + " at (" +
-           format_value(samples.where[i][0]) + ", " + format_value(samples.where[i][1]) + "), element " +
-           std::to_string(mesh.solids[samples.element[i]].id);
+           format_value(samples.where[i][0]) + ", " + format_value(samples.where[i][1]) + "), " + element;
   };
   const ContourLegend legend{levels, low, high, mesh.solids[samples.element[0]].id, mesh.solids[samples.element[1]].id,
                              samples.where[0], samples.where[1], field_values.source()};

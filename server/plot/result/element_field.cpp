@@ -83,6 +83,11 @@ double stress_field_value(const FieldInfo& field, const std::array<double, 4>& s
 ElementField::ElementField(const PlotResult& result, const FieldInfo& field, const PlanePoint& centre)
     : mesh_(result.mesh()), field_(field), centre_(centre) {
   require_field_fits(field, mesh_);
+  if (field.constant_per_element) {
+    source_ = FieldSource::element;
+    per_element_ = element_values(result, mesh_, field, centre);
+    return;
+  }
   if (field.location == FieldLocation::element && field.quantity == Quantity::stress) {
     recovered_.emplace(result);
     if (recovered_->available()) {
@@ -98,6 +103,7 @@ ElementField::ElementField(const PlotResult& result, const FieldInfo& field, con
 double ElementField::value(std::size_t e, const std::vector<int>& nodes, const ShapeValues& N,
                            const PlanePoint& at) const {
   if (recovered_) return stress_field_value(field_, recovered_->interpolate(mesh_.solids[e], nodes, N), at, centre_);
+  if (source_ == FieldSource::element) return per_element_[e];
   double v = 0.0;
   for (std::size_t a = 0; a < nodes.size(); ++a) v += N.N[a] * nodal_[static_cast<std::size_t>(nodes[a])];
   return v;

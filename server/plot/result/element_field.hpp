@@ -14,7 +14,8 @@
 ///     the centre (field.hpp), so a derived field is exact at every point, not interpolated;
 ///   averaged: the other element fields (strains, heat flux), and stresses of a result written
 ///     before recovery: area-weighted nodal averages of the element values (field.hpp);
-///   nodal: node fields (temperature, displacements): the nodes' own values.
+///   nodal: node fields (temperature, displacements): the nodes' own values;
+///   element: `error` (FieldInfo::constant_per_element): each element's own value throughout it.
 /// Gap fields have no values inside elements.
 
 #include <array>
@@ -79,6 +80,7 @@ class ElementField {
   FieldSource source_ = FieldSource::nodal;
   std::optional<RecoveredStress> recovered_;
   std::vector<double> nodal_;  ///< averaged and nodal sources: the value per node
+  std::vector<double> per_element_;  ///< the element source: the value per solid element
 };
 
 /// The model point of a located point: sum_a N_a x_a.

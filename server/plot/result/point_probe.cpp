@@ -23,6 +23,7 @@ const char* source_name(FieldSource source) {
     case FieldSource::recovered: return "recovered";
     case FieldSource::averaged: return "averaged";
     case FieldSource::nodal: return "nodal";
+    case FieldSource::element: return "element";
   }
   return "";
 }
