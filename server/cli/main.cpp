@@ -1,5 +1,5 @@
 /// saasgaps: thermal stress analysis of plane and axisymmetric bodies in contact across gaps.
-/// Subcommands: solve, validate, import, serve, worker, plot, export-vtu, and the client of a
+/// Subcommands: solve, validate, import, serve, worker, plot, probe, export-vtu, and the client of a
 /// service: submit, jobs, status, watch, cancel, resume, fetch (cli/client/client_commands.hpp). Exit codes (cli/common/usage.hpp,
 /// docs/cli.md): 0 converged or valid, 3 not converged, 2 bad model, 1 any other failure, 64 a usage
 /// error. Usage errors and exceptions become exit codes in cli/common/usage.cpp only.
@@ -12,6 +12,7 @@
 #include "cli/commands/export_vtu_command.hpp"
 #include "cli/commands/import_command.hpp"
 #include "cli/commands/plot_command.hpp"
+#include "cli/commands/probe_command.hpp"
 #include "cli/commands/serve_command.hpp"
 #include "cli/commands/solve_command.hpp"
 #include "cli/commands/study_command.hpp"
@@ -177,6 +178,16 @@ int main(int argc, char** argv) {
   plot_cmd->add_option("--samples", plot.samples, "Points sampled along --path")->check(CLI::Range(2, 100000))
       ->capture_default_str();
 
+  saasgaps::cli::ProbeOptions probe;
+  CLI::App* probe_cmd = app.add_subcommand(
+      "probe", "Print a result's recovered stresses, displacement and temperature at a point (docs/recovery.md)");
+  probe_cmd->add_option("result", probe.result_path, "Result document (JSON) written by solve")->required();
+  probe_cmd->add_option("--at", probe.at, "The point 'r,z' (x,y in plane analyses)")->required();
+  probe_cmd->add_option("--field", probe.fields,
+                        "Fields to print (repeat or separate by commas; default: the stress components, effective, "
+                        "u_r, u_z and the temperature when the result has one)");
+  probe_cmd->add_flag("--json", probe.json, "Print JSON, as the service's GET /v1/jobs/{id}/probe");
+
   saasgaps::cli::ExportVtuOptions vtu;
   CLI::App* vtu_cmd = app.add_subcommand("export-vtu", "Write a result as a VTK unstructured grid (.vtu) for ParaView");
   vtu_cmd->add_option("result", vtu.result_path, "Result document (JSON) written by solve")->required();
@@ -201,6 +212,7 @@ int main(int argc, char** argv) {
     if (plot_cmd->parsed()) return saasgaps::cli::run_plot(plot);
     if (worker_cmd->parsed()) return saasgaps::cli::run_worker_command(worker);
     if (vtu_cmd->parsed()) return saasgaps::cli::run_export_vtu(vtu);
+    if (probe_cmd->parsed()) return saasgaps::cli::run_probe(probe);
     return saasgaps::cli::exit_code::failure;
   }, import_cmd->parsed() ? "assembly" : study_cmd->parsed() ? "study" : "model");
 }

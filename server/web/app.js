@@ -533,6 +533,11 @@ async function showJob(id) {
     $("#job-iteration").textContent = job.iteration;
     $("#job-max").textContent = job.max_iterations;
     $("#job-progress").textContent = job.progress ? job.progress.text : "";
+    // A finished result's estimated stress error (docs/recovery.md), worded as the command line's summary.
+    const estimate = job.error_estimate;
+    $("#job-error-estimate").hidden = !estimate;
+    $("#job-error-estimate").textContent = estimate ? `Estimated stress error ${(100 * estimate.relative).toFixed(2)} % ` +
+      `in the energy norm (error_estimate.relative ${Number(estimate.relative.toPrecision(4))})` : "";
     $("#job-attempts").textContent = job.attempts;
     $("#job-created").textContent = when(job.created_at);
     $("#job-started").textContent = when(job.started_at) || "not yet";

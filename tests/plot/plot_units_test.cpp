@@ -315,23 +315,18 @@ TEST(GapRow, IdsRangesAxesAndErrors) {
   EXPECT_DOUBLE_EQ(mesh.gaps[0].contact_pressure, 1e6) << "max(0, -sigma_m) when the document lacks it";
 }
 
-TEST(PointLocator, FindsTheElementAndItsWeights) {
+TEST(PointLocator, FindsTheElementAndWhereInIt) {
   const ResultMesh mesh = ResultMesh::from_result(two_squares());
   const PointLocator locator(mesh);
   const std::optional<Location> in_second = locator.locate(2.0, 0.25);
   ASSERT_TRUE(in_second);
   EXPECT_EQ(mesh.solids[in_second->element].id, 2);
-  double r = 0.0, z = 0.0, sum = 0.0;
-  for (int c = 0; c < 3; ++c) {
-    r += in_second->weights[c] * mesh.nodes[in_second->nodes[c]].r;
-    z += in_second->weights[c] * mesh.nodes[in_second->nodes[c]].z;
-    sum += in_second->weights[c];
-  }
-  EXPECT_NEAR(r, 2.0, 1e-12);
-  EXPECT_NEAR(z, 0.25, 1e-12);
-  EXPECT_NEAR(sum, 1.0, 1e-12);
+  // Element 2 spans r 1 .. 3, z 0 .. 1: reference (0, -0.5).
+  EXPECT_NEAR(in_second->at.xi, 0.0, 1e-12);
+  EXPECT_NEAR(in_second->at.eta, -0.5, 1e-12);
   EXPECT_EQ(mesh.solids[locator.locate(0.5, 0.5)->element].id, 1);
   EXPECT_TRUE(locator.locate(3.0, 1.0)) << "a corner belongs to its element";
+  EXPECT_EQ(locator.locate_all(1.0, 0.5).size(), 2U) << "a point on the shared edge is in both";
   EXPECT_FALSE(locator.locate(0.5, -0.005)) << "inside the gap, outside every solid";
   EXPECT_FALSE(locator.locate(-1.0, 0.5));
 }
@@ -966,7 +961,9 @@ TEST(BandRaster, IsoSegmentsEndWhereTheClipCutsTheEdges) {
 
 TEST(BandRaster, RasterAndPathContoursAgreeAwayFromTheBandEdges) {
   // The two fills of the same contour: the same colour wherever a pixel lies inside one band. They
-  // differ only along band edges and the outline (antialiasing): a few percent of the mesh's pixels.
+  // differ only along band edges and the outline (antialiasing), where a pixel's neighbours in the
+  // paths picture differ from it: how many those are depends on where the edges fall on the pixel
+  // grid, so only pixels inside a band (their four neighbours of their colour) are compared.
   PlotRequest request;
   request.width = 500;
   request.height = 300;
@@ -983,13 +980,18 @@ TEST(BandRaster, RasterAndPathContoursAgreeAwayFromTheBandEdges) {
     // Band colours are saturated (viridis): not a grey of the text, axes or background.
     if (std::max({r, g, b}) - std::min({r, g, b}) < 40) continue;
     ++coloured;
+    const std::size_t w = static_cast<std::size_t>(width);
+    if (i < w || i + w >= paths.size() || paths[i - 1] != p || paths[i + 1] != p || paths[i - w] != p ||
+        paths[i + w] != p) {
+      continue;  // on a band edge
+    }
     const std::uint32_t q = raster[i];
     const int dr = std::abs(r - static_cast<int>(q >> 16 & 0xFF)), dg = std::abs(g - static_cast<int>(q >> 8 & 0xFF)),
               db = std::abs(b - static_cast<int>(q & 0xFF));
     if (std::max({dr, dg, db}) > 2) ++differ;
   }
   EXPECT_GT(coloured, 20000U) << "the mesh covers a good part of the picture";
-  EXPECT_LT(static_cast<double>(differ), 0.05 * static_cast<double>(coloured)) << differ << " of " << coloured;
+  EXPECT_LT(static_cast<double>(differ), 0.01 * static_cast<double>(coloured)) << differ << " of " << coloured;
 }
 
 /// A plane-stress grid of nx x ny unit squares with effective = x + y at each element, plus

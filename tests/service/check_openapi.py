@@ -234,6 +234,17 @@ def exercise(client, repo, document_bytes, directory):
     contact = client.json("GET", f"/v1/jobs/{job}/contact", expect=200)
     check(contact == {"contact": []}, f"contact of a model without contact surfaces: {contact}")
     client.request("GET", f"/v1/jobs/{job}/result.vtu", expect=200)
+    # The values at the centre of the first element, and the problems of a bad point.
+    result = client.json("GET", f"/v1/jobs/{job}/result", expect=200)
+    check(client.json("GET", f"/v1/jobs/{job}", expect=200)["error_estimate"] == result["error_estimate"],
+          "the job's error_estimate differs from its result's")
+    nodes = {n["id"]: (n["r"], n["z"]) for n in result["nodes"]}
+    corners = [nodes[n] for n in result["elements"][0]["nodes"]]
+    centre = (sum(c[0] for c in corners) / len(corners), sum(c[1] for c in corners) / len(corners))
+    probe = client.json("GET", f"/v1/jobs/{job}/probe?at={centre[0]!r},{centre[1]!r}", expect=200)
+    check(probe["element"] == result["elements"][0]["id"], f"probe at {centre}: {probe}")
+    client.request("GET", f"/v1/jobs/{job}/probe?at=1e9,1e9", expect=422)
+    client.request("GET", f"/v1/jobs/{job}/probe?at=x", expect=400)
     client.request("GET", f"/v1/jobs/{job}/plots/effective.png?width=300&height=200&mesh=1", expect=200)
     client.request("GET", f"/v1/jobs/{job}/plots/closure.svg?along=position", expect=200)
     client.request("GET", f"/v1/jobs/{job}/plots/convergence.svg", expect=200)
@@ -269,7 +280,7 @@ def exercise(client, repo, document_bytes, directory):
         problem = client.json("GET", f"/v1/jobs/{missing}", expect=404)
         check(missing in problem["detail"], f"404 for job {missing} does not name it: {problem['detail']}")
         for suffix in ("/iterations", "/thermal", "/events", "/result", "/model", "/units", "/contact", "/result.vtu",
-                       "/plots/effective.png"):
+                       "/plots/effective.png", "/probe?at=0,0"):
             client.request("GET", f"/v1/jobs/{missing}{suffix}", expect=404)
         client.request("POST", f"/v1/jobs/{missing}/cancel", body="", expect=404)
         client.request("POST", f"/v1/jobs/{missing}/resume", body="", expect=404)

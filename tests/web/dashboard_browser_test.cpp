@@ -50,6 +50,8 @@ TEST(Dashboard, FailedJobsSayWhyAndJobsCanBeDeleted) {
   EXPECT_EQ(browser.run("const e = document.querySelector('#job-error'); return e.hidden ? '' : e.textContent;")
                 .get<std::string>(),
             "Failed: " + error);
+  EXPECT_TRUE(browser.run("return document.querySelector('#job-error-estimate').hidden;").get<bool>())
+      << "a failed job has no error estimate";
   save_artifact("dashboard-failed-job.png", browser.screenshot());
 
   // Delete asks first: refused, nothing happens; confirmed, the job is gone and the list shows.
@@ -106,6 +108,16 @@ TEST(Dashboard, FollowsARunningJobAndShowsItsPlots) {
     if (!plots) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   EXPECT_TRUE(plots) << "the contour and closure plots did not appear";
+  // The finished result's estimated stress error, worded as the command line's summary (issue 32).
+  const double relative = get_json(client, "/v1/jobs/" + std::to_string(job))["error_estimate"]["relative"].get<double>();
+  char percent[32];
+  std::snprintf(percent, sizeof percent, "%.2f %%", 100.0 * relative);
+  EXPECT_TRUE(wait_until(browser,
+                         "const e = document.querySelector('#job-error-estimate');"
+                         "return !e.hidden && e.textContent.startsWith('Estimated stress error " + std::string(percent) +
+                             " in the energy norm');",
+                         std::chrono::seconds(10)))
+      << browser.run("return document.querySelector('#job-error-estimate').textContent;");
   EXPECT_EQ(browser.run("return document.querySelectorAll('#iterations tbody tr').length;").get<int>(), iterations);
   // The watched element and gap have their columns, as the CLI prints them, with the row's values.
   const std::string gap_id = std::to_string(model["gaps"]["elements"][0]["id"].get<int>());

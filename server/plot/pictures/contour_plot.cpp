@@ -15,6 +15,8 @@
 #include "plot/draw/nice_scale.hpp"
 #include "plot/draw/number_format.hpp"
 #include "plot/pictures/gap_markers.hpp"
+#include "plot/result/element_field.hpp"
+#include "plot/result/element_map.hpp"
 #include "plot/result/field.hpp"
 
 namespace saasgaps::plot {
@@ -57,34 +59,149 @@ std::vector<Point> device_positions(const ResultMesh& mesh, const View& view, do
   return p;
 }
 
-// ----------------------------------------------------------------------------------------- edges
-/// Edges of solid elements used by exactly one of them: the outline of the bodies, in increasing
-/// order of (lower node, higher node). (Sorted in a flat vector: a map of the 10^6 edges of a large
-/// mesh cost 100 MB.)
-std::vector<std::array<int, 2>> boundary_edges(const ResultMesh& mesh) {
-  std::vector<std::array<int, 2>> all;
-  for (const SolidElement& e : mesh.solids) {
-    for (std::size_t a = 0; a < e.nodes.size(); ++a) {
-      const int p = e.nodes[a], q = e.nodes[(a + 1) % e.nodes.size()];
-      all.push_back({std::min(p, q), std::max(p, q)});
+// ---------------------------------------------------------------------------------- the samples
+/// The field at the points of each element's drawing subdivision (element_map.hpp), element after
+/// element: what the bands are drawn from, the levels computed from and the extremes read from,
+/// so that the colour bar and the max and min labels describe the field drawn.
+struct Samples {
+  std::vector<double> values;   ///< per element, its subdivision's points in order
+  std::vector<double> weights;  ///< the area each stands for: an equal share of its element
+  /// The lowest [0] and the highest [1] sample (NaN skipped): its index, element, model point.
+  std::array<std::size_t, 2> extreme{0, 0};
+  std::array<std::size_t, 2> element{0, 0};
+  std::array<PlanePoint, 2> where{};
+};
+
+/// Shape functions at a subdivision's points, computed once per family.
+const std::vector<ShapeValues>& shape_at(const ElementFamily& family, const Subdivision& sub) {
+  static thread_local std::vector<std::pair<const Subdivision*, std::vector<ShapeValues>>> cache;
+  for (const auto& [key, values] : cache) {
+    if (key == &sub && values.size() == sub.points.size()) return values;
+  }
+  std::vector<ShapeValues> values(sub.points.size());
+  for (std::size_t k = 0; k < sub.points.size(); ++k) family.shape(sub.points[k].xi, sub.points[k].eta, values[k]);
+  cache.emplace_back(&sub, std::move(values));
+  return cache.back().second;
+}
+
+/// sum_a N_a p[nodes[a]]
+template <class P>
+std::array<double, 2> mapped(const std::vector<int>& nodes, const ShapeValues& N, const P& position) {
+  std::array<double, 2> x{0.0, 0.0};
+  for (std::size_t a = 0; a < nodes.size(); ++a) {
+    const std::array<double, 2> p = position(nodes[a]);
+    x[0] += N.N[a] * p[0];
+    x[1] += N.N[a] * p[1];
+  }
+  return x;
+}
+
+Samples sample_field(const ResultMesh& mesh, const ElementField& field, bool many) {
+  Samples s;
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  const auto undeformed = [&mesh](int n) { return std::array<double, 2>{mesh.nodes[n].r, mesh.nodes[n].z}; };
+  for (std::size_t e = 0; e < mesh.solids.size(); ++e) {
+    const ElementFamily& family = element_family(mesh.solids[e]);
+    const std::vector<int> nodes = family_nodes(mesh.solids[e]);
+    const Subdivision& sub = drawing_subdivision(family, many);
+    const std::vector<ShapeValues>& N = shape_at(family, sub);
+    const double share = mesh.area(mesh.solids[e]) / static_cast<double>(sub.points.size());
+    for (std::size_t k = 0; k < sub.points.size(); ++k) {
+      const PlanePoint at = mapped(nodes, N[k], undeformed);
+      const double v = field.value(e, nodes, N[k], at);
+      for (const std::size_t end : {0U, 1U}) {
+        if (end == 0 ? v < low : v > high) {
+          (end == 0 ? low : high) = v;
+          s.extreme[end] = s.values.size();
+          s.element[end] = e;
+          s.where[end] = at;
+        }
+      }
+      s.values.push_back(v);
+      s.weights.push_back(share);
     }
   }
-  std::sort(all.begin(), all.end());
-  std::vector<std::array<int, 2>> edges;
+  return s;
+}
+
+/// Element e's triangles in device px, valued from the samples starting at `first`; returns the
+/// next element's first sample.
+std::size_t element_triangles(const ResultMesh& mesh, std::size_t e, bool many, const std::vector<Point>& at,
+                              const Samples& samples, std::size_t first, std::vector<ValueTriangle>& out) {
+  const ElementFamily& family = element_family(mesh.solids[e]);
+  const std::vector<int> nodes = family_nodes(mesh.solids[e]);
+  const Subdivision& sub = drawing_subdivision(family, many);
+  const std::vector<ShapeValues>& N = shape_at(family, sub);
+  const auto device = [&at](int n) { return std::array<double, 2>{at[n].x, at[n].y}; };
+  std::vector<ValuePoint> points;
+  for (std::size_t k = 0; k < sub.points.size(); ++k) {
+    const std::array<double, 2> p = mapped(nodes, N[k], device);
+    points.push_back({p[0], p[1], samples.values[first + k]});
+  }
+  for (const auto& [a, b, c] : sub.triangles) {
+    out.push_back({points[static_cast<std::size_t>(a)], points[static_cast<std::size_t>(b)],
+                   points[static_cast<std::size_t>(c)]});
+  }
+  return first + sub.points.size();
+}
+
+// ----------------------------------------------------------------------------------------- edges
+/// An element's edge as drawn: its points from corner to corner in device px, through the
+/// mid-side node along the element's own map (curved: kEdgePieces straight pieces).
+constexpr int edge_pieces = 8;
+
+void add_edge_path(cairo_t* cr, const SolidElement& e, int edge, const std::vector<Point>& at) {
+  const ElementFamily& family = element_family(e);
+  const std::vector<int> nodes = family_nodes(e);
+  const EdgeNodes& nodes_of_edge = family.edges[static_cast<std::size_t>(edge)];
+  const auto& p0 = family.node_positions[static_cast<std::size_t>(nodes_of_edge.first())];
+  const auto& p1 = family.node_positions[static_cast<std::size_t>(nodes_of_edge.last())];
+  const int pieces = family.quadratic() ? edge_pieces : 1;
+  const auto device = [&at](int n) { return std::array<double, 2>{at[n].x, at[n].y}; };
+  ShapeValues N;
+  for (int k = 0; k <= pieces; ++k) {
+    const double t = static_cast<double>(k) / pieces;
+    family.shape(p0[0] + t * (p1[0] - p0[0]), p0[1] + t * (p1[1] - p0[1]), N);
+    const std::array<double, 2> p = mapped(nodes, N, device);
+    if (k == 0) cairo_move_to(cr, p[0], p[1]);
+    else cairo_line_to(cr, p[0], p[1]);
+  }
+}
+
+/// Edges of solid elements used by exactly one of them: the outline of the bodies, as (element,
+/// edge) in increasing order of the edge's (lower corner, higher corner). (Sorted in a flat vector:
+/// a map of the 10^6 edges of a large mesh cost 100 MB.)
+std::vector<std::array<std::size_t, 2>> boundary_edges(const ResultMesh& mesh) {
+  struct Edge {
+    int low, high;
+    std::size_t element;
+    int edge;
+  };
+  std::vector<Edge> all;
+  for (std::size_t e = 0; e < mesh.solids.size(); ++e) {
+    const ElementFamily& family = element_family(mesh.solids[e]);
+    const std::vector<int> nodes = family_nodes(mesh.solids[e]);
+    for (int k = 0; k < family.edge_count(); ++k) {
+      const EdgeNodes& edge = family.edges[static_cast<std::size_t>(k)];
+      const int p = nodes[static_cast<std::size_t>(edge.first())], q = nodes[static_cast<std::size_t>(edge.last())];
+      all.push_back({std::min(p, q), std::max(p, q), e, k});
+    }
+  }
+  const auto key = [](const Edge& a) { return std::array<int, 2>{a.low, a.high}; };
+  std::sort(all.begin(), all.end(), [&key](const Edge& a, const Edge& b) { return key(a) < key(b); });
+  std::vector<std::array<std::size_t, 2>> edges;
   for (std::size_t i = 0; i < all.size();) {
     std::size_t j = i + 1;
-    while (j < all.size() && all[j] == all[i]) ++j;
-    if (j - i == 1) edges.push_back(all[i]);
+    while (j < all.size() && key(all[j]) == key(all[i])) ++j;
+    if (j - i == 1) edges.push_back({all[i].element, static_cast<std::size_t>(all[i].edge)});
     i = j;
   }
   return edges;
 }
 
-void stroke_edges(cairo_t* cr, const std::vector<std::array<int, 2>>& edges, const std::vector<Point>& at) {
-  for (const auto& [p, q] : edges) {
-    cairo_move_to(cr, at[p].x, at[p].y);
-    cairo_line_to(cr, at[q].x, at[q].y);
-  }
+void stroke_edges(cairo_t* cr, const ResultMesh& mesh, const std::vector<std::array<std::size_t, 2>>& edges,
+                  const std::vector<Point>& at) {
+  for (const auto& [e, edge] : edges) add_edge_path(cr, mesh.solids[e], static_cast<int>(edge), at);
   cairo_stroke(cr);
 }
 
@@ -93,16 +210,13 @@ void stroke_edges(cairo_t* cr, const std::vector<std::array<int, 2>>& edges, con
 /// where v >= levels[k]; painting the levels in increasing order leaves each point the colour of
 /// its band, and since one path holds all triangles, antialiasing leaves no seams along the
 /// element edges.
-void fill_bands(const Canvas& canvas, const ResultMesh& mesh, const std::vector<Point>& at,
-                const std::vector<double>& values, const std::vector<double>& levels, const std::vector<Rgb>& colors) {
+void fill_bands(const Canvas& canvas, const ResultMesh& mesh, const std::vector<Point>& at, const Samples& samples,
+                bool many, const std::vector<double>& levels, const std::vector<Rgb>& colors) {
   cairo_t* cr = canvas.context();
   std::vector<ValueTriangle> triangles;
   triangles.reserve(2 * mesh.solids.size());
-  std::vector<ValuePoint> corners;
-  for (const SolidElement& e : mesh.solids) {
-    corners.clear();
-    for (const int n : e.nodes) corners.push_back({at[n].x, at[n].y, values[n]});
-    triangulate(corners, triangles);
+  for (std::size_t e = 0, first = 0; e < mesh.solids.size(); ++e) {
+    first = element_triangles(mesh, e, many, at, samples, first, triangles);
   }
   const auto add = [cr](std::span<const ValuePoint> part) {
     for (std::size_t i = 0; i < part.size(); ++i) {
@@ -130,18 +244,15 @@ void fill_bands(const Canvas& canvas, const ResultMesh& mesh, const std::vector<
 /// the canvas, painted in one go; then each interior level's iso-line stroked 1 px wide in the mean
 /// of its two bands' colours, which stands in for the antialiasing of the band edges. No list of
 /// triangles is kept: memory is the image and the iso-lines.
-void raster_bands(const Canvas& canvas, const ResultMesh& mesh, const std::vector<Point>& at,
-                  const std::vector<double>& values, const std::vector<double>& levels, const std::vector<Rgb>& colors) {
+void raster_bands(const Canvas& canvas, const ResultMesh& mesh, const std::vector<Point>& at, const Samples& samples,
+                  bool many, const std::vector<double>& levels, const std::vector<Rgb>& colors) {
   BandRaster raster(canvas.width(), canvas.height(), levels, colors);
   const std::size_t bands = levels.size() - 1;
   std::vector<std::vector<std::array<Point, 2>>> iso_lines(bands);  // [k]: level k's segments, k >= 1
   std::vector<ValueTriangle> triangles;
-  std::vector<ValuePoint> corners;
-  for (const SolidElement& e : mesh.solids) {
-    corners.clear();
-    for (const int n : e.nodes) corners.push_back({at[n].x, at[n].y, values[n]});
+  for (std::size_t e = 0, first = 0; e < mesh.solids.size(); ++e) {
     triangles.clear();
-    triangulate(corners, triangles);
+    first = element_triangles(mesh, e, many, at, samples, first, triangles);
     for (const ValueTriangle& t : triangles) {
       raster.fill(t);
       const double lo = std::min({t[0].v, t[1].v, t[2].v}), hi = std::max({t[0].v, t[1].v, t[2].v});
@@ -274,34 +385,6 @@ void draw_model_axes(const Canvas& canvas, const Rect& frame, const View& view, 
   cairo_restore(cr);
 }
 
-/// Area each node stands for: an equal share of every solid element around it (weights of the
-/// quantile levels).
-std::vector<double> nodal_areas(const ResultMesh& mesh) {
-  std::vector<double> area(mesh.nodes.size(), 0.0);
-  for (const SolidElement& e : mesh.solids) {
-    const double share = mesh.area(e) / static_cast<double>(e.nodes.size());
-    for (const int n : e.nodes) area[n] += share;
-  }
-  return area;
-}
-
-// ------------------------------------------------------------------------------------ extremes
-struct Extreme {
-  double value;
-  int id;
-};
-
-/// Smallest and largest of values[i] (NaN skipped), with ids[i].
-std::pair<Extreme, Extreme> extremes(const std::vector<double>& values, const std::vector<int>& ids) {
-  Extreme low{std::numeric_limits<double>::infinity(), 0}, high{-std::numeric_limits<double>::infinity(), 0};
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (std::isnan(values[i])) continue;
-    if (values[i] < low.value) low = {values[i], ids[i]};
-    if (values[i] > high.value) high = {values[i], ids[i]};
-  }
-  return {low, high};
-}
-
 }  // namespace
 
 double automatic_deformation_scale(const ResultMesh& mesh) {
@@ -323,7 +406,7 @@ double automatic_deformation_scale(const ResultMesh& mesh) {
   return decade;
 }
 
-void draw_contour_plot(const Canvas& canvas, const PlotResult& result, const ContourOptions& options) {
+ContourLegend draw_contour_plot(const Canvas& canvas, const PlotResult& result, const ContourOptions& options) {
   const FieldInfo& field = find_field(options.field);
   if (field.location == FieldLocation::gap) {
     throw std::invalid_argument("'" + std::string(field.name) + "' is a gap field: plot it with the closure plot");
@@ -336,47 +419,36 @@ void draw_contour_plot(const Canvas& canvas, const PlotResult& result, const Con
   const ResultMesh& mesh = result.mesh();
   if (mesh.solids.empty()) throw std::invalid_argument("the result has no solid elements to contour");
   require_field_fits(field, mesh);
-  const std::vector<double> values = nodal_values(result, mesh, field, options.centre);
-
-  // Levels from the values at the nodes of solid elements (the contoured ones): a node no solid
-  // element uses weighs nothing.
-  double low = std::numeric_limits<double>::infinity(), high = -low;
-  for (const SolidElement& e : mesh.solids) {
-    for (const int n : e.nodes) {
-      low = std::min(low, values[n]);
-      high = std::max(high, values[n]);
-    }
-  }
+  const ElementField field_values(result, field, options.centre);
+  const bool many = mesh.solids.size() > path_fill_limit;
+  const Samples samples = sample_field(mesh, field_values, many);
+  const double low = samples.values[samples.extreme[0]], high = samples.values[samples.extreme[1]];
   if (!std::isfinite(low) || !std::isfinite(high)) throw std::invalid_argument("the field has no finite values");
-  const BandLevels bands_of = band_levels(values, nodal_areas(mesh), options.max_bands, options.levels);
+  // Levels, colour bar and extremes from the same samples: the field drawn.
+  const BandLevels bands_of = band_levels(samples.values, samples.weights, options.max_bands, options.levels);
   const std::vector<double>& levels = bands_of.levels;
   const ColorMap colors_of = ColorMap::named(ColorMap::for_range(options.color_map, low, high));
   const std::vector<Rgb> band_colors = colors_of.band_colors(levels);
   const bool uniform = bands_of.uniform;
-
-  // Extremes for the panel: element values as computed (averaging at nodes lowers peaks), or
-  // nodal ones for node fields.
-  std::vector<double> raw;
-  std::vector<int> ids;
-  if (field.location == FieldLocation::element) {
-    raw = element_values(result, mesh, field, options.centre);
-    for (const SolidElement& e : mesh.solids) ids.push_back(e.id);
-  } else {
-    // Over the nodes drawn: a wall node that only a gap element uses is not part of the picture.
-    raw.assign(mesh.nodes.size(), std::numeric_limits<double>::quiet_NaN());
-    for (const SolidElement& e : mesh.solids) {
-      for (const int n : e.nodes) raw[n] = values[n];
+  const auto extreme_text = [&](const char* what, int k) {
+    const auto i = static_cast<std::size_t>(k);
+    const std::string element = "element " + std::to_string(mesh.solids[samples.element[i]].id);
+    // A field constant in each element has its extreme in the whole element, not at a point.
+    if (field_values.source() == FieldSource::element) {
+      return std::string(what) + " " + format_value(samples.values[samples.extreme[i]]) + " in " + element;
     }
-    for (const MeshNode& n : mesh.nodes) ids.push_back(n.id);
-  }
-  const auto [lowest, highest] = extremes(raw, ids);
-  const char* where = field.location == FieldLocation::element ? "element" : "node";
+    return std::string(what) + " " + format_value(samples.values[samples.extreme[i]]) + " at (" +
+           format_value(samples.where[i][0]) + ", " + format_value(samples.where[i][1]) + "), " + element;
+  };
+  const ContourLegend legend{levels, low, high, mesh.solids[samples.element[0]].id, mesh.solids[samples.element[1]].id,
+                             samples.where[0], samples.where[1], field_values.source()};
 
   // ---- Header and layout: the mesh on the left, the colour bar and legends on the right.
   const bool deformed = options.automatic_deformation || options.deformation_scale.has_value();
   const double deformation = options.automatic_deformation ? automatic_deformation_scale(mesh)
                                                            : options.deformation_scale.value_or(0.0);
   std::string subtitle = field_label(field, mesh, options.centre) + " " + unit_phrase(field.quantity, mesh.units) +
+                         ", " + source_phrase(field_values.source()) +
                          (uniform ? "" : options.levels == LevelRule::quantile ? ", bands of equal area"
                                                                                  : ", bands of equal width") +
                          (colors_of.centred_on_zero() && !uniform ? ", white at zero" : "") + "\n";
@@ -397,8 +469,8 @@ void draw_contour_plot(const Canvas& canvas, const PlotResult& result, const Con
   const std::optional<double> uniform_value = uniform ? std::optional<double>((low + high) / 2.0) : std::nullopt;
   if (uniform_value) panel_width = canvas.text_width(format_value(*uniform_value) + " (uniform)", t.small);
   panel_width += bar_width + 0.6 * t.small;
-  const std::string max_text = "max " + format_value(highest.value) + " (" + where + " " + std::to_string(highest.id) + ")";
-  const std::string min_text = "min " + format_value(lowest.value) + " (" + where + " " + std::to_string(lowest.id) + ")";
+  const std::string max_text = extreme_text("max", 1);
+  const std::string min_text = extreme_text("min", 0);
   for (const std::string& s : {max_text, min_text, bar_title}) {
     panel_width = std::max(panel_width, canvas.text_width(s, t.small, true));
   }
@@ -420,36 +492,34 @@ void draw_contour_plot(const Canvas& canvas, const PlotResult& result, const Con
   const View view = fit_view(extent, inset);
   const std::vector<Point> at = device_positions(mesh, view, deformation);
   const std::vector<Point> rest = device_positions(mesh, view, 0.0);
-  const std::vector<std::array<int, 2>> outline = boundary_edges(mesh);
+  const std::vector<std::array<std::size_t, 2>> outline = boundary_edges(mesh);
   cairo_t* cr = canvas.context();
   if (deformed) {
     canvas.set_color(grey(0.55));
     canvas.set_line(0.9, true);
-    stroke_edges(cr, outline, rest);
+    stroke_edges(cr, mesh, outline, rest);
     canvas.set_line(1.0);
   }
 
   const bool raster = options.fill == BandFill::raster ||
                       (options.fill == BandFill::automatic && mesh.solids.size() > path_fill_limit);
   if (raster) {
-    raster_bands(canvas, mesh, at, values, levels, band_colors);
+    raster_bands(canvas, mesh, at, samples, many, levels, band_colors);
   } else {
-    fill_bands(canvas, mesh, at, values, levels, band_colors);
+    fill_bands(canvas, mesh, at, samples, many, levels, band_colors);
   }
 
   if (options.mesh) {
     canvas.set_color(grey(0.15), 0.55);
     canvas.set_line(0.6);
     for (const SolidElement& e : mesh.solids) {
-      std::vector<Point> corners;
-      for (const int n : e.nodes) corners.push_back(at[n]);
-      canvas.polygon(corners);
+      for (int k = 0; k < element_family(e).edge_count(); ++k) add_edge_path(cr, e, k, at);
     }
     cairo_stroke(cr);
   }
   canvas.set_color(colors::black);
   canvas.set_line(1.2);
-  stroke_edges(cr, outline, at);
+  stroke_edges(cr, mesh, outline, at);
   canvas.set_line(1.0);
   draw_gap_markers(canvas, mesh, at, rest, strip);
   const std::string length_unit = with_unit("", Quantity::length, mesh.units);
@@ -471,6 +541,7 @@ void draw_contour_plot(const Canvas& canvas, const PlotResult& result, const Con
 
   // ---- Gap legend with counts.
   if (!mesh.gaps.empty()) draw_gap_legend(canvas, mesh, {panel.x, y});
+  return legend;
 }
 
 }  // namespace saasgaps::plot

@@ -8,6 +8,7 @@
 #include "plot/draw/chart.hpp"
 #include "plot/draw/figure.hpp"
 #include "plot/draw/number_format.hpp"
+#include "plot/result/element_field.hpp"
 #include "plot/result/field.hpp"
 #include "plot/result/point_locator.hpp"
 
@@ -96,9 +97,7 @@ DataTable draw_path_plot(const Canvas& canvas, const PlotResult& result, const s
   const ResultMesh& mesh = result.mesh();
   if (mesh.solids.empty()) throw std::invalid_argument("the result has no solid elements to sample");
   const PointLocator locator(mesh);
-  const bool per_element = field.location == FieldLocation::element;
-  const std::vector<double> element = per_element ? element_values(result, mesh, field, centre) : std::vector<double>{};
-  const std::vector<double> nodal = per_element ? std::vector<double>{} : nodal_values(result, mesh, field);
+  const ElementField values(result, field, centre);
 
   Series curve;
   curve.name = field_title(field, mesh);
@@ -112,12 +111,7 @@ DataTable draw_path_plot(const Canvas& canvas, const PlotResult& result, const s
     int id = 0;
     if (const std::optional<Location> at = locator.locate(p.r, p.z)) {
       id = mesh.solids[at->element].id;
-      if (per_element) {
-        value = element[at->element];
-      } else {
-        value = 0.0;
-        for (int c = 0; c < 3; ++c) value += at->weights[c] * nodal[at->nodes[c]];
-      }
+      value = values.value(*at);
       low = std::min(low, value);
       high = std::max(high, value);
     }
@@ -135,7 +129,7 @@ DataTable draw_path_plot(const Canvas& canvas, const PlotResult& result, const s
   const std::string label = field_label(field, mesh, centre);
   const Rect area = draw_header(canvas, mesh.title.empty() ? "SAASGAPS result" : mesh.title,
                                 label + " " + unit_phrase(field.quantity, mesh.units) + ", along " + route + "\n" +
-                                    (per_element ? "element values" : "interpolated in the elements") + " at " +
+                                    source_phrase(values.source()) + " interpolated in the elements at " +
                                     std::to_string(samples.size()) + " points of the undeformed mesh \u2014 " +
                                     run_summary(mesh.status, mesh.iterations));
   const double length = samples.back().s;

@@ -1,11 +1,11 @@
 #pragma once
 /// A field along a path through the mesh: a line plot of the value at evenly spaced points of a
 /// polyline (r0, z0) -> (r1, z1) -> .., against the distance s along it. Each point takes the value
-/// of the solid element that holds it (point_locator.hpp), in the undeformed mesh:
-///   element fields (stresses, strains): the element's own value, not the nodal average, so the
-///     curve steps at element edges and its peaks are the element values the solver computed;
-///   node fields (temperature, displacements): interpolated linearly in the element's triangle, as
-///     the contour plot draws them.
+/// of the field inside the solid element that holds it (element_field.hpp: stresses from the
+/// recovered nodal stresses, each element from its own material's side; other element fields from
+/// nodal averages; node fields from the nodes), interpolated with the element's shape functions in
+/// the undeformed mesh, so the value at a point is the same whichever element holds it (on an
+/// edge between materials: the first element's side).
 /// Points outside every solid element (a gap, a hole, beyond the body) have no value: the curve
 /// breaks there.
 

@@ -22,6 +22,7 @@ std::string_view quantity_name(Quantity q) {
     case Quantity::temperature: return "temperature";
     case Quantity::heat_flux: return "heat flux";
     case Quantity::percent: return "percent";
+    case Quantity::energy_error: return "energy norm";
   }
   return "?";
 }
@@ -61,6 +62,8 @@ const std::vector<FieldInfo>& fields() {
       {"gamma_radial_hoop", FieldLocation::element, "", "", "Radial-hoop shear strain \u03b3rad,hoop (engineering)",
        strain_units, "", radial_hoop},
       {"heat_flux", FieldLocation::element, "", "Heat flux magnitude |q|", "Heat flux magnitude |q|", Quantity::heat_flux},
+      {"error", FieldLocation::element, "error", "Estimated error of the stresses", "Estimated error of the stresses",
+       Quantity::energy_error, "", none, true},
       {"temperature", FieldLocation::node, "T", "Temperature", "Temperature", Quantity::temperature},
       {"displacement", FieldLocation::node, "", "Displacement magnitude |u|", "Displacement magnitude |u|",
        length_units},
@@ -71,6 +74,16 @@ const std::vector<FieldInfo>& fields() {
        "Contact pressure across the gaps", stress_units},
   };
   return all;
+}
+
+const char* source_phrase(FieldSource source) {
+  switch (source) {
+    case FieldSource::recovered: return "recovered stresses";
+    case FieldSource::averaged: return "nodal averages of element values";
+    case FieldSource::nodal: return "nodal values";
+    case FieldSource::element: return "one value per element";
+  }
+  return "";
 }
 
 std::string field_names() {
@@ -135,6 +148,7 @@ std::string unit_name(Quantity quantity, const UnitNames& units) {
     case Quantity::heat_flux: return "";  // power / length^2: the model names no unit of power
     case Quantity::percent: return "%";
     case Quantity::strain: return "";
+    case Quantity::energy_error: return "";  // the square root of an energy: no unit the model names
   }
   return "";
 }
@@ -146,6 +160,7 @@ std::string with_unit(std::string_view name, Quantity quantity, const UnitNames&
 
 std::string unit_phrase(Quantity quantity, const UnitNames& units) {
   if (quantity == Quantity::strain) return "strain (dimensionless)";
+  if (quantity == Quantity::energy_error) return "in the energy norm (\u221aenergy)";
   const std::string unit = unit_name(quantity, units);
   if (!unit.empty()) return "in " + unit;
   return "in the model's " + std::string(quantity_name(quantity)) + " units";
@@ -168,6 +183,14 @@ std::vector<double> element_values(const PlotResult& result, const ResultMesh& m
     std::vector<double> values;
     for (std::size_t e = 0; e < q[0].size(); ++e) values.push_back(std::hypot(q[0][e], q[1][e]));
     return values;
+  }
+  if (field.quantity == Quantity::energy_error) {
+    try {
+      return result.element_member(field.key);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("'error' is the estimated error of a solved result (docs/recovery.md), and this "
+                                  "result has none (written before the estimate): " + std::string(e.what()));
+    }
   }
   std::vector<std::vector<double>> stored;
   for (const std::string_view key : element_keys(field)) stored.push_back(result.element_member(key));

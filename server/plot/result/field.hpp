@@ -41,7 +41,7 @@ enum class FieldLocation {
 };
 
 /// What a field measures, for its unit.
-enum class Quantity { stress, strain, length, temperature, heat_flux, percent };
+enum class Quantity { stress, strain, length, temperature, heat_flux, percent, energy_error };
 
 /// A component of the in-plane tensor in polar axes about a centre (see above); none: as stored.
 enum class Cylindrical { none, radial, hoop, radial_hoop };
@@ -60,7 +60,19 @@ struct FieldInfo {
   std::string_view plane_meaning = "";
   /// Derived from the stored in-plane stress (Quantity::stress) or strain by rotation about a centre.
   Cylindrical cylindrical = Cylindrical::none;
+  /// Drawn and probed as each element's own value, constant in the element (FieldSource::element),
+  /// not averaged to the nodes: `error`, whose values belong to elements, not to points.
+  bool constant_per_element = false;
 };
+
+/// Where the values a picture or a probe interpolates inside the elements come from
+/// (element_field.hpp): the recovered nodal stresses, nodal averages of element values, or the
+/// nodes' own values.
+enum class FieldSource { recovered, averaged, nodal, element };
+
+/// "recovered stresses", "nodal averages of element values", "nodal values" or "one value per
+/// element", for subtitles.
+const char* source_phrase(FieldSource source);
 
 /// Every field, element fields first.
 const std::vector<FieldInfo>& fields();

@@ -4,7 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "plot/draw/contour_bands.hpp"
+#include "plot/result/element_map.hpp"
+
 
 namespace saasgaps::plot {
 
@@ -17,11 +18,22 @@ struct Box {
 Box element_box(const ResultMesh& mesh, const SolidElement& e) {
   Box b{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
         -std::numeric_limits<double>::max()};
-  for (const int n : e.nodes) {
-    b.r0 = std::min(b.r0, mesh.nodes[n].r);
-    b.z0 = std::min(b.z0, mesh.nodes[n].z);
-    b.r1 = std::max(b.r1, mesh.nodes[n].r);
-    b.z1 = std::max(b.z1, mesh.nodes[n].z);
+  const auto include = [&b](double r, double z) {
+    b.r0 = std::min(b.r0, r);
+    b.z0 = std::min(b.z0, z);
+    b.r1 = std::max(b.r1, r);
+    b.z1 = std::max(b.z1, z);
+  };
+  const std::size_t count = e.nodes.size();
+  const bool quadratic = count == 6 || count == 8;
+  for (std::size_t k = 0; k < count; ++k) {
+    const MeshNode& p = mesh.nodes[e.nodes[k]];
+    include(p.r, p.z);
+    if (quadratic && k % 2 == 1) {  // a mid-side node: its curve's control point
+      const MeshNode& a = mesh.nodes[e.nodes[k - 1]];
+      const MeshNode& c = mesh.nodes[e.nodes[(k + 1) % count]];
+      include(2.0 * p.r - (a.r + c.r) / 2.0, 2.0 * p.z - (a.z + c.z) / 2.0);
+    }
   }
   return b;
 }
@@ -69,35 +81,26 @@ PointLocator::PointLocator(const ResultMesh& mesh) : mesh_(mesh) {
   }
 }
 
-std::optional<Location> PointLocator::locate(double r, double z) const {
-  if (elements_.empty()) return std::nullopt;
+std::vector<Location> PointLocator::locate_all(double r, double z) const {
+  std::vector<Location> found;
+  if (elements_.empty()) return found;
   const double fr = (r - r0_) / cell_r_, fz = (z - z0_) / cell_z_;
   // A point a hair outside the box (round-off on the boundary) still looks in the edge bucket.
-  if (fr < -1e-9 || fz < -1e-9 || fr > columns_ + 1e-9 || fz > rows_ + 1e-9) return std::nullopt;
+  if (fr < -1e-9 || fz < -1e-9 || fr > columns_ + 1e-9 || fz > rows_ + 1e-9) return found;
   const int i = std::clamp(static_cast<int>(fr), 0, columns_ - 1);
   const int j = std::clamp(static_cast<int>(fz), 0, rows_ - 1);
   const std::size_t bucket = static_cast<std::size_t>(j) * columns_ + i;
   for (std::size_t k = first_[bucket]; k < first_[bucket + 1]; ++k) {
-    const SolidElement& e = mesh_.solids[elements_[k]];
-    std::vector<ValuePoint> corners;
-    for (const int n : e.nodes) corners.push_back({mesh_.nodes[n].r, mesh_.nodes[n].z, static_cast<double>(n)});
-    for (const ValuePolygon& t : triangulate(corners)) {
-      // Barycentric coordinates of (r, z) in triangle a b c.
-      const ValuePoint &a = t[0], &b = t[1], &c = t[2];
-      const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-      if (det == 0.0) continue;
-      const double wb = ((r - a.x) * (c.y - a.y) - (c.x - a.x) * (z - a.y)) / det;
-      const double wc = ((b.x - a.x) * (z - a.y) - (r - a.x) * (b.y - a.y)) / det;
-      const double wa = 1.0 - wb - wc;
-      constexpr double slack = -1e-9;  // a point on an edge belongs to both neighbours
-      if (wa >= slack && wb >= slack && wc >= slack) {
-        return Location{elements_[k],
-                        {static_cast<int>(a.v), static_cast<int>(b.v), static_cast<int>(c.v)},
-                        {wa, wb, wc}};
-      }
-    }
+    if (const auto at = inverse_map(mesh_, mesh_.solids[elements_[k]], r, z)) found.push_back({elements_[k], *at});
   }
-  return std::nullopt;
+  std::sort(found.begin(), found.end(), [](const Location& a, const Location& b) { return a.element < b.element; });
+  return found;
+}
+
+std::optional<Location> PointLocator::locate(double r, double z) const {
+  std::vector<Location> all = locate_all(r, z);
+  if (all.empty()) return std::nullopt;
+  return all.front();
 }
 
 }  // namespace saasgaps::plot

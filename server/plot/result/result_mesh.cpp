@@ -23,19 +23,20 @@ int node_id(const json& n) { return n.get<int>(); }
 int node_id(int n) { return n; }
 
 /// Node ids (a JSON array of them, or ints) as indices into the result's nodes.
+int node_index(int node, const std::unordered_map<int, int>& index, const char* what, int id) {
+  const auto found = index.find(node);
+  if (found == index.end()) {
+    throw std::invalid_argument(std::string(what) + " " + std::to_string(id) + " refers to node " +
+                                std::to_string(node) + ", which is not in the result's nodes");
+  }
+  return found->second;
+}
+
 template <class Ids>
 std::vector<int> node_indices(const Ids& ids, const std::unordered_map<int, int>& index, const char* what, int id,
                               std::size_t outline = 0) {
   std::vector<int> nodes;
-  for (const auto& n : ids) {
-    const int node = node_id(n);
-    const auto found = index.find(node);
-    if (found == index.end()) {
-      throw std::invalid_argument(std::string(what) + " " + std::to_string(id) + " refers to node " +
-                                  std::to_string(node) + ", which is not in the result's nodes");
-    }
-    nodes.push_back(found->second);
-  }
+  for (const auto& n : ids) nodes.push_back(node_index(node_id(n), index, what, id));
   if (nodes.size() != outline && nodes.size() != 3 && nodes.size() != 4) {
     throw std::invalid_argument(std::string(what) + " " + std::to_string(id) + " has " +
                                 std::to_string(nodes.size()) + " nodes; 3 or 4 expected");
@@ -43,11 +44,10 @@ std::vector<int> node_indices(const Ids& ids, const std::unordered_map<int, int>
   return nodes;
 }
 
-/// A solid element's node indices as its outline: counter-clockwise around the boundary, each
-/// edge's mid-side node between its corners (a curved edge drawn as two segments); a quad9's
-/// centre node is not on the outline.
+/// A solid element with its node indices as its outline: counter-clockwise around the boundary, each
+/// edge's mid-side node between its corners; a quad9's centre node is kept apart.
 template <class Ids>
-std::vector<int> outline_indices(const Ids& ids, const std::unordered_map<int, int>& index, int id) {
+SolidElement solid_element(const Ids& ids, const std::unordered_map<int, int>& index, int id, int material) {
   std::vector<int> nodes;
   for (const auto& n : ids) nodes.push_back(node_id(n));
   const std::optional<ElementType> type = default_element_type(static_cast<int>(nodes.size()));
@@ -59,7 +59,9 @@ std::vector<int> outline_indices(const Ids& ids, const std::unordered_map<int, i
   for (const EdgeNodes& edge : family(*type).edges) {
     for (int k = 0; k + 1 < edge.count; ++k) outline.push_back(nodes[static_cast<std::size_t>(edge.node[static_cast<std::size_t>(k)])]);
   }
-  return node_indices(outline, index, "element", id, outline.size());
+  SolidElement element{id, material, node_indices(outline, index, "element", id, outline.size())};
+  if (*type == ElementType::quad9) element.centre = node_index(nodes[8], index, "element", id);
+  return element;
 }
 
 }  // namespace
@@ -117,12 +119,16 @@ ResultMesh ResultMesh::from_result(const json& result) {
     for (const json& n : result.at("nodes")) {
       MeshNode node{n.at("id").get<int>(), n.at("r").get<double>(), n.at("z").get<double>(),
                     n.value("T", 0.0),     n.at("u_r").get<double>(), n.at("u_z").get<double>()};
+      constexpr std::array<const char*, 4> components{"sigma_r", "sigma_z", "tau_rz", "sigma_theta"};
+      for (std::size_t k = 0; k < components.size(); ++k) {
+        if (const auto v = n.find(components[k]); v != n.end() && v->is_number()) node.stress[k] = v->get<double>();
+      }
       index.emplace(node.id, static_cast<int>(mesh.nodes.size()));
       mesh.nodes.push_back(node);
     }
     for (const json& e : result.at("elements")) {
       const int id = e.at("id").get<int>();
-      mesh.solids.push_back({id, e.value("material", 0), outline_indices(e.at("nodes"), index, id)});
+      mesh.solids.push_back(solid_element(e.at("nodes"), index, id, e.value("material", 0)));
     }
     read_gaps(result, index, mesh);
     return mesh;
@@ -145,7 +151,8 @@ ResultMesh ResultMesh::from_arrays(const io::ResultArrays& result) {
     mesh.nodes.reserve(nodes.id.size());
     for (std::size_t n = 0; n < nodes.id.size(); ++n) {
       index.emplace(nodes.id[n], static_cast<int>(n));
-      mesh.nodes.push_back({nodes.id[n], nodes.r[n], nodes.z[n], nodes.T[n], nodes.u_r[n], nodes.u_z[n]});
+      mesh.nodes.push_back({nodes.id[n], nodes.r[n], nodes.z[n], nodes.T[n], nodes.u_r[n], nodes.u_z[n],
+                            {nodes.stress[0][n], nodes.stress[1][n], nodes.stress[2][n], nodes.stress[3][n]}});
     }
     if (!result.elements) throw std::invalid_argument("malformed result document: /elements is missing or not an array");
     const io::ResultElements& elements = *result.elements;
@@ -153,8 +160,7 @@ ResultMesh ResultMesh::from_arrays(const io::ResultArrays& result) {
     for (std::size_t e = 0; e < elements.size(); ++e) {
       const auto first = elements.node_ids.begin() + static_cast<std::ptrdiff_t>(elements.first_node[e]);
       const auto last = elements.node_ids.begin() + static_cast<std::ptrdiff_t>(elements.first_node[e + 1]);
-      mesh.solids.push_back({elements.id[e], elements.material[e],
-                             outline_indices(std::vector<int>(first, last), index, elements.id[e])});
+      mesh.solids.push_back(solid_element(std::vector<int>(first, last), index, elements.id[e], elements.material[e]));
     }
     read_gaps(result.document, index, mesh);
     return mesh;

@@ -4,6 +4,7 @@
 /// Works from the JSON alone, so that any stored result can be plotted without the solver.
 
 #include <array>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -15,11 +16,20 @@
 
 namespace saasgaps::plot {
 
+/// A node without recovered stresses (see MeshNode::stress).
+inline constexpr std::array<double, 4> no_stress{
+    std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
+    std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+
 struct MeshNode {
   int id = 0;
   double r = 0.0, z = 0.0;      ///< undeformed coordinates ((x, y) in plane analyses)
   double temperature = 0.0;
   double u_r = 0.0, u_z = 0.0;  ///< displacement
+  /// The recovered stress (docs/results.md, nodes[]): sigma_r, sigma_z, tau_rz, sigma_theta; NaN
+  /// where the node has none (no solid element, or a result written before recovery). Where
+  /// materials meet, the mean of the sides (each side: RecoveredStress, element_field.hpp).
+  std::array<double, 4> stress = no_stress;
 };
 
 struct SolidElement {
@@ -28,6 +38,7 @@ struct SolidElement {
   /// Node indices of the outline, counter-clockwise: the corners of a linear element; for a
   /// quadratic one corner, mid-side, corner, ... (6 or 8; a quad9's centre node is left out).
   std::vector<int> nodes;
+  int centre = -1;  ///< a quad9's centre node (index); -1 for the other families
 };
 
 enum class GapState { open, partial, closed, overclosed };

@@ -71,6 +71,7 @@ void HttpApi::install(httplib::Server& server) {
   server.Delete(R"(/v1/jobs/(\d+))", handler(*this, &HttpApi::remove));
   server.Get(R"(/v1/jobs/(\d+)/result\.vtu)", handler(results_, &ResultRoutes::vtu));
   server.Get(R"(/v1/jobs/(\d+)/plots/(\w+)\.(png|svg|csv))", handler(results_, &ResultRoutes::picture));
+  server.Get(R"(/v1/jobs/(\d+)/probe)", handler(results_, &ResultRoutes::probe));
   for (const web::Asset& asset : web::assets()) {
     server.Get(std::string(asset.path), [asset](const httplib::Request&, httplib::Response& res) {
       res.set_content(std::string(asset.body), std::string(asset.content_type));
@@ -168,6 +169,7 @@ void HttpApi::show(const httplib::Request& req, httplib::Response& res) {
   const double elapsed = job.started_at ? io::seconds_since(*job.started_at, std::chrono::system_clock::now()) : 0.0;
   body["progress"] = io::job_progress(plan, row, job.state == JobState::running, job.state == JobState::converged,
                                   job.max_iterations, elapsed);
+  body["error_estimate"] = results_.error_estimate(job);
   send_json(res, 200, body);
 }
 

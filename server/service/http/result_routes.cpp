@@ -13,7 +13,9 @@
 #include "io/model/model_reader.hpp"
 #include "io/results/result_arrays.hpp"
 #include "io/results/vtu_writer.hpp"
+#include "plot/pictures/path_plot.hpp"
 #include "plot/pictures/plot_request.hpp"
+#include "plot/result/point_probe.hpp"
 #include "service/http/entity_tags.hpp"
 #include "service/http/job_path.hpp"
 #include "service/http/job_views.hpp"
@@ -156,6 +158,67 @@ void ResultRoutes::picture(const httplib::Request& req, httplib::Response& res) 
     throw HttpError(409, "Conflict", "job " + std::to_string(id) + ": " + e.what());
   }
   res.set_content(body, table ? "text/csv; charset=utf-8" : plot::media_type(request.format));
+}
+
+json ResultRoutes::error_estimate(const JobRecord& job) {
+  // A finished run that wrote a result: converged, not converged, or cancelled at an iteration.
+  if (!job.finished_at || job.state == JobState::failed) return nullptr;
+  const std::string finish = *job.finished_at + "/" + std::to_string(job.attempts);
+  {
+    std::lock_guard lock(estimates_mutex_);
+    if (const auto known = estimates_.find(job.id); known != estimates_.end() && known->second.first == finish) {
+      return known->second.second;
+    }
+  }
+  json estimate = nullptr;
+  try {
+    const io::ResultArrays result = stored_result_arrays(store_, job.id, {.mesh = false, .element_keys = {}});
+    if (const auto found = result.document.find("error_estimate"); found != result.document.end() && found->is_object()) {
+      estimate = *found;
+    }
+  } catch (const HttpError&) {
+    return nullptr;  // no result (deleted meanwhile) or a damaged one: the job resource still answers
+  }
+  std::lock_guard lock(estimates_mutex_);
+  estimates_[job.id] = {finish, estimate};
+  return estimate;
+}
+
+void ResultRoutes::probe(const httplib::Request& req, httplib::Response& res) {
+  const std::int64_t id = job_in_path(req);
+  if (!req.has_param("at")) throw HttpError(400, "Bad Request", "query parameter at is required: the point r,z");
+  plot::PlanePoint at{};
+  std::vector<std::string> fields;
+  try {
+    at = plot::parse_point(req.get_param_value("at"));
+  } catch (const std::invalid_argument& e) {
+    throw HttpError(400, "Bad Request", std::string("query parameter at: ") + e.what());
+  }
+  if (req.has_param("field")) {
+    const std::string list = req.get_param_value("field");
+    for (std::size_t begin = 0; begin <= list.size();) {
+      const std::size_t end = std::min(list.find(',', begin), list.size());
+      if (end > begin) fields.push_back(list.substr(begin, end - begin));
+      begin = end + 1;
+    }
+  }
+  io::ResultSelection selection;
+  try {
+    for (const std::string& key : plot::probe_element_keys(fields)) selection.element_keys.push_back(key);
+  } catch (const std::invalid_argument& e) {
+    throw HttpError(400, "Bad Request", std::string("query parameter field: ") + e.what());
+  }
+  if (not_modified(req, res, result_tag(store_, id, 0, req.target))) return;
+  const plot::PlotResult result(stored_result_arrays(store_, id, selection));
+  try {
+    const plot::Probe probe = plot::probe_point(result, at, fields);
+    send_json(res, 200, plot::probe_json(probe, result.mesh()));
+  } catch (const plot::PointOutsideMesh& e) {
+    throw HttpError(422, "Unprocessable Content", "job " + std::to_string(id) + ": " + e.what());
+  } catch (const std::invalid_argument& e) {
+    // A gap field, or a result without a mesh (a failed run).
+    throw HttpError(409, "Conflict", "job " + std::to_string(id) + ": " + e.what());
+  }
 }
 
 }  // namespace saasgaps::service
