@@ -59,6 +59,14 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
       ->capture_default_str();
   study_cmd->add_flag("--no-cache", study.no_cache, "Solve every point afresh, ignoring and not filling $SAASGAPS_CACHE");
+  study_cmd->add_option("--cache-keep-days", study.cache_keep_days,
+                        "After the study, remove cache entries last used more than DAYS days ago (default: keep)")
+      ->envname("SAASGAPS_CACHE_KEEP_DAYS")
+      ->check(CLI::PositiveNumber);
+  study_cmd->add_option("--cache-max-entries", study.cache_max_entries,
+                        "After the study, keep at most N cache entries, the most recently used (default: all)")
+      ->envname("SAASGAPS_CACHE_MAX_ENTRIES")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1000000000}));
   study_cmd->add_flag("-q,--quiet", study.quiet, "No line per finished point");
 
   std::string validate_path;

@@ -224,9 +224,161 @@ async function showList() {
     }
   });
   await load(false);
+  await loadStudies(view.querySelector("#studies-section"));
   ready("list");
-  const timer = setInterval(() => { if (!more.hidden) return; load(false).catch(() => {}); }, 3000);
+  const timer = setInterval(() => {
+    loadStudies(view.querySelector("#studies-section")).catch(() => {});
+    if (!more.hidden) return;
+    load(false).catch(() => {});
+  }, 3000);
   closeJobView = () => clearInterval(timer);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Studies (docs/studies.md): the list under the jobs, and a page per study with its points and
+// each output drawn against each parameter.
+
+// The studies table (GET /v1/studies), shown when there is a study.
+async function loadStudies(section) {
+  const { studies } = await api("/v1/studies");
+  section.hidden = studies.length === 0;
+  const tbody = section.querySelector("tbody");
+  tbody.replaceChildren();
+  for (const study of studies) {
+    const row = tbody.insertRow();
+    const link = document.createElement("a");
+    link.href = `#/studies/${study.id}`;
+    link.textContent = study.id;
+    row.insertCell().append(link);
+    cell(row, study.title);
+    cell(row, String(study.points_total));
+    cell(row, String(study.finished));
+    cell(row, String(study.converged));
+    cell(row, when(study.created_at));
+  }
+}
+
+// One output against one parameter, a dot per point that has the output. With more parameters
+// (a grid), the points that share the other parameters' values are joined by a line, one colour
+// each. A parameter whose values are not numbers (a mesh file) is spread evenly in the order of
+// its values.
+function studyPlotSvg(study, parameter, output) {
+  const W = 420, H = 280, left = 76, right = 30, top = 30, bottom = 44;
+  const { svg, add } = svgCanvas(W, H);
+  // Tick labels short enough for the margins: 4 digits, or 3 and an exponent when large or small.
+  const tick = v => (v !== 0 && (Math.abs(v) >= 1e5 || Math.abs(v) < 1e-2) ? v.toExponential(2)
+                                                                          : Number(v.toPrecision(4)).toString());
+  svg.dataset.parameter = parameter;
+  svg.dataset.output = output;
+  const points = study.points.filter(p => typeof (p.outputs || {})[output] === "number");
+  const values = [...new Set(study.points.map(p => JSON.stringify(p.parameters[parameter])))].map(v => JSON.parse(v));
+  const numeric = values.every(v => typeof v === "number");
+  const xOf = v => (numeric ? v : values.findIndex(w => JSON.stringify(w) === JSON.stringify(v)));
+  const xs = values.map(xOf), ys = points.map(p => p.outputs[output]);
+  const x0 = Math.min(...xs), x1 = Math.max(...xs), xSpan = x1 - x0 || 1;
+  const y0 = Math.min(...ys, ...(ys.length ? [] : [0])), y1 = Math.max(...ys, ...(ys.length ? [] : [1]));
+  const ySpan = y1 - y0 || Math.abs(y1) || 1;
+  const x = v => left + (W - left - right) * (xs.length > 1 ? (xOf(v) - x0) / xSpan : 0.5);
+  const y = v => H - bottom - (H - top - bottom) * (v - y0 + (y1 === y0 ? ySpan / 2 : 0)) / ySpan;
+  add("text", { x: 8, y: 18, class: "title" }, `${output} against ${parameter}`);
+  add("line", { x1: left, y1: H - bottom, x2: W - right, y2: H - bottom, stroke: "#999" });
+  add("line", { x1: left, y1: top, x2: left, y2: H - bottom, stroke: "#999" });
+  for (const v of y1 === y0 ? [y0] : [y0, y1]) {
+    add("text", { x: left - 6, y: y(v) + 4, "text-anchor": "end" }, tick(v));
+  }
+  for (const v of values) {
+    add("text", { x: x(v), y: H - bottom + 16, "text-anchor": "middle" }, typeof v === "number" ? tick(v) : String(v));
+  }
+  add("text", { x: (left + W - right) / 2, y: H - 6, "text-anchor": "middle" }, parameter);
+  // One series per combination of the other parameters' values.
+  const others = Object.keys(study.points[0] ? study.points[0].parameters : {}).filter(n => n !== parameter);
+  const series = new Map();
+  for (const p of points) {
+    const key = others.map(n => `${n} = ${JSON.stringify(p.parameters[n])}`).join(", ");
+    if (!series.has(key)) series.set(key, []);
+    series.get(key).push(p);
+  }
+  const colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"];
+  [...series.entries()].forEach(([key, members], k) => {
+    const colour = colours[k % colours.length];
+    members.sort((a, b) => xOf(a.parameters[parameter]) - xOf(b.parameters[parameter]));
+    if (members.length > 1) {
+      add("polyline", { points: members.map(p => `${x(p.parameters[parameter])},${y(p.outputs[output])}`).join(" "),
+                        fill: "none", stroke: colour, "stroke-width": 2, "data-series": key });
+    }
+    for (const p of members) {
+      add("circle", { cx: x(p.parameters[parameter]), cy: y(p.outputs[output]), r: 3.5, fill: colour,
+                      "data-point": p.index, "data-value": p.outputs[output] });
+    }
+    if (key) add("text", { x: left + 8, y: top + 14 * (k + 1), fill: colour }, key);
+  });
+  return svg;
+}
+
+async function showStudy(id) {
+  view.replaceChildren(document.getElementById("study-view").content.cloneNode(true));
+  let timer = null, closed = false;
+  async function draw() {
+    const study = await api(`/v1/studies/${id}`);
+    if (closed) return false;
+    view.querySelector("#study-title").textContent = study.title || `study ${id}`;
+    view.querySelector("#study-id").textContent = study.id;
+    const status = view.querySelector("#study-status");
+    status.textContent = study.status;
+    status.className = "state " + study.status;
+    view.querySelector("#study-created").textContent = when(study.created_at);
+    view.querySelector("#study-message").textContent = study.message;
+    const parameters = Object.keys(study.points[0] ? study.points[0].parameters : {});
+    const outputs = [...new Set(study.points.flatMap(p => Object.keys(p.outputs || {})))];
+    const table = view.querySelector("#study-points");
+    const head = table.tHead;
+    head.replaceChildren();
+    const headings = head.insertRow();
+    for (const h of ["point", ...parameters, "status", "cached", "job", ...outputs, "message"]) {
+      headings.appendChild(document.createElement("th")).textContent = h;
+    }
+    const body = table.tBodies[0];
+    body.replaceChildren();
+    for (const p of study.points) {
+      const row = body.insertRow();
+      cell(row, String(p.index));
+      for (const n of parameters) {
+        const v = p.parameters[n];
+        cell(row, typeof v === "number" ? Number(v.toPrecision(6)).toString() : JSON.stringify(v));
+      }
+      const state = row.insertCell().appendChild(document.createElement("span"));
+      state.textContent = p.status;
+      state.className = "state " + p.status;
+      cell(row, p.cached ? "yes" : "");
+      const jobCell = row.insertCell();
+      if (p.job !== null && p.job !== undefined) {
+        const link = jobCell.appendChild(document.createElement("a"));
+        link.href = `#/jobs/${p.job}`;
+        link.textContent = p.job;
+      }
+      for (const o of outputs) {
+        const v = (p.outputs || {})[o];
+        cell(row, typeof v === "number" ? Number(v.toPrecision(6)).toString() : "");
+      }
+      cell(row, p.message || "", p.status === "failed" ? "reason" : "");
+    }
+    const plots = view.querySelector("#study-plots");
+    plots.replaceChildren();
+    for (const o of outputs) {
+      for (const n of parameters) plots.appendChild(document.createElement("figure")).append(studyPlotSvg(study, n, o));
+    }
+    return study.status === "running";
+  }
+  const again = async () => {
+    try {
+      if (await draw()) timer = setTimeout(again, 2000);
+    } catch (error) {
+      view.querySelector("#study-message").textContent = error.message;
+    }
+  };
+  if (await draw()) timer = setTimeout(again, 2000);
+  ready("study");
+  closeJobView = () => { closed = true; clearTimeout(timer); };
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -249,10 +401,9 @@ function rowForces(row) {
     .concat((row.pair_forces || []).map(p => [`pair ${p.surfaces.join(" / ")}`, p.fr, p.fz]));
 }
 
-// Each force (fz, or fr where fz stays 0) against the increments of the load path, one polyline
-// per support set or pair (an SVG drawn from the rows, so it grows while the job runs).
-function forceSvg(history) {
-  const W = 520, H = 300, left = 70, right = 12, top = 28, bottom = 40;
+// An empty SVG of W x H user units that scales with its box, and add(tag, attributes, text) that
+// appends an element to it and returns the element: what every plot drawn here starts from.
+function svgCanvas(W, H) {
   const ns = "http://www.w3.org/2000/svg";
   const svg = document.createElementNS(ns, "svg");
   svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
@@ -263,6 +414,14 @@ function forceSvg(history) {
     if (text !== undefined) e.textContent = text;
     return e;
   };
+  return { svg, add };
+}
+
+// Each force (fz, or fr where fz stays 0) against the increments of the load path, one polyline
+// per support set or pair (an SVG drawn from the rows, so it grows while the job runs).
+function forceSvg(history) {
+  const W = 520, H = 300, left = 70, right = 12, top = 28, bottom = 40;
+  const { svg, add } = svgCanvas(W, H);
   const ends = history.filter(r => rowForces(r).length > 0);
   const series = new Map();  // name -> [[x, value]]
   ends.forEach((r, i) => {
@@ -341,16 +500,7 @@ function columnsFor(row) {
 // of bars that reads as such, not the classic plot's single dot of closures.
 function exactConvergenceSvg(history) {
   const W = 520, H = 330, left = 62, right = 12;
-  const ns = "http://www.w3.org/2000/svg";
-  const svg = document.createElementNS(ns, "svg");
-  svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
-  svg.setAttribute("role", "img");
-  const add = (tag, attributes, text) => {
-    const e = svg.appendChild(document.createElementNS(ns, tag));
-    for (const [key, value] of Object.entries(attributes)) e.setAttribute(key, String(value));
-    if (text !== undefined) e.textContent = text;
-    return e;
-  };
+  const { svg, add } = svgCanvas(W, H);
   const label = r => ("step" in r ? `${r.step}.${r.increment ?? ""}` : String(r.iteration));
   const slot = (W - left - right) / history.length;
   const middle = i => left + slot * (i + 0.5);
@@ -816,8 +966,9 @@ async function route() {
   closeJobView();
   closeJobView = () => {};
   const match = location.hash.match(/^#\/jobs\/(\d+)/);
+  const study = location.hash.match(/^#\/studies\/(\d+)/);
   try {
-    if (match) await showJob(match[1]); else await showList();
+    if (match) await showJob(match[1]); else if (study) await showStudy(study[1]); else await showList();
   } catch (error) {
     view.textContent = error.message;
   }

@@ -57,6 +57,8 @@ def broken(doc):
          "/adapt/max_cycles"),
         ("adapt max_nodes too small", edit(lambda d: d.update({"adapt": {"target_error": 0.01, "max_nodes": 10}})),
          "/adapt/max_nodes"),
+        ("mesh parameter not a number", edit(lambda d: d.update({"mesh_parameters": {"d": "wide"}})),
+         "/mesh_parameters/d"),
         ("temperature file without path",
          edit(lambda d: d["loads"]["temperatures"].update({"file": {"field": "T"}})), "/loads/temperatures/file"),
     ]

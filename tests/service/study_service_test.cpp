@@ -6,8 +6,11 @@
 
 #include <chrono>
 #include <map>
+#include <string>
+#include <vector>
 #include <thread>
 
+#include "service/job_client.hpp"
 #include "service/long_job_model.hpp"
 #include "service/server_process.hpp"
 #include "service/service_fixture.hpp"
@@ -160,6 +163,97 @@ TEST_F(StudyService, CancelAndResumeAStudyWithItsProgressAsEvents) {
   const json done = get_json(client, "/v1/studies/" + std::to_string(id));
   EXPECT_EQ(done["status"], "converged");
   EXPECT_EQ(points_with(done, "converged"), 5u);
+}
+
+/// POSTs a study of an assembly with its mesh file as multipart/form-data; returns the answer.
+httplib::Result post_assembly_study(httplib::Client& client, const json& study, const std::string& mesh_name,
+                                    const std::string& mesh) {
+  return client.Post("/v1/studies", httplib::MultipartFormDataItems{{"study", study.dump(), "", "application/json"},
+                                                                   {"mesh", mesh, mesh_name, "text/plain"}});
+}
+
+/// The README's study of the press fit's push-out force (schemas/examples/studies), its .geo named
+/// as uploaded.
+json push_out_study() {
+  json study = json::parse(example_text("studies/press-fit-push-out.study.json"));
+  study["assembly"]["mesh"] = "press-fit-push-out.geo";
+  return study;
+}
+
+/// A study of an assembly through the service: each point imported from the uploaded .geo with its
+/// parameter, then run as a job like any point (cancel and resume of the whole study, the push-out
+/// force rising with the interference as `saasgaps study` gives it); again, answered from the cache.
+TEST_F(StudyService, AnAssemblyStudyImportsEachPointCancelsResumesAndIsCachedTheSecondTime) {
+  ServerProcess server(database(), {"--workers", "1"});
+  httplib::Client client = server.client();
+  const std::string geo = example_text("assemblies/press-fit-push-out.geo");
+  const httplib::Result accepted = post_assembly_study(client, push_out_study(), "press-fit-push-out.geo", geo);
+  ASSERT_TRUE(accepted);
+  ASSERT_EQ(accepted->status, 202) << accepted->body;
+  const std::int64_t id = json::parse(accepted->body)["id"];
+  wait_for_study(client, id, [](const json& s) { return points_with(s, "running") >= 1 || finished(s); });
+  ASSERT_EQ(client.Post("/v1/studies/" + std::to_string(id) + "/cancel", "", "application/json")->status, 202);
+  const json cancelled = wait_for_study(client, id, finished);
+  EXPECT_EQ(cancelled["status"], "cancelled") << cancelled.dump();
+  EXPECT_GE(points_with(cancelled, "cancelled"), 2u);
+  ASSERT_EQ(client.Post("/v1/studies/" + std::to_string(id) + "/resume", "", "application/json")->status, 202);
+  const json done = wait_for_study(client, id, finished);
+  ASSERT_EQ(done["status"], "converged") << done.dump();
+  std::vector<double> force;
+  for (const json& p : done["points"]) force.push_back(p["outputs"]["push_out_force"]);
+  ASSERT_EQ(force.size(), 3u);
+  EXPECT_LT(force[0], force[1]);
+  EXPECT_LT(force[1], force[2]);
+  EXPECT_NEAR(force[1], 1474.30, 0.01);  // the plain example's (StudyCommand.PushOut...)
+
+  const httplib::Result again = post_assembly_study(client, push_out_study(), "press-fit-push-out.geo", geo);
+  ASSERT_EQ(again->status, 202) << again->body;
+  const json cached = json::parse(again->body);
+  EXPECT_EQ(cached["status"], "converged");
+  EXPECT_EQ(cached["solved"], 0);
+  EXPECT_EQ(cached["cached"], 3);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(cached["points"][i]["outputs"], done["points"][i]["outputs"]);
+}
+
+/// A point of an assembly study whose import fails (a value the model reader refuses, a parameter
+/// the .geo does not declare) fails alone with its parameter named; a study of an assembly sent as
+/// JSON has no mesh to import: 422 at /assembly.
+TEST_F(StudyService, AnAssemblyPointThatDoesNotImportFailsAlone) {
+  ServerProcess server(database(), {"--workers", "2"});
+  httplib::Client client = server.client();
+  json study = json::parse(example_text("studies/press-fit-interference.study.json"));
+  study["sampling"] = "zip";
+  study["parameters"].push_back({{"name", "E"}, {"pointer", "/materials/0/table/0/E"}, {"values", {30e6, -1.0, 30e6}}});
+  const std::string geo = example_text("studies/press-fit-rings.geo");
+  const httplib::Result accepted = post_assembly_study(client, study, "press-fit-rings.geo", geo);
+  ASSERT_EQ(accepted->status, 202) << accepted->body;
+  const json first = json::parse(accepted->body);
+  EXPECT_EQ(first["points"][1]["status"], "failed");
+  EXPECT_NE(first["points"][1]["message"].get<std::string>().find(
+                "parameter \"E\" = -1.0 (/parameters/1/values/1): /materials/0/table/0/E"),
+            std::string::npos)
+      << first["points"][1].dump();
+  const json done = wait_for_study(client, first["id"], finished);
+  EXPECT_EQ(done["status"], "partial") << done.dump();
+  EXPECT_EQ(done["converged"], 2);
+  // Lame's interference pressure is proportional to d: 188.5 and 377.1 psi at 1e-4 and 2e-4 in.
+  EXPECT_NEAR(done["points"][2]["outputs"]["p_mean"].get<double>() / done["points"][0]["outputs"]["p_mean"].get<double>(),
+              2.0, 1e-3);
+
+  study["assembly"]["mesh_parameters"]["wall"] = 1.0;
+  const httplib::Result undeclared = post_assembly_study(client, study, "press-fit-rings.geo", geo);
+  ASSERT_EQ(undeclared->status, 202) << undeclared->body;
+  for (const json& p : json::parse(undeclared->body)["points"]) {
+    EXPECT_EQ(p["status"], "failed");
+    EXPECT_NE(p["message"].get<std::string>().find("/mesh_parameters/wall: the geometry \"press-fit-rings.geo\" "
+                                                   "declares no parameter \"wall\""),
+              std::string::npos)
+        << p.dump();
+  }
+
+  const json as_json = ServiceFixture::problem(client.Post("/v1/studies", study.dump(), "application/json"), 422);
+  ASSERT_EQ(as_json["errors"].size(), 1u) << as_json.dump();
+  EXPECT_EQ(as_json["errors"][0]["pointer"], "/assembly");
 }
 
 }  // namespace

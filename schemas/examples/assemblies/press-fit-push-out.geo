@@ -3,7 +3,10 @@
 // overlaps the outer's bore (r = 20) by the radial interference 0.0025; each body is meshed on its
 // own (quadrilaterals, coarse: the answer is a resultant). press-fit-push-out.assembly.json pairs
 // the two faces as contact surfaces with friction and pushes the inner cylinder out.
-a = 10.0; b = 20.0; c = 30.0; d = 0.0025; L = 19.0;
+// d is a parameter (DefineConstant): studies/press-fit-push-out.study.json sets it through the
+// assembly's /mesh_parameters/d; alone, or from the assembly without mesh_parameters, 0.0025.
+DefineConstant[ d = 0.0025 ];
+a = 10.0; b = 20.0; c = 30.0; L = 19.0;
 lc = 2.0;
 
 Point(1) = {a, 0, 0, lc}; Point(2) = {b + d, 0, 0, lc};

@@ -29,16 +29,6 @@ using nlohmann::json;
 
 namespace {
 
-/// One message line from a ModelError: "pointer: detail; ...".
-std::string issues_text(const ModelError& e) {
-  std::string out;
-  for (const InputIssue& issue : e.issues()) {
-    if (!out.empty()) out += "; ";
-    out += (issue.pointer.empty() ? std::string() : issue.pointer + ": ") + issue.detail;
-  }
-  return out;
-}
-
 class StudyRun {
  public:
   StudyRun(const io::Study& study, std::filesystem::path base, service::ResultCacheFile* cache, bool quiet)
@@ -102,7 +92,7 @@ class StudyRun {
       }
     } catch (const ModelError& e) {
       p.status = "failed";
-      p.message = issues_text(e);
+      p.message = io::point_issues(study_, p.index, e);
       return;
     } catch (const std::exception& e) {
       p.status = "failed";
@@ -157,6 +147,15 @@ int run_study(const StudyOptions& options) {
   run.validate();
   run.run(options.workers);
 
+  if (cache && (options.cache_keep_days > 0.0 || options.cache_max_entries > 0)) {
+    service::ResultCacheFile::Retention rules;
+    if (options.cache_keep_days > 0.0) rules.keep_days = options.cache_keep_days;
+    if (options.cache_max_entries > 0) rules.max_entries = options.cache_max_entries;
+    if (const int evicted = cache->evict(rules); evicted > 0) {
+      std::cerr << "the cache's retention removed " << evicted << (evicted == 1 ? " entry" : " entries") << ", "
+                << cache->size() << " left\n";
+    }
+  }
   const json result = io::study_result_json(study, run.points(), run.solved());
   write_file_atomically(options.result_path, io::json_text(result, 1) + "\n");
   write_file_atomically(csv, io::study_csv(study, run.points()));

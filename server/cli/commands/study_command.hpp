@@ -22,6 +22,9 @@ struct StudyOptions {
   int workers = 1;          ///< points solved at once
   std::size_t max_points = io::default_max_study_points;
   bool no_cache = false;  ///< ignore SAASGAPS_CACHE: solve every point, store nothing
+  /// The cache's retention, applied after the study (ResultCacheFile::evict): 0 keeps everything.
+  double cache_keep_days = 0.0;       ///< --cache-keep-days, SAASGAPS_CACHE_KEEP_DAYS
+  std::size_t cache_max_entries = 0;  ///< --cache-max-entries, SAASGAPS_CACHE_MAX_ENTRIES
   bool quiet = false;     ///< no line per finished point on stderr
 };
 

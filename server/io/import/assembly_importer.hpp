@@ -77,6 +77,9 @@ class Importer {
 
   // ---- the mesh and its groups (assembly_mesh.cpp)
   void load_mesh();
+  /// /mesh_parameters: values of DefineConstant names the `.geo` at `path` declares, set before it
+  /// is meshed; nullopt when one is not (reported at /mesh_parameters/NAME).
+  std::optional<MeshParameters> mesh_parameters(const fs::path& path);
   /// What `adapt` needs of the mesh: a `.geo` file to re-mesh, and a first mesh within max_nodes.
   void adapt_mesh(const AdaptSettings& adapt);
   /// The mesh's nodes as the model's, by their Gmsh tags.

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <string>
@@ -15,6 +17,7 @@
 
 #include "io/json/json_pointer.hpp"
 #include "io/json/value_quote.hpp"
+#include "io/mesher/geo_constants.hpp"
 #include "io/mesher/gmsh_mesh.hpp"
 
 namespace saasgaps::io::assembly {
@@ -33,9 +36,11 @@ void Importer::load_mesh() {
                          " is a mesh already, with the order it was written with (Mesh.ElementOrder in Gmsh)");
   }
   if (!path) return;
+  const std::optional<MeshParameters> parameters = mesh_parameters(*path);
+  if (!parameters) return;
   try {
     const auto start = std::chrono::steady_clock::now();
-    mesh_ = read_gmsh_mesh(*path, order ? static_cast<int>(*order) : 0, sizes_);
+    mesh_ = read_gmsh_mesh(*path, order ? static_cast<int>(*order) : 0, sizes_, *parameters);
     mesh_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   } catch (const MeshTooLarge&) {
     throw;  // a limit, not a defect of the assembly: the service answers 413
@@ -56,6 +61,44 @@ void Importer::load_mesh() {
     positions_.emplace_back(mesh_.r[i], mesh_.z[i]);
     ids_.push_back(static_cast<int>(mesh_.node_tags[i]));
   }
+}
+
+std::optional<MeshParameters> Importer::mesh_parameters(const fs::path& path) {
+  MeshParameters out;
+  const auto given = doc_.find("mesh_parameters");
+  if (given == doc_.end()) return out;
+  if (!given->is_object()) {
+    report("/mesh_parameters", "mesh_parameters is an object {NAME: number}, got " + describe(*given));
+    return std::nullopt;
+  }
+  if (path.extension() != ".geo") {
+    report("/mesh_parameters", "mesh_parameters set the DefineConstant values of a Gmsh geometry (.geo), but the "
+                               "mesh " + quote_string(path.filename().string()) + " is meshed already: it has none");
+    return std::nullopt;
+  }
+  // The geometry's declared parameters, from its text (read, not run: io/mesher/geo_constants.hpp).
+  std::ifstream in(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::vector<std::string> declared = geo_constants(text);
+  std::string known;
+  for (const std::string& name : declared) known += (known.empty() ? "" : ", ") + name;
+  bool ok = true;
+  for (const auto& [name, value] : given->items()) {
+    const std::string at = pointer_append("/mesh_parameters", name);
+    if (!value.is_number() || !std::isfinite(value.get<double>())) {
+      report(at, "a mesh parameter is a finite number, got " + describe(value));
+      ok = false;
+    } else if (std::find(declared.begin(), declared.end(), name) == declared.end()) {
+      report(at, "the geometry " + quote_string(path.filename().string()) + " declares no parameter " +
+                     quote_string(name) + " (a name it defines with DefineConstant[" + name + " = ...];) " +
+                     (known.empty() ? std::string("and declares none") : "; it declares " + known));
+      ok = false;
+    } else {
+      out[name] = value.get<double>();
+    }
+  }
+  if (!ok) return std::nullopt;
+  return out;
 }
 
 void Importer::adapt_mesh(const AdaptSettings& adapt) {

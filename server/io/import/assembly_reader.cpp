@@ -20,7 +20,8 @@ namespace assembly {
 /// every problem of the document; only a document that is not an object stops at once.
 json Importer::run() {
   if (!object(doc_, "", {"schema_version", "title", "mesh", "analysis", "materials", "regions", "constraints"},
-              {"description", "units", "order", "loads", "gaps", "thermal", "solver", "output", "steps", "adapt"})) {
+              {"description", "units", "order", "mesh_parameters", "loads", "gaps", "thermal", "solver", "output", "steps",
+               "adapt"})) {
     throw ModelError(std::move(issues_), "assembly");
   }
   if (const auto v = doc_.find("schema_version"); v != doc_.end()) {

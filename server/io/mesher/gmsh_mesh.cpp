@@ -3,12 +3,16 @@
 #include <signal.h>
 
 #include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <mutex>
 #include <semaphore>
 #include <system_error>
 #include <thread>
 
+#include "io/mesher/geo_constants.hpp"
 #include "io/mesher/mesher_protocol.hpp"
 #include "io/mesher/subprocess.hpp"
 
@@ -138,7 +142,7 @@ std::string dimension_name(int dim) {
   }
 }
 
-GmshMesh read_gmsh_mesh(const fs::path& path, int order, const SizeField* sizes) {
+GmshMesh read_gmsh_mesh(const fs::path& path, int order, const SizeField* sizes, const MeshParameters& parameters) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) {
     throw MeshError("mesh file " + path.string() + " does not exist or is not a regular file");
@@ -153,6 +157,9 @@ GmshMesh read_gmsh_mesh(const fs::path& path, int order, const SizeField* sizes)
     throw MeshError("mesh file " + path.string() + " is not a geometry (.geo): only a geometry can be re-meshed with "
                     "new element sizes");
   }
+  if (!parameters.empty() && extension != ".geo") {
+    throw MeshError("mesh file " + path.string() + " is not a geometry (.geo): only a geometry takes parameters");
+  }
   const fs::path real = fs::canonical(path, ec);
   if (ec) throw MeshError("mesh file " + path.string() + ": " + ec.message());
   const MeshLimits limits = mesh_limits();
@@ -166,6 +173,15 @@ GmshMesh read_gmsh_mesh(const fs::path& path, int order, const SizeField* sizes)
                std::to_string(limits.memory_bytes),
                std::to_string(limits.file_bytes),
                std::to_string(order)};
+  // Each parameter NAME=VALUE after the fixed arguments, the value shortest round-trip.
+  for (const auto& [name, value] : parameters) {
+    if (!geo_identifier(name) || !std::isfinite(value)) {
+      throw MeshError("mesh parameter \"" + name + "\" must be a Gmsh name with a finite value");
+    }
+    std::array<char, 32> digits{};
+    const auto end = std::to_chars(digits.data(), digits.data() + digits.size(), value).ptr;
+    spec.argv.push_back(name + "=" + std::string(digits.data(), end));
+  }
   // No environment: no locale to load (Gmsh reads numbers in the C locale), no HOME, no GMSH_*.
   spec.inherit_environment = false;
   // The size field goes on standard input: the mesher reads it before it confines itself, so the

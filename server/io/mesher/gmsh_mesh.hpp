@@ -105,14 +105,21 @@ struct SizeField {
   std::vector<std::array<int, 3>> triangles;  ///< node indices, any orientation
 };
 
+/// Values of a `.geo`'s DefineConstant names (io/mesher/geo_constants.hpp), set in Gmsh's parser
+/// before the file runs (as `gmsh -setnumber NAME VALUE` does): {name, value}, names that
+/// geo_identifier() takes, finite values.
+using MeshParameters = std::map<std::string, double>;
+
 /// Opens `path` with Gmsh in the sandboxed mesher (a `.geo` is meshed in 2D with the options it
 /// sets itself, and with `sizes` as its background mesh size when given: only a `.geo`) and returns
 /// the mesh. order 1 or 2 meshes a `.geo` with elements of that order whatever it sets
 /// (Mesh.ElementOrder; order 2 also Mesh.SecondOrderLinear = 0, so that mid-side nodes lie on the
 /// true curves; Mesh.SecondOrderIncomplete stays the file's: 1 for quad8, 0 for quad9); 0 leaves the
 /// file's own. Throws MeshTooLarge beyond the limits, MeshError for everything else that goes wrong
-/// (the message names the file and, for a limit, the limit).
-GmshMesh read_gmsh_mesh(const std::filesystem::path& path, int order = 0, const SizeField* sizes = nullptr);
+/// (the message names the file and, for a limit, the limit). `parameters` (only a `.geo`) are set
+/// before the file is parsed.
+GmshMesh read_gmsh_mesh(const std::filesystem::path& path, int order = 0, const SizeField* sizes = nullptr,
+                        const MeshParameters& parameters = {});
 
 /// "dimension 1 (curve)": the name of a dimension for messages.
 std::string dimension_name(int dim);

@@ -7,12 +7,16 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <clocale>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <sstream>
+#include <string>
 #include <system_error>
+#include <vector>
 
 namespace saasgaps::io {
 
@@ -41,9 +45,20 @@ int surface_nodes(int type) {
 /// Initializes Gmsh quietly and finalizes it on every way out.
 class GmshSession {
  public:
-  GmshSession() : locale_(std::setlocale(LC_ALL, nullptr)) {
-    // No configuration files: the result must not depend on the user's ~/.gmshrc.
-    gmsh::initialize(0, nullptr, false);
+  explicit GmshSession(const MeshParameters& parameters) : locale_(std::setlocale(LC_ALL, nullptr)) {
+    // No configuration files: the result must not depend on the user's ~/.gmshrc. The parameters
+    // as Gmsh's command line takes them (-setnumber NAME VALUE): the parser holds NAME before the
+    // file runs, so the file's DefineConstant[NAME = default] keeps it.
+    std::vector<std::string> args{"gmsh"};
+    for (const auto& [name, value] : parameters) {
+      std::array<char, 32> digits{};
+      const auto end = std::to_chars(digits.data(), digits.data() + digits.size(), value).ptr;
+      args.insert(args.end(), {"-setnumber", name, std::string(digits.data(), end)});
+    }
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    gmsh::initialize(parameters.empty() ? 0 : static_cast<int>(argv.size()), parameters.empty() ? nullptr : argv.data(),
+                     false);
     gmsh::option::setNumber("General.Terminal", 0);
     // Errors are logged, not thrown: an exception thrown from inside Gmsh's .geo parser leaves the
     // parser's input buffer behind, and the next file parsed in this process starts with its rest.
@@ -373,13 +388,13 @@ std::string gmsh_failure(const std::string& thrown) {
 }  // namespace
 
 GmshMesh read_with_gmsh(const fs::path& file, const fs::path& path, std::size_t max_nodes, int order,
-                        const SizeField* sizes) {
+                        const SizeField* sizes, const MeshParameters& parameters) {
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) {
     throw MeshError("mesh file " + path.string() + " does not exist or is not a regular file");
   }
   try {
-    const GmshSession session;
+    const GmshSession session(parameters);
     gmsh::open(file.string());
     if (sizes != nullptr) use_size_field(*sizes);
     return read_open_model(path, max_nodes, order);

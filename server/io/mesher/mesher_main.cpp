@@ -1,6 +1,7 @@
-// saasgaps-mesher DIRECTORY FILE SHOWN MAX_NODES SECONDS MEMORY_BYTES FILE_BYTES ORDER
+// saasgaps-mesher DIRECTORY FILE SHOWN MAX_NODES SECONDS MEMORY_BYTES FILE_BYTES ORDER [NAME=VALUE ...]
 //
 // ORDER: 0 (a .geo's own element order), 1 or 2 (read_gmsh_mesh in io/mesher/gmsh_mesh.hpp).
+// NAME=VALUE: a .geo's parameter, set in Gmsh's parser before the file runs (-setnumber).
 // Reads DIRECTORY/FILE with Gmsh inside the sandbox of io/mesher_sandbox.hpp (DIRECTORY becomes
 // "/", nothing outside it exists), with the size field on standard input as its background mesh
 // size when there is one (io/mesher_protocol.hpp; read, bounded, before the sandbox), and writes the mesh to standard output in the encoding of
@@ -15,6 +16,7 @@
 #include <string>
 #include <string_view>
 
+#include "io/mesher/geo_constants.hpp"
 #include "io/mesher/gmsh_reader.hpp"
 #include "io/mesher/mesher_protocol.hpp"
 #include "io/mesher/mesher_sandbox.hpp"
@@ -65,11 +67,23 @@ int main(int argc, char** argv) {
   std::size_t max_nodes = 0;
   SandboxLimits limits;
   int order = 0;
-  if (argc != 9 || !parse(argv[4], max_nodes) || !parse(argv[5], limits.cpu_seconds) ||
+  if (argc < 9 || !parse(argv[4], max_nodes) || !parse(argv[5], limits.cpu_seconds) ||
       !parse(argv[6], limits.memory_bytes) || !parse(argv[7], limits.file_bytes) || limits.cpu_seconds < 1 ||
       !parse(argv[8], order) || order < 0 || order > 2) {
     return report(mesher::usage,
-                  "usage: saasgaps-mesher DIRECTORY FILE SHOWN MAX_NODES SECONDS MEMORY_BYTES FILE_BYTES ORDER");
+                  "usage: saasgaps-mesher DIRECTORY FILE SHOWN MAX_NODES SECONDS MEMORY_BYTES FILE_BYTES ORDER "
+                  "[NAME=VALUE ...]");
+  }
+  MeshParameters parameters;
+  for (int i = 9; i < argc; ++i) {
+    const std::string_view item = argv[i];
+    const std::size_t equals = item.find('=');
+    double value = 0.0;
+    if (equals == std::string_view::npos || !geo_identifier(item.substr(0, equals)) ||
+        !parse(item.substr(equals + 1), value)) {
+      return report(mesher::usage, "saasgaps-mesher: a parameter is NAME=VALUE, got \"" + std::string(item) + "\"");
+    }
+    parameters[std::string(item.substr(0, equals))] = value;
   }
   const std::string file = argv[2];
   const std::string shown = argv[3];
@@ -95,7 +109,8 @@ int main(int argc, char** argv) {
                                           "); a mesh is read only inside that sandbox");
   }
   try {
-    const GmshMesh mesh = read_with_gmsh("/" + file, shown, max_nodes, order, sizes.size.empty() ? nullptr : &sizes);
+    const GmshMesh mesh = read_with_gmsh("/" + file, shown, max_nodes, order, sizes.size.empty() ? nullptr : &sizes,
+                                         parameters);
     return write_all(mesher::encode(mesh)) ? mesher::ok : report(mesher::mesh_error, "cannot write the mesh");
   } catch (const MeshTooLarge& e) {
     return report(mesher::too_many_nodes, e.what());

@@ -213,7 +213,7 @@ class StudyReader {
     for (std::size_t k = 0; k < list.size(); ++k) {
       const std::string at = pointer_append("/outputs", k);
       static constexpr std::array<std::string_view, 3> required{"name", "of", "reduce"};
-      static constexpr std::array<std::string_view, 3> optional{"elements", "nodes", "pair"};
+      static constexpr std::array<std::string_view, 4> optional{"elements", "nodes", "pair", "set"};
       if (!check_object(list[k], at, required, optional, report_fn())) continue;
       const json& item = list[k];
       StudyOutput o;
@@ -248,8 +248,15 @@ class StudyReader {
         }
       }
       const int selections = static_cast<int>(item.contains("elements")) + static_cast<int>(item.contains("nodes")) +
-                             static_cast<int>(item.contains("pair"));
-      if (selections > 1) report(at, "at most one of \"elements\", \"nodes\" and \"pair\" selects what is reduced");
+                             static_cast<int>(item.contains("pair")) + static_cast<int>(item.contains("set"));
+      if (selections > 1) {
+        report(at, "at most one of \"elements\", \"nodes\", \"pair\" and \"set\" selects what is reduced");
+      }
+      if (item.contains("set")) {
+        const auto set = check_string(item["set"], pointer_append(at, "set"), "set", report_fn());
+        if (set && set->empty()) report(pointer_append(at, "set"), "set must name a node set, not be empty");
+        if (set && !set->empty()) o.set = *set;
+      }
       o.elements = ids(item, at, "elements");
       o.nodes = ids(item, at, "nodes");
       if (item.contains("pair")) {
@@ -365,23 +372,27 @@ std::string point_issues(const Study& study, std::size_t index) {
     (void)read_model(study.point_document(index));
     return {};
   } catch (const ModelError& e) {
-    const auto at = study.value_indices(index);
-    std::string out;
-    for (std::size_t i = 0; i < e.issues().size(); ++i) {
-      const InputIssue& issue = e.issues()[i];
-      if (i > 0) out += "; ";
-      for (std::size_t k = 0; k < study.parameters.size(); ++k) {
-        const std::string& p = study.parameters[k].pointer;
-        if (issue.pointer == p || issue.pointer.starts_with(p + "/")) {
-          out += "parameter " + quote_string(study.parameters[k].name) + " = " + quote(study.parameters[k].values[at[k]]) +
-                 " (" + pointer_append(pointer_append(pointer_append("/parameters", k), "values"), at[k]) + "): ";
-          break;
-        }
-      }
-      out += (issue.pointer.empty() ? std::string() : issue.pointer + ": ") + issue.detail;
-    }
-    return out;
+    return point_issues(study, index, e);
   }
+}
+
+std::string point_issues(const Study& study, std::size_t index, const ModelError& error) {
+  const auto at = study.value_indices(index);
+  std::string out;
+  for (std::size_t i = 0; i < error.issues().size(); ++i) {
+    const InputIssue& issue = error.issues()[i];
+    if (i > 0) out += "; ";
+    for (std::size_t k = 0; k < study.parameters.size(); ++k) {
+      const std::string& p = study.parameters[k].pointer;
+      if (issue.pointer == p || issue.pointer.starts_with(p + "/")) {
+        out += "parameter " + quote_string(study.parameters[k].name) + " = " + quote(study.parameters[k].values[at[k]]) +
+               " (" + pointer_append(pointer_append(pointer_append("/parameters", k), "values"), at[k]) + "): ";
+        break;
+      }
+    }
+    out += (issue.pointer.empty() ? std::string() : issue.pointer + ": ") + issue.detail;
+  }
+  return out;
 }
 
 }  // namespace saasgaps::io

@@ -6,7 +6,8 @@
 ///   {"schema_version": 1, "title": "...", "model": {...} | "assembly": {...},
 ///    "parameters": [{"name": "p", "pointer": "/loads/pressures/0/normal", "values": [1, 2, 3]}],
 ///    "sampling": "grid" | "zip",                        (default "grid")
-///    "outputs": [{"name": "u_max", "of": "nodes.u_r", "reduce": "max", "nodes": [ids]}]}
+///    "outputs": [{"name": "u_max", "of": "nodes.u_r", "reduce": "max", "nodes": [ids]},
+///                {"name": "push", "of": "set_reactions.fz", "reduce": "sum", "set": "pushed"}]}
 ///
 /// read_study judges the whole document before anything runs and throws ModelError (document
 /// "study") with every issue at its JSON Pointer: an unknown key, a pointer that does not resolve
@@ -41,9 +42,11 @@ struct StudyOutput {
   std::string name;
   std::string of;  ///< "nodes.u_r", "contact.pressure", "reaction_sum.fz", ... (study_outputs.hpp)
   Reducer reduce = Reducer::max;
-  /// At most one of these: the ids or the contact pair [A, B] the reduction runs over.
+  /// At most one of these: the ids, the contact pair [A, B] or the node set (of set_reactions)
+  /// the reduction runs over.
   std::optional<std::vector<int>> elements, nodes;
   std::optional<std::vector<std::string>> pair;
+  std::optional<std::string> set;
 };
 
 enum class Sampling { grid, zip };
@@ -76,5 +79,9 @@ Study read_study(const nlohmann::json& document, std::size_t max_points = defaul
 /// range: ..."; empty when the model reads. Model studies only (an assembly's point is judged by
 /// its import, when it runs).
 std::string point_issues(const Study& study, std::size_t index);
+
+/// The same line for an error already thrown for point `index`'s document: the model reader's, or
+/// an assembly point's import (whose pointers are into the assembly, where the parameters point).
+std::string point_issues(const Study& study, std::size_t index, const ModelError& error);
 
 }  // namespace saasgaps::io

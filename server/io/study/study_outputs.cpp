@@ -113,6 +113,9 @@ std::string selection_problem(const StudyOutput& output) {
     return "\"nodes\" selects nodes: it applies to nodes.* and reactions.* only";
   }
   if (output.pair && s->name != "contact") return "\"pair\" selects a contact pair: it applies to contact.* only";
+  if (output.set && s->name != "set_reactions") {
+    return "\"set\" selects a node set: it applies to set_reactions.* only";
+  }
   return {};
 }
 
@@ -134,6 +137,7 @@ double reduce_output(const json& result, const StudyOutput& output) {
       for (std::size_t k = 0; k < it->size(); ++k) {
         const json& item = (*it)[k];
         if (!selected(item, name == "elements" ? output.elements : output.nodes, id_key)) continue;
+        if (output.set && item.value("set", json()) != *output.set) continue;
         take(member(item, field), "/" + name + "/" + std::to_string(k) + "/" + std::string(field), values);
       }
       break;
@@ -163,6 +167,7 @@ double reduce_output(const json& result, const StudyOutput& output) {
     if (output.elements) which += " over the elements named";
     if (output.nodes) which += " over the nodes named";
     if (output.pair) which += " of the pair [" + (*output.pair)[0] + ", " + (*output.pair)[1] + "]";
+    if (output.set) which += " of the set " + quote_string(*output.set);
     throw OutputError("the result has no value of " + which);
   }
   switch (output.reduce) {

@@ -9,7 +9,8 @@
 ///     `contact.gap`, `contact.slip`), or of the pair itself (`contact.force.fz`);
 ///   - an object section (`reaction_sum`, `error_estimate`) gives its member KEY.
 /// `elements` / `nodes` keep the items with those ids (`reactions` items by their `node`), `pair`
-/// the contact pair whose surfaces are [A, B]. max, min, sum or mean of what is left; no value at
+/// the contact pair whose surfaces are [A, B], `set` the set_reactions item of that node set (the
+/// summed support reactions of a named set: a push-out force). max, min, sum or mean of what is left; no value at
 /// all (an empty selection, a field the result lacks) is an OutputError naming what is missing.
 
 #include <stdexcept>

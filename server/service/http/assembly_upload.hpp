@@ -1,18 +1,43 @@
 #pragma once
-/// POST /v1/imports: an assembly and the files it names, uploaded as multipart/form-data, imported
-/// into a model document (docs/import.md). Parts: `assembly` (the assembly document, JSON) and one
-/// part per file it names (the mesh, a temperature file), each carrying that file's name as its
-/// filename. The files are written to a fresh private directory that is removed afterwards; the
-/// assembly may name only those files (no paths).
+/// Uploads of an assembly and the files it names, as multipart/form-data (docs/import.md,
+/// docs/studies.md): POST /v1/imports (a part `assembly`) and POST /v1/studies of an assembly (a
+/// part `study`). Every other part is a file the document names (the mesh, a temperature file),
+/// carrying that file's name as its filename. The files are written to a fresh private directory
+/// that is removed afterwards; the assembly may name only those files (no paths).
 
 #include <httplib.h>
+
+#include <filesystem>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
 namespace saasgaps::service {
 
-/// The model document. Throws HttpError 400 for a request that is not such an upload, ModelError
-/// (422) with every issue of the assembly, each at its JSON Pointer.
+/// The files of an upload in a directory only this process can use (mkdtemp: mode 0700), removed
+/// with everything in it when this object ends.
+class UploadedFiles {
+ public:
+  /// Throws HttpError 400 for a request that is not such an upload: not multipart, no part named
+  /// `document_part`, a part without a plain file name, two parts with the same file name. `route`
+  /// ("POST /v1/imports") names the request in messages.
+  UploadedFiles(const httplib::Request& req, const std::string& document_part, const std::string& route);
+  ~UploadedFiles();
+  UploadedFiles(const UploadedFiles&) = delete;
+  UploadedFiles& operator=(const UploadedFiles&) = delete;
+
+  /// The text of the document part.
+  [[nodiscard]] const std::string& document() const { return document_; }
+  /// Where the other parts are, each under its file name.
+  [[nodiscard]] const std::filesystem::path& directory() const { return directory_; }
+
+ private:
+  std::filesystem::path directory_;
+  std::string document_;
+};
+
+/// POST /v1/imports: the model document. Throws HttpError 400 for a request that is not such an
+/// upload, ModelError (422) with every issue of the assembly, each at its JSON Pointer.
 nlohmann::json import_upload(const httplib::Request& req);
 
 }  // namespace saasgaps::service

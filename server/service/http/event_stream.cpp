@@ -22,6 +22,14 @@ struct StreamSlot {
 
 }  // namespace
 
+bool wait_or_keep_alive(EventHub& hub, std::uint64_t seen, httplib::DataSink& sink) {
+  if (hub.wait(seen, std::chrono::seconds(15)) == seen) {
+    static const std::string keep_alive = ": keep-alive\n\n";
+    return sink.write(keep_alive.data(), keep_alive.size());
+  }
+  return true;
+}
+
 void EventStreams::serve(const httplib::Request& req, httplib::Response& res) {
   const std::int64_t id = job_in_path(req);
   (void)store_.get(id);  // 404 before a stream is opened
@@ -59,11 +67,7 @@ void EventStreams::serve(const httplib::Request& req, httplib::Response& res) {
           sink.done();
           return true;
         }
-        if (hub_.wait(seen, std::chrono::seconds(15)) == seen) {
-          static const std::string keep_alive = ": keep-alive\n\n";
-          return sink.write(keep_alive.data(), keep_alive.size());
-        }
-        return true;
+        return wait_or_keep_alive(hub_, seen, sink);
       },
       [slot](bool) {});
 }

@@ -6,11 +6,18 @@
 #include <httplib.h>
 
 #include <atomic>
+#include <cstdint>
 
 #include "service/store/event_hub.hpp"
 #include "service/store/job_store.hpp"
 
 namespace saasgaps::service {
+
+/// A live stream with nothing new to send: waits up to 15 s for news on the hub (a version other
+/// than `seen`, read before the stream's last look at the store); with none, writes the comment line
+/// ": keep-alive" so that proxies and clients know the stream is alive. False when the client is
+/// gone. Used by every event stream (jobs here, studies in service/studies).
+bool wait_or_keep_alive(EventHub& hub, std::uint64_t seen, httplib::DataSink& sink);
 
 class EventStreams {
  public:

@@ -169,10 +169,11 @@ bool RequestGuard::admit(const httplib::Request& req, httplib::Response& res) co
   }
   const bool has_body = (req.has_header("Content-Length") && req.get_header_value("Content-Length") != "0") ||
                         req.has_header("Transfer-Encoding");
-  // The one upload route takes multipart/form-data (an assembly and its mesh files); a foreign page
-  // posting a form there is stopped by the Origin rule above.
+  // The upload routes take multipart/form-data (an assembly, or a study of one, and its mesh
+  // files); a foreign page posting a form there is stopped by the Origin rule above.
   const bool imports = req.path == "/v1/imports";
-  const bool upload = imports && lower(req.get_header_value("Content-Type")).rfind("multipart/form-data", 0) == 0;
+  const bool upload = (imports || req.path == "/v1/studies") &&
+                      lower(req.get_header_value("Content-Type")).rfind("multipart/form-data", 0) == 0;
   // Remote workers post CBOR (worker_protocol.hpp) to their own routes, which an HTML form cannot
   // reach with a body they accept either.
   const bool worker_body = is_worker_route(req.path) && is_media_type(req.get_header_value("Content-Type"), "application/cbor");

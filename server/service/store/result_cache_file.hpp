@@ -6,9 +6,13 @@
 /// `SAASGAPS_CACHE` is the path of an SQLite file, created if missing, or of an existing
 /// directory, in which the file is `saasgaps-results.sqlite`. Each entry holds the canonical model
 /// text itself: a lookup compares it with the asked one, so two models that share a fingerprint
-/// are a miss, never a false hit. Only converged results are stored. Entries are never evicted by
-/// the command line (delete the file to empty it).
+/// are a miss, never a false hit. Only converged results are stored. Each entry records when it was
+/// last used (stored, or answered a lookup); evict() removes entries by the retention rules
+/// (`saasgaps study --cache-keep-days` / `--cache-max-entries`, or SAASGAPS_CACHE_KEEP_DAYS /
+/// SAASGAPS_CACHE_MAX_ENTRIES): by age, as the service's --keep-finished removes old jobs and their
+/// cache entries with them, and by count, the least recently used first.
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -35,6 +39,17 @@ class ResultCacheFile {
   std::optional<Hit> find(const std::string& key, const std::string& canonical_model);
   /// Stores a converged result; returns its entry id (an entry already there for the key is replaced).
   std::int64_t store(const std::string& key, const std::string& canonical_model, const std::string& result);
+
+  /// The retention rules; each absent one keeps everything.
+  struct Retention {
+    std::optional<double> keep_days;         ///< entries last used longer ago than this are removed
+    std::optional<std::size_t> max_entries;  ///< beyond this many, the least recently used are removed
+  };
+  /// Removes the entries the rules say and gives their pages back to the file system; returns how
+  /// many were removed.
+  int evict(const Retention& rules);
+  /// Entries stored now.
+  [[nodiscard]] std::size_t size();
 
  private:
   std::mutex mutex_;

@@ -1,14 +1,19 @@
 #include "service/studies/study_routes.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "io/import/assembly_reader.hpp"
 #include "io/json/json_text.hpp"
 #include "io/model/model_reader.hpp"
 #include "io/sections/restraint_issues.hpp"
 #include "io/study/study_result.hpp"
+#include "service/http/assembly_upload.hpp"
+#include "service/http/event_stream.hpp"
 #include "service/http/job_views.hpp"
 #include "service/http/problem.hpp"
 #include "service/ops/log.hpp"
@@ -59,25 +64,35 @@ void StudyRoutes::install(httplib::Server& server) {
 }
 
 void StudyRoutes::submit(const httplib::Request& req, httplib::Response& res) {
-  const json document = io::parse_document(req.body);
-  const io::Study study = io::read_study(document, max_points_);
-  if (study.assembly) {
-    throw ModelError({{"/assembly", "the service runs studies of a model document; a study of an assembly runs with "
-                                    "`saasgaps study` beside its mesh files"}},
+  // A study of an assembly comes with the files its assembly names (multipart/form-data, a part
+  // "study"); each point is imported here, in the upload's private directory, then runs as a model.
+  std::optional<UploadedFiles> files;
+  if (req.is_multipart_form_data()) files.emplace(req, "study", "POST /v1/studies");
+  const std::string& text = files ? files->document() : req.body;
+  const json document = io::parse_document(text);
+  const bool of_assembly = document.is_object() && document.contains("assembly");
+  const io::Study study = io::read_study(document, of_assembly ? std::min(max_points_, max_assembly_points) : max_points_);
+  if (study.assembly && !files) {
+    throw ModelError({{"/assembly", "a study of an assembly is uploaded with the files its assembly names: "
+                                    "multipart/form-data with a part \"study\" (this document) and one part per file, "
+                                    "e.g. curl -F study=@s.json -F mesh=@fit.geo"}},
                      "study");
   }
   std::vector<StudyPointInput> points(study.point_count());
   std::size_t cached = 0, refused = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     StudyPointInput& p = points[i];
-    const json model_document = study.point_document(i);
+    json model_document;
     std::optional<Model> model;
     try {
+      model_document = study.assembly ? io::import_assembly(study.point_document(i), files->directory(),
+                                                            io::FileAccess::base_only)
+                                      : study.point_document(i);
       model = io::read_model(model_document);
       io::require_restrained(*model);
-    } catch (const ModelError&) {
+    } catch (const ModelError& e) {
       p.status = "failed";
-      p.message = io::point_issues(study, i);
+      p.message = io::point_issues(study, i, e);
       ++refused;
       continue;
     } catch (const std::exception& e) {
@@ -86,7 +101,7 @@ void StudyRoutes::submit(const httplib::Request& req, httplib::Response& res) {
       ++refused;
       continue;
     }
-    const ModelKey key = model_key(model_document);
+  const ModelKey key = model_key(model_document);
     if (const std::optional<std::int64_t> job = find_cached(store_, key)) {
       if (const std::optional<std::string> result = store_.result(*job)) {
         io::PointOutcome outcome;
@@ -105,7 +120,7 @@ void StudyRoutes::submit(const httplib::Request& req, httplib::Response& res) {
     p.max_iterations = model->solver.max_iterations;
     p.cache_key = key.key;
   }
-  const std::int64_t id = store_.create_study(req.body, study.title, points);
+  const std::int64_t id = store_.create_study(text, study.title, points);
   log_info("study_queued", {{"study", id}, {"request_id", res.get_header_value("X-Request-Id")},
                             {"points", points.size()}, {"cached", cached}, {"refused", refused}});
   hub_.notify();
@@ -233,11 +248,7 @@ void StudyRoutes::events(const httplib::Request& req, httplib::Response& res) {
           sink.done();
           return true;
         }
-        if (hub_.wait(seen, std::chrono::seconds(15)) == seen) {
-          static const std::string keep_alive = ": keep-alive\n\n";
-          return sink.write(keep_alive.data(), keep_alive.size());
-        }
-        return true;
+        return wait_or_keep_alive(hub_, seen, sink);
       },
       [](bool) {});
 }

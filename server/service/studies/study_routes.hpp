@@ -3,7 +3,11 @@
 ///   POST /v1/studies                 a study document: judged whole (422 with every error at its
 ///                                    pointer), each point's model read (a point the reader refuses
 ///                                    fails alone), each point answered from the result cache or
-///                                    queued as a job; 202 with Location /v1/studies/{id}
+///                                    queued as a job; 202 with Location /v1/studies/{id}. A study
+///                                    of an assembly comes as multipart/form-data (a part "study"
+///                                    and the files its assembly names): each point is imported
+///                                    (meshed) before the answer, an import that fails fails that
+///                                    point alone, and the imported model runs as any point's
 ///   GET  /v1/studies                 every study, newest first, with its counts
 ///   GET  /v1/studies/{id}            the study result: points with their states, jobs and outputs
 ///   GET  /v1/studies/{id}/events     Server-Sent Events: `progress` when a point finishes, until none runs
@@ -22,6 +26,10 @@
 #include "service/store/job_store.hpp"
 
 namespace saasgaps::service {
+
+/// Points a study of an assembly may have through the service: each is imported (its mesh made by
+/// the sandboxed mesher) while the request waits.
+inline constexpr std::size_t max_assembly_points = 100;
 
 class StudyRoutes {
  public:

@@ -127,6 +127,15 @@ TEST(StudyDocument, BadStudiesAreErrorsAtTheirPointers) {
   json selection = study_of({p_values});
   selection["outputs"][0]["elements"] = {1};
   has_issue_at(issues_of(selection), "/outputs/0", "applies to elements.* only");
+  json set_selection = study_of({p_values});
+  set_selection["outputs"][0]["set"] = "pushed";
+  has_issue_at(issues_of(set_selection), "/outputs/0", "applies to set_reactions.* only");
+  set_selection["outputs"][0]["of"] = "set_reactions.fz";
+  set_selection["outputs"][0]["nodes"] = {1};
+  has_issue_at(issues_of(set_selection), "/outputs/0", "at most one of");
+  set_selection["outputs"][0].erase("nodes");
+  set_selection["outputs"][0]["set"] = 3;
+  has_issue_at(issues_of(set_selection), "/outputs/0/set", "");
   json both = study_of({p_values});
   both["assembly"] = json::object();
   has_issue_at(issues_of(both), "", "not both");
@@ -151,7 +160,8 @@ const json result = json::parse(R"({"status": "converged",
   "contact": [{"surfaces": ["a", "b"], "force": {"fr": 1, "fz": 2}, "points": [{"pressure": 5}, {"pressure": 7}]},
               {"surfaces": ["c", "d"], "force": {"fr": 3, "fz": 4}, "points": [{"pressure": 11}]}],
   "reaction_sum": {"fr": 0.25, "fz": -6},
-  "reactions": [{"node": 1, "fr": 1, "fz": 2}, {"node": 2, "fr": 3, "fz": 4}]})");
+  "reactions": [{"node": 1, "fr": 1, "fz": 2}, {"node": 2, "fr": 3, "fz": 4}],
+  "set_reactions": [{"set": "pushed", "fr": 0.5, "fz": 1474.3}, {"set": "support", "fr": -0.5, "fz": -1474.3}]})");
 
 double reduced(const char* of, Reducer r, const json& selection = json::object()) {
   StudyOutput o;
@@ -161,6 +171,7 @@ double reduced(const char* of, Reducer r, const json& selection = json::object()
   if (selection.contains("elements")) o.elements = selection["elements"].get<std::vector<int>>();
   if (selection.contains("nodes")) o.nodes = selection["nodes"].get<std::vector<int>>();
   if (selection.contains("pair")) o.pair = selection["pair"].get<std::vector<std::string>>();
+  if (selection.contains("set")) o.set = selection["set"].get<std::string>();
   return reduce_output(result, o);
 }
 
@@ -175,6 +186,10 @@ TEST(StudyOutputs, FieldsReducedByName) {
   EXPECT_EQ(reduced("contact.force.fz", Reducer::sum), 6);
   EXPECT_EQ(reduced("reaction_sum.fz", Reducer::sum), -6);
   EXPECT_EQ(reduced("reactions.fz", Reducer::sum, {{"nodes", {2}}}), 4);
+  // A named set's summed reactions: the push-out force of the pushed face.
+  EXPECT_EQ(reduced("set_reactions.fz", Reducer::sum, {{"set", "pushed"}}), 1474.3);
+  EXPECT_EQ(reduced("set_reactions.fz", Reducer::max), 1474.3);
+  EXPECT_THROW(reduced("set_reactions.fz", Reducer::sum, {{"set", "push"}}), OutputError);
   // A known field the result does not have (nodes.effective before recovered stresses, an empty
   // selection) is the point's error, named.
   EXPECT_THROW(reduced("nodes.effective", Reducer::max), OutputError);

@@ -1,9 +1,11 @@
-// The max interference of the press fit study (press-fit-interference.study.json): d = 2.0e-4 in.
+// The press fit of press-fit-interference.study.json: the radial interference d is a parameter
+// (DefineConstant: the study sets it through the assembly's /mesh_parameters/d; alone, 1.5e-4 in).
 // A press fit of two rings of different materials (axisymmetric slice, height h), each meshed on its
 // own without Transfinite: the interface carries 9 nodes on the shaft and 13 on the hub, so the
 // meshes do not match. The shaft's outer radius b + d/2 exceeds the hub's bore b - d/2 by the
 // interference d. ring-press-fit.assembly.json pairs the two faces as contact surfaces.
-a1 = 1.0; b = 1.5; b2 = 2.2; d = 2.0e-4; h = 0.2;
+DefineConstant[ d = 1.5e-4 ];
+a1 = 1.0; b = 1.5; b2 = 2.2; h = 0.2;
 lc_shaft = 0.025; lc_hub = 0.0167;
 
 Point(1) = {a1, 0, 0, lc_shaft}; Point(2) = {b + d/2, 0, 0, lc_shaft};
