@@ -62,7 +62,8 @@ Block add_block(Model& m, bool quad8, int segments, double grading, double z0, i
   b.first_element = m.elements.size();
   const auto map = [&](double s, double t) { return Vec2(1.0 + 2.0 * std::pow(s, grading), z0 + t); };
   if (quad8) {
-    const testing::Quad8Grid g = testing::add_quad8_grid(m, segments, layers, map, material);
+    const testing::QuadraticGrid g = testing::add_quadratic_grid(m, ElementType::quad8,
+        segments, layers, map, material);
     b.bottom = g.row_edges(0);
     b.top = g.row_edges(layers);
     b.bottom_nodes = g.row_nodes(0);
@@ -220,9 +221,11 @@ Model axisymmetric_fit(int radial, std::array<int, 2> along) {
   const auto slab = [height](double r0, double r1) {
     return [=](double s, double t) { return Vec2(r0 + s * (r1 - r0), t * height); };
   };
-  const testing::Quad8Grid shaft = testing::add_quad8_grid(m, radial, along[0], slab(fit::a1, fit::b + 0.5 * fit::delta), 0);
-  const testing::Quad8Grid hub = testing::add_quad8_grid(m, radial, along[1], slab(fit::b - 0.5 * fit::delta, fit::b2), 1);
-  const auto column = [](const testing::Quad8Grid& g, int i) {
+  const testing::QuadraticGrid shaft = testing::add_quadratic_grid(m, ElementType::quad8,
+      radial, along[0], slab(fit::a1, fit::b + 0.5 * fit::delta), 0);
+  const testing::QuadraticGrid hub = testing::add_quadratic_grid(m, ElementType::quad8,
+      radial, along[1], slab(fit::b - 0.5 * fit::delta, fit::b2), 1);
+  const auto column = [](const testing::QuadraticGrid& g, int i) {
     Edges edges;
     for (int j = 0; j < g.nj; ++j) edges.push_back({g.corner(i, j), g.corner(i, j + 1)});
     return edges;
@@ -265,10 +268,9 @@ Model hertz_model(double block_h, double arc_h) {
   m.materials = {testing::isotropic_material(1, hertz_E, hertz_nu)};
   const std::vector<double> xb = testing::hertz_graded(block_h), xc = testing::hertz_graded(arc_h);
   const int nb = static_cast<int>(xb.size()) - 1, nc = static_cast<int>(xc.size()) - 1;
-  const testing::Quad8Grid block = testing::add_quad8_grid(
-      m, nb, nb, [&](double s, double t) { return Vec2(graded(xb, s), -graded(xb, 1.0 - t)); }, 0);
-  const testing::Quad8Grid body = testing::add_quad8_grid(
-      m, nc, nc,
+  const testing::QuadraticGrid block = testing::add_quadratic_grid(m, ElementType::quad8,
+      nb, nb, [&](double s, double t) { return Vec2(graded(xb, s), -graded(xb, 1.0 - t)); }, 0);
+  const testing::QuadraticGrid body = testing::add_quadratic_grid(m, ElementType::quad8, nc, nc,
       [&](double s, double t) {
         const double x = graded(xc, s), z0 = x * x / (2.0 * hertz_R);
         return Vec2(x, z0 + graded(xc, t) * (hertz_size - z0) / hertz_size);
@@ -339,10 +341,9 @@ CattaneoResult cattaneo(double h, double ratio) {
   const std::vector<double> depth = testing::hertz_graded(h);
   const int nb = static_cast<int>(xb.size()) - 1, nc = static_cast<int>(xc.size()) - 1;
   const int nd = static_cast<int>(depth.size()) - 1;
-  const testing::Quad8Grid block = testing::add_quad8_grid(
-      m, nb, nd, [&](double s, double t) { return Vec2(graded(xb, s), -graded(depth, 1.0 - t)); }, 0);
-  const testing::Quad8Grid body = testing::add_quad8_grid(
-      m, nc, nd,
+  const testing::QuadraticGrid block = testing::add_quadratic_grid(m, ElementType::quad8,
+      nb, nd, [&](double s, double t) { return Vec2(graded(xb, s), -graded(depth, 1.0 - t)); }, 0);
+  const testing::QuadraticGrid body = testing::add_quadratic_grid(m, ElementType::quad8, nc, nd,
       [&](double s, double t) {
         const double x = graded(xc, s), z0 = x * x / (2.0 * hertz_R);
         return Vec2(x, z0 + graded(depth, t) * (hertz_size - z0) / hertz_size);

@@ -175,7 +175,7 @@ void SectionReader::end_items(Section s, std::size_t count) {
 
 Model SectionReader::finish() {
   if (issues_.empty()) {
-    // What the quadratic families do not carry yet (gap elements, contact surfaces, conduction).
+    // What the quadratic families do not carry yet (gap elements along their edges).
     if (std::vector<InputIssue> limits = element_family_input_issues(model_); !limits.empty()) {
       throw ModelError(std::move(limits));
     }

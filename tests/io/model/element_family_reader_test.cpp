@@ -1,6 +1,7 @@
 // The reader on element families: types, integrations, shapes, and what quadratic elements do not
-// carry yet (gap elements along their edges, conductance across contact surfaces on them), each an error at its
-// JSON Pointer naming the element and the value; and the same model through the text path.
+// carry yet (gap elements along their edges), an error at its JSON Pointer naming the element and the
+// value; what they do carry (contact surfaces with a conductance in a thermal run); and the same model
+// through the text path.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -134,13 +135,17 @@ TEST(ElementFamilyReader, HeatConductionOnQuadraticElementsReadsItsEdgesThroughT
   EXPECT_EQ(m.thermal->boundary[1].edges[0].element, 0);
 }
 
-TEST(ElementFamilyReader, ConductanceAcrossAQuadraticContactSurfaceIsNotAvailableYet) {
+TEST(ElementFamilyReader, ConductanceAcrossAQuadraticContactSurfaceIsRead) {
   json d = two_bodies();
   d["materials"][0]["table"][0]["k"] = 1.0;
   d["thermal"] = json::parse(R"({"type": "steady", "boundary": [{"edges": [[1, 2]], "temperature": 100}]})");
   d["contact"] = json::parse(R"({"surfaces": [{"name": "top", "edges": [[3, 4]]}, {"name": "under", "edges": [[9, 10]]}],
-                                 "pairs": [{"surfaces": ["top", "under"]}]})");
-  expect_issue(d, "/contact/surfaces/0/edges/0", {"surface \"top\"", "[3, 4]", "element 1 (quad8)", "heat conduction"});
+                                 "pairs": [{"surfaces": ["top", "under"], "conductance": {"closed": 5}}]})");
+  const Model m = read_model(d);
+  ASSERT_TRUE(m.contact && m.thermal);
+  ASSERT_TRUE(m.contact->pairs[0].conductance.has_value());
+  EXPECT_EQ(m.contact->pairs[0].conductance->closed[0].h, 5.0);
+  EXPECT_EQ(m.contact->surfaces[0].edges.size(), 1U);  // the quad8's edge 3-7-4, by its corners
 }
 
 TEST(ElementFamilyReader, APressureEdgeMayNameItsMidSideNode) {
