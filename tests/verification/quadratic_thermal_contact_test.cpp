@@ -324,7 +324,7 @@ TEST(QuadraticThermalContact, ConcentricCylindersOnCurvedQuad8FacesHaveBothLogPr
 TEST(QuadraticThermalContact, ARingFitOnQuad8ConductsAtItsContactPressure) {
   namespace fit = testing::shrink_fit_rings;
   const int radial = 4;
-  CylinderModel c{fit::quarter_shrink_fit_quad8(radial, {20, 16}), static_cast<std::size_t>(radial * 20),
+  CylinderModel c{fit::quarter_shrink_fit(radial, {20, 16}), static_cast<std::size_t>(radial * 20),
                   0.5 * std::numbers::pi};
   Model& m = c.model;
   Cylinders t;
