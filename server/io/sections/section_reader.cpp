@@ -498,7 +498,9 @@ void SectionReader::read_pressures(const Obj& loads, Loads& into) {
       continue;
     }
     p.element = found->second.front();
-    if (middle_named && !check_middle_node(ids, o.at("nodes"), p.element, edge->nodes[0], edge->nodes[1], last)) continue;
+    if (middle_named && !check_middle_node(ids, o.at("nodes"), p.element, edge->nodes[0], edge->nodes[1], last)) {
+      continue;
+    }
     p.node_a = edge->nodes[0];
     p.node_b = last;
     into.pressures.push_back(p);
