@@ -233,7 +233,10 @@ std::span<const std::size_t> ConstraintRows::neighbours(std::size_t r) {
   if (neighbour_start_.size() != rows_.size() + 1) {
     // (unknown, row) for every entry, sorted: the rows of each constrained unknown. Then for every
     // pattern entry (i, j) between two constrained unknowns (column j of the upper triangle holds
-    // its i <= j), rows(i) x rows(j) are neighbours.
+    // its i <= j), rows(i) x rows(j) are neighbours. The rows of column j's entries are gathered
+    // once each first (`near`, marked by j): the rows of a quad8 face share most of their unknowns,
+    // and the pairs taken entry by entry were 8 times as many (1.4 million links where 175,208 remain,
+    // 0.78 s where this takes 0.02-0.05 s, on the quad8 ring fit at 1.5 x 10^5 unknowns).
     std::vector<std::pair<Index, std::size_t>> by_unknown;
     for (std::size_t row = 0; row < rows_.size(); ++row) {
       for (const Entry& e : entries(row)) by_unknown.emplace_back(e.equation, row);
@@ -246,17 +249,25 @@ std::span<const std::size_t> ConstraintRows::neighbours(std::size_t r) {
       return std::span<const std::pair<Index, std::size_t>>(first, last);
     };
     std::vector<std::pair<std::size_t, std::size_t>> links;
+    std::vector<Index> marked(rows_.size(), -1);
+    std::vector<std::size_t> near;
     for (auto k = by_unknown.begin(); k != by_unknown.end();) {
       const Index j = k->first;
       const auto at_j = rows_of(j);
       k += static_cast<std::ptrdiff_t>(at_j.size());
+      near.clear();
       for (Index p = pattern_.colptr[j]; p < pattern_.colptr[j + 1]; ++p) {
         for (const auto& a : rows_of(pattern_.rowind[p])) {
-          for (const auto& b : at_j) {
-            if (a.second == b.second) continue;
-            links.emplace_back(a.second, b.second);
-            links.emplace_back(b.second, a.second);
-          }
+          if (marked[a.second] == j) continue;
+          marked[a.second] = j;
+          near.push_back(a.second);
+        }
+      }
+      for (const std::size_t a : near) {
+        for (const auto& b : at_j) {
+          if (a == b.second) continue;
+          links.emplace_back(a, b.second);
+          links.emplace_back(b.second, a);
         }
       }
     }

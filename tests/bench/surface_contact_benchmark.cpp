@@ -8,7 +8,7 @@
 //   build/tests/bench/saasgaps_surface_contact_bench --quad8 --dofs 1.5e5 [--eccentric 2]
 //
 // --quad8: the same fit as a quarter of both rings of quad8 elements, mid-side nodes on the circles
-// (shrink_fit_rings.hpp's quarter_shrink_fit_quad8: 5 shaft edges to 4 of the hub's, as the issue's
+// (shrink_fit_rings.hpp's quarter_shrink_fit: 5 shaft edges to 4 of the hub's, as the issue's
 // 20 against 16), curved 3-node contact surfaces; --eccentric e there widens the bore from 0 at 0
 // degrees to e interferences at 90 (e > 1: the fit opens towards 90 degrees).
 //
@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
   if (quad8) {
     faces = {around / 4, around / 4 * 4 / 5};
     radial = std::max(1, static_cast<int>(std::lround(target_dofs / (6.0 * (faces[0] + faces[1])))));
-    m = testing::shrink_fit_rings::quarter_shrink_fit_quad8(radial, faces, eccentric);
+    m = testing::shrink_fit_rings::quarter_shrink_fit(radial, faces, eccentric);
   } else {
     m = testing::shrink_fit_rings::shrink_fit(AnalysisType::plane_strain, radial, faces);
     move_shaft(m, eccentric * testing::shrink_fit_rings::delta);

@@ -143,46 +143,17 @@ void add_gap_row(Model& model, const std::vector<int>& a, const std::vector<int>
   }
 }
 
-Quad8Grid add_quad8_grid(Model& model, int ni, int nj, const std::function<Vec2(double, double)>& map, int material) {
-  Quad8Grid grid{ni, nj, {}};
-  int node_id = max_node_id(model);
-  for (int j = 0; j <= 2 * nj; ++j) {
-    for (int i = 0; i <= 2 * ni; ++i) {
-      if (i % 2 == 1 && j % 2 == 1) {
-        grid.nodes.push_back(-1);
-        continue;
-      }
-      const Vec2 x = map(0.5 * i / ni, 0.5 * j / nj);
-      grid.nodes.push_back(static_cast<int>(model.nodes.size()));
-      model.nodes.push_back({++node_id, x.x(), x.y()});
-    }
-  }
-  int element_id = max_element_id(model);
-  for (int j = 0; j < nj; ++j) {
-    for (int i = 0; i < ni; ++i) {
-      const int a = 2 * i, b = 2 * j;
-      Element e;
-      e.id = ++element_id;
-      e.type = ElementType::quad8;
-      e.node_count = 8;
-      e.nodes = {grid.at(a, b),     grid.at(a + 2, b),     grid.at(a + 2, b + 2), grid.at(a, b + 2),
-                 grid.at(a + 1, b), grid.at(a + 2, b + 1), grid.at(a + 1, b + 2), grid.at(a, b + 1)};
-      e.material = material;
-      model.elements.push_back(e);
-    }
-  }
-  return grid;
-}
-
-std::vector<std::array<int, 2>> Quad8Grid::row_edges(int j) const {
+std::vector<std::array<int, 2>> QuadraticGrid::row_edges(int j) const {
   std::vector<std::array<int, 2>> edges;
   for (int i = 0; i < ni; ++i) edges.push_back({corner(i, j), corner(i + 1, j)});
   return edges;
 }
 
-std::vector<int> Quad8Grid::row_nodes(int j) const {
+std::vector<int> QuadraticGrid::row_nodes(int j) const {
   std::vector<int> row;
-  for (int i = 0; i <= 2 * ni; ++i) row.push_back(at(i, 2 * j));
+  for (int I = 0; I <= 2 * ni; ++I) {
+    if (at(I, 2 * j) >= 0) row.push_back(at(I, 2 * j));
+  }
   return row;
 }
 

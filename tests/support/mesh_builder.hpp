@@ -34,6 +34,12 @@ struct QuadraticGrid {
   /// of the cell, the second -1 for quadrilaterals).
   std::vector<std::array<int, 2>> cells;
   [[nodiscard]] int at(int I, int J) const { return nodes[static_cast<std::size_t>(I + (2 * ni + 1) * J)]; }
+  /// Corner (i, j) of the cell grid, i in 0..ni, j in 0..nj.
+  [[nodiscard]] int corner(int i, int j) const { return at(2 * i, 2 * j); }
+  /// The corner pairs of the element edges along corner row j (i = 0..ni-1): a contact surface's edges.
+  [[nodiscard]] std::vector<std::array<int, 2>> row_edges(int j) const;
+  /// Every node of corner row j (corners and, for the quadratic families, mid-side nodes), I from 0 up.
+  [[nodiscard]] std::vector<int> row_nodes(int j) const;
 };
 
 /// Adds ni x nj cells of tri6, quad8 or quad9 (quad4i and saas: the corners only) of `material`,
@@ -46,25 +52,6 @@ QuadraticGrid add_quadratic_grid(Model& model, ElementType type, int ni, int nj,
 /// The element edges along a side of the grid, 'b' (J = 0), 'r' (I = 2 ni), 't' (J = 2 nj) or 'l'
 /// (I = 0), as thermal edges (element index, corner a, corner b).
 std::vector<ThermalEdge> quadratic_grid_side(const Model& model, const QuadraticGrid& grid, char side);
-
-/// Node indices of a structured grid of quad8 elements: (2 ni + 1) x (2 nj + 1) positions, corners at
-/// even (i, j), mid-side nodes where one of them is odd, none where both are (-1).
-struct Quad8Grid {
-  int ni = 0;
-  int nj = 0;
-  std::vector<int> nodes;  ///< index of position (i, j) at i + (2 ni + 1) j, i in 0..2 ni
-  [[nodiscard]] int at(int i, int j) const { return nodes[static_cast<std::size_t>(i + (2 * ni + 1) * j)]; }
-  /// Corner (i, j) of the element grid, i in 0..ni.
-  [[nodiscard]] int corner(int i, int j) const { return at(2 * i, 2 * j); }
-  /// The corner pairs of element row j's edges along i (row j of corners, i = 0..ni-1).
-  [[nodiscard]] std::vector<std::array<int, 2>> row_edges(int j) const;
-  /// Every node (corners and mid-side) of corner row j, i from 0 up.
-  [[nodiscard]] std::vector<int> row_nodes(int j) const;
-};
-
-/// As add_grid, with quad8 elements whose mid-side nodes are at map of the mid parameters (on the
-/// curves map draws: the true circle of a ring's face).
-Quad8Grid add_quad8_grid(Model& model, int ni, int nj, const std::function<Vec2(double, double)>& map, int material);
 
 /// A ring r0..r1 meshed on its own: `radial` x `around` quadrilaterals (grid i radial, j round).
 /// Plane analyses: the whole ring about the origin, closed round (grid row `around` is row 0, so

@@ -38,7 +38,7 @@ Model shrink_fit(AnalysisType type, int radial, std::array<int, 2> around) {
   return m;
 }
 
-Model quarter_shrink_fit_quad8(int radial, std::array<int, 2> around, double eccentricity) {
+Model quarter_shrink_fit(int radial, std::array<int, 2> around, double eccentricity, ElementType type) {
   Model m;
   m.analysis = AnalysisType::plane_strain;
   m.materials = {isotropic_material(1, E1, nu1), isotropic_material(2, E2, nu2)};
@@ -50,9 +50,10 @@ Model quarter_shrink_fit_quad8(int radial, std::array<int, 2> around, double ecc
     };
   };
   // Grid i runs radially, j round the quarter (counter-clockwise elements).
-  const Quad8Grid shaft = add_quad8_grid(m, radial, around[0], annulus(a1, b + 0.5 * delta, 0.0), 0);
-  const Quad8Grid hub = add_quad8_grid(m, radial, around[1], annulus(b - 0.5 * delta, b2, eccentricity * delta), 1);
-  const auto column = [](const Quad8Grid& g, int i) {
+  const QuadraticGrid shaft = add_quadratic_grid(m, type, radial, around[0], annulus(a1, b + 0.5 * delta, 0.0), 0);
+  const QuadraticGrid hub =
+      add_quadratic_grid(m, type, radial, around[1], annulus(b - 0.5 * delta, b2, eccentricity * delta), 1);
+  const auto column = [](const QuadraticGrid& g, int i) {
     std::vector<std::array<int, 2>> edges;
     for (int j = 0; j < g.nj; ++j) edges.push_back({g.corner(i, j), g.corner(i, j + 1)});
     return edges;
@@ -60,11 +61,9 @@ Model quarter_shrink_fit_quad8(int radial, std::array<int, 2> around, double ecc
   ContactSettings& contact = m.contact.emplace();
   contact.surfaces = {{"shaft", column(shaft, radial)}, {"hub", column(hub, 0)}};
   contact.pairs.emplace_back().surfaces = {0, 1};
-  for (const Quad8Grid* g : {&shaft, &hub}) {
-    for (int i = 0; i <= 2 * g->ni; ++i) {
-      constrain(m, g->at(i, 0), std::nullopt, 0.0);          // on the x axis: u_y = 0
-      constrain(m, g->at(i, 2 * g->nj), 0.0, std::nullopt);  // on the y axis: u_x = 0
-    }
+  for (const QuadraticGrid* g : {&shaft, &hub}) {
+    for (const int n : g->row_nodes(0)) constrain(m, n, std::nullopt, 0.0);      // on the x axis: u_y = 0
+    for (const int n : g->row_nodes(g->nj)) constrain(m, n, 0.0, std::nullopt);  // on the y axis: u_x = 0
   }
   fill_temperatures(m, 0.0);
   return m;

@@ -40,11 +40,14 @@ double lame_interference_pressure(AnalysisType type);
 /// plane-strain state of a long fit). Materials: the inner ring's elements come first.
 Model shrink_fit(AnalysisType type, int radial, std::array<int, 2> around);
 
-/// The plane-strain fit as a quarter of both rings of quad8 elements (mid-side nodes on the true
-/// circles), symmetric on both axes: `radial` elements through each ring, around[0] edges on the
-/// shaft's face (side A, "shaft"), around[1] on the hub's ("hub"). eccentricity e > 0 moves the
-/// hub's bore out by e delta angle / 90 degrees: the interference falls from delta at 0 degrees to
-/// (1 - e) delta at 90, so for e > 1 the fit opens towards the y axis (a partial contact).
-Model quarter_shrink_fit_quad8(int radial, std::array<int, 2> around, double eccentricity = 0.0);
+/// The plane-strain fit as a quarter of both rings, of quad8 elements (mid-side nodes on the true
+/// circles) or any family add_quadratic_grid builds (`saas`: the SAAS element, straight edges whose
+/// corners lie on the circles), symmetric on both axes: `radial` elements through each ring,
+/// around[0] edges on the shaft's face (side A, "shaft"), around[1] on the hub's ("hub").
+/// eccentricity e > 0 moves the hub's bore out by e delta angle / 90 degrees: the interference falls
+/// from delta at 0 degrees to (1 - e) delta at 90, so for e > 1 the fit opens towards the y axis (a
+/// partial contact).
+Model quarter_shrink_fit(int radial, std::array<int, 2> around, double eccentricity = 0.0,
+                         ElementType type = ElementType::quad8);
 
 }  // namespace saasgaps::testing::shrink_fit_rings

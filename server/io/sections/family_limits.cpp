@@ -68,26 +68,6 @@ std::vector<InputIssue> element_family_input_issues(const Model& model) {
       }
     }
   }
-
-  // Contact surfaces on quadratic edges carry contact (solver/mortar, 3-node edges as two halves);
-  // heat conduction across them (contact conductance) does not yet.
-  if (model.contact && model.thermal) {
-    for (std::size_t i = 0; i < model.contact->surfaces.size(); ++i) {
-      const SurfaceDefinition& s = model.contact->surfaces[i];
-      const std::string edges = pointer_append(pointer_append("/contact/surfaces", i), "edges");
-      for (std::size_t k = 0; k < s.edges.size(); ++k) {
-        const auto found = curved.find(key(s.edges[k][0], s.edges[k][1]));
-        if (found == curved.end()) continue;
-        issues.push_back({pointer_append(edges, k),
-                          "surface \"" + s.name + "\": the edge [" + std::to_string(node_id(model, s.edges[k][0])) +
-                              ", " + std::to_string(node_id(model, s.edges[k][1])) + "] is an edge of " +
-                              element_words(model, found->second.element) +
-                              ": heat conduction across contact surfaces on quadratic elements is not available "
-                              "yet; mesh the bodies that touch with 3- or 4-node elements for a thermal run"});
-      }
-    }
-  }
-
   return issues;
 }
 

@@ -175,7 +175,7 @@ void SectionReader::end_items(Section s, std::size_t count) {
 
 Model SectionReader::finish() {
   if (issues_.empty()) {
-    // What the quadratic families do not carry yet (gap elements, contact surfaces, conduction).
+    // What the quadratic families do not carry yet (gap elements along their edges).
     if (std::vector<InputIssue> limits = element_family_input_issues(model_); !limits.empty()) {
       throw ModelError(std::move(limits));
     }
@@ -498,24 +498,27 @@ void SectionReader::read_pressures(const Obj& loads, Loads& into) {
       continue;
     }
     p.element = found->second.front();
-    if (middle_named) {
-      // The owner has this edge (found above); a straight one has no mid-side node.
-      const ElementEdge side = element_edge(model_, static_cast<std::size_t>(p.element), edge->nodes[0], last);
-      const std::optional<int> middle = side.count == 3 ? std::optional<int>(side.node[1]) : std::nullopt;
-      if (middle != edge->nodes[1]) {
-        const Element& el = model_.elements[static_cast<std::size_t>(p.element)];
-        report(o.at("nodes"), "the middle node of " + quote(ids) + " is not the mid-side node of element " +
-                                  std::to_string(el.id) + "'s edge between its corners" +
-                                  (middle ? " (that is node " + std::to_string(model_.nodes[static_cast<std::size_t>(*middle)].id) + ")"
-                                          : " (a straight edge of a " + std::string(element_type_names.name(el.type)) +
-                                                " element, which has none: name its two corners)"));
-        continue;
-      }
+    if (middle_named && !check_middle_node(ids, o.at("nodes"), p.element, edge->nodes[0], edge->nodes[1], last)) {
+      continue;
     }
     p.node_a = edge->nodes[0];
     p.node_b = last;
     into.pressures.push_back(p);
   }
+}
+
+bool SectionReader::check_middle_node(const json& ids, const std::string& pointer, int e, int a, int middle, int b) {
+  // The owner has this edge (found by its corners); a straight one has no mid-side node.
+  const ElementEdge side = element_edge(model_, static_cast<std::size_t>(e), a, b);
+  const std::optional<int> own = side.count == 3 ? std::optional<int>(side.node[1]) : std::nullopt;
+  if (own == middle) return true;
+  const Element& el = model_.elements[static_cast<std::size_t>(e)];
+  report(pointer, "the middle node of " + quote(ids) + " is not the mid-side node of element " + std::to_string(el.id) +
+                      "'s edge between its corners" +
+                      (own ? " (that is node " + std::to_string(model_.nodes[static_cast<std::size_t>(*own)].id) + ")"
+                           : " (a straight edge of a " + std::string(element_type_names.name(el.type)) +
+                                 " element, which has none: name its two corners)"));
+  return false;
 }
 
 /// {default?, nodal?: [{node, T}]}; one temperature per node.

@@ -404,6 +404,9 @@ class SectionReader {
   std::optional<ThermalBoundary> read_thermal_boundary(const json& item, const std::string& pointer,
                                                         const EdgeOwners& owners);
   std::optional<ThermalEdge> read_thermal_edge(const json& ids, const std::string& pointer, const EdgeOwners& owners);
+  /// Whether `middle` is the mid-side node of solid element e's edge between corners a and b (an
+  /// edge named [a, m, b]); if not, reports so at `pointer`, naming the edge `ids` and the node that is.
+  bool check_middle_node(const json& ids, const std::string& pointer, int e, int a, int middle, int b);
   void check_thermal_materials(const Thermal& thermal);
   void read_output_times(const Obj& o, Thermal& thermal);
   [[nodiscard]] EdgeOwners solid_edge_owners() const;

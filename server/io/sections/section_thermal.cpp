@@ -1,5 +1,7 @@
 /// Heat conduction in the model: the materials' k and c, the `thermal` section, and the conductance
 /// of gap elements (solver/thermal_analysis.hpp says how they are used).
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "io/json/value_quote.hpp"
@@ -67,23 +69,29 @@ void SectionReader::read_heat_properties(const Obj& material, Material& m) {
   m.stores_heat = stores_heat;
 }
 
-/// [a, b]: two node ids, consecutive corners of exactly one solid element (a boundary edge).
+/// [a, b]: two node ids, consecutive corners of exactly one solid element (a boundary edge); or
+/// [a, m, b], naming the mid-side node m of a quadratic element's edge too (as a pressure may).
 std::optional<ThermalEdge> SectionReader::read_thermal_edge(const json& ids, const std::string& pointer,
                                                             const EdgeOwners& owners) {
-  if (!ids.is_array() || ids.size() != 2) {
-    report(pointer, "an edge is an array of 2 node ids [a, b], got " + describe(ids));
+  if (!ids.is_array() || (ids.size() != 2 && ids.size() != 3)) {
+    report(pointer, "an edge is an array of 2 node ids [a, b] (or [a, m, b] with the mid-side node of a quadratic "
+                    "element's edge), got " + describe(ids));
     return std::nullopt;
   }
-  std::array<int, 2> nodes{-1, -1};
-  for (std::size_t k = 0; k < 2; ++k) {
+  const std::size_t count = ids.size();
+  std::array<int, 3> nodes{-1, -1, -1};
+  for (std::size_t k = 0; k < count; ++k) {
     const Entry* node = resolve_node(ids[k], Where(pointer, k));
     if (node != nullptr) nodes[k] = node->index;
   }
-  if (nodes[0] < 0 || nodes[1] < 0 || !solids_complete_) return std::nullopt;
-  const auto found = owners.find(std::minmax(nodes[0], nodes[1]));
-  if (nodes[0] == nodes[1] || found == owners.end()) {
-    report(pointer, "no solid element has the edge " + quote(ids) +
-                        ": the two nodes must be consecutive corners of one solid element");
+  const int a = nodes[0], b = nodes[count - 1];
+  if (std::count(nodes.begin(), nodes.begin() + static_cast<std::ptrdiff_t>(count), -1) > 0 || !solids_complete_) {
+    return std::nullopt;
+  }
+  const auto found = owners.find(std::minmax(a, b));
+  if (a == b || found == owners.end()) {
+    report(pointer, "no solid element has the edge " + quote(ids) + (count == 3 ? ": its end nodes" : ": the two nodes") +
+                        " must be consecutive corners of one solid element");
     return std::nullopt;
   }
   if (found->second.size() > 1) {
@@ -92,7 +100,8 @@ std::optional<ThermalEdge> SectionReader::read_thermal_edge(const json& ids, con
                         "which exactly one solid element has");
     return std::nullopt;
   }
-  return ThermalEdge{found->second.front(), nodes[0], nodes[1]};
+  if (count == 3 && !check_middle_node(ids, pointer, found->second.front(), a, nodes[1], b)) return std::nullopt;
+  return ThermalEdge{found->second.front(), a, b};
 }
 
 /// {edges: [[a, b], ...], and exactly one of temperature, flux, film with ambient, or emissivity with

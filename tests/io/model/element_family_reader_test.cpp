@@ -1,6 +1,7 @@
 // The reader on element families: types, integrations, shapes, and what quadratic elements do not
-// carry yet (gap elements along their edges, conductance across contact surfaces on them), each an error at its
-// JSON Pointer naming the element and the value; and the same model through the text path.
+// carry yet (gap elements along their edges), an error at its JSON Pointer naming the element and the
+// value; what they do carry (contact surfaces with a conductance in a thermal run); and the same model
+// through the text path.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -134,13 +135,45 @@ TEST(ElementFamilyReader, HeatConductionOnQuadraticElementsReadsItsEdgesThroughT
   EXPECT_EQ(m.thermal->boundary[1].edges[0].element, 0);
 }
 
-TEST(ElementFamilyReader, ConductanceAcrossAQuadraticContactSurfaceIsNotAvailableYet) {
+TEST(ElementFamilyReader, AThermalEdgeMayNameItsMidSideNode) {
+  json d = two_bodies();
+  d["materials"][0]["table"][0]["k"] = 1.0;
+  d["thermal"] = json::parse(R"({"type": "steady", "boundary": [{"edges": [[1, 5, 2]], "temperature": 100},
+                                                               {"edges": [[3, 7, 4]], "flux": 2},
+                                                               {"edges": [[11, 12]], "film": 2, "ambient": 20}]})");
+  const Model named = read_model(d);
+  d["thermal"]["boundary"][0]["edges"][0] = json::array({1, 2});
+  d["thermal"]["boundary"][1]["edges"][0] = json::array({3, 4});
+  const Model corners = read_model(d);
+  ASSERT_TRUE(named.thermal && corners.thermal);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const ThermalEdge& a = named.thermal->boundary[k].edges[0];
+    const ThermalEdge& b = corners.thermal->boundary[k].edges[0];
+    EXPECT_EQ(a.element, b.element);
+    EXPECT_EQ(a.node_a, b.node_a);
+    EXPECT_EQ(a.node_b, b.node_b);
+  }
+  // A middle node that is not the edge's mid-side node, and a straight edge named with three nodes.
+  d["thermal"]["boundary"][0]["edges"][0] = json::array({1, 6, 2});
+  expect_issue(d, "/thermal/boundary/0/edges/0", {"[1, 6, 2]", "element 1", "node 5"});
+  d["thermal"]["boundary"][0]["edges"][0] = json::array({1, 2});
+  d["thermal"]["boundary"][2]["edges"][0] = json::array({11, 9, 12});
+  expect_issue(d, "/thermal/boundary/2/edges/0", {"element 2", "straight edge"});
+  d["thermal"]["boundary"][2]["edges"][0] = json::array({11, 12, 3, 4});
+  expect_issue(d, "/thermal/boundary/2/edges/0", {"[a, m, b]"});
+}
+
+TEST(ElementFamilyReader, ConductanceAcrossAQuadraticContactSurfaceIsRead) {
   json d = two_bodies();
   d["materials"][0]["table"][0]["k"] = 1.0;
   d["thermal"] = json::parse(R"({"type": "steady", "boundary": [{"edges": [[1, 2]], "temperature": 100}]})");
   d["contact"] = json::parse(R"({"surfaces": [{"name": "top", "edges": [[3, 4]]}, {"name": "under", "edges": [[9, 10]]}],
-                                 "pairs": [{"surfaces": ["top", "under"]}]})");
-  expect_issue(d, "/contact/surfaces/0/edges/0", {"surface \"top\"", "[3, 4]", "element 1 (quad8)", "heat conduction"});
+                                 "pairs": [{"surfaces": ["top", "under"], "conductance": {"closed": 5}}]})");
+  const Model m = read_model(d);
+  ASSERT_TRUE(m.contact && m.thermal);
+  ASSERT_TRUE(m.contact->pairs[0].conductance.has_value());
+  EXPECT_EQ(m.contact->pairs[0].conductance->closed[0].h, 5.0);
+  EXPECT_EQ(m.contact->surfaces[0].edges.size(), 1U);  // the quad8's edge 3-7-4, by its corners
 }
 
 TEST(ElementFamilyReader, APressureEdgeMayNameItsMidSideNode) {
