@@ -361,6 +361,17 @@ def exercise(client, repo, document_bytes, directory):
     client.request("POST", "/v1/imports", **multipart(ring_fit[1:]), expect=400)
     client.request("POST", "/v1/imports", **multipart([("assembly", "a.json", b'{"mesh": 1}')]), expect=422)
 
+    # A study of an assembly: the study and the mesh its assembly names, as multipart/form-data.
+    rings = json.loads((examples / "studies" / "press-fit-interference.study.json").read_text())
+    rings["parameters"][0]["values"] = [1.0e-4, 2.0e-4]
+    rings_parts = [("study", "rings.study.json", json.dumps(rings).encode()),
+                   ("mesh", "press-fit-rings.geo", (examples / "studies" / "press-fit-rings.geo").read_bytes())]
+    rings_id = client.json("POST", "/v1/studies", **multipart(rings_parts), expect=202)["id"]
+    client.request("GET", f"/v1/studies/{rings_id}/events", expect=200)
+    check(client.json("GET", f"/v1/studies/{rings_id}", expect=200)["status"] == "converged", "an assembly study")
+    client.request("POST", "/v1/studies", **multipart(rings_parts[1:]), expect=400)  # no part "study"
+    client.json("POST", "/v1/studies", body=rings, expect=422)  # an assembly study without its files
+
     client.request("DELETE", f"/v1/jobs/{job}", expect=204)
     client.request("GET", f"/v1/jobs/{job}", expect=404)
 
