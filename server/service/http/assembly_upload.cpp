@@ -1,42 +1,18 @@
 #include "service/http/assembly_upload.hpp"
 
-#include <stdlib.h>
-
+#include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <system_error>
 
 #include "io/import/assembly_reader.hpp"
 #include "io/model/model_reader.hpp"
 #include "service/http/problem.hpp"
+#include "service/ops/private_directory.hpp"
 
 namespace saasgaps::service {
 
 namespace {
 
 namespace fs = std::filesystem;
-
-/// A directory only this process can use (mkdtemp: mode 0700), removed with everything in it.
-class PrivateDirectory {
- public:
-  PrivateDirectory() {
-    std::string pattern = (fs::temp_directory_path() / "saasgaps-import-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) {
-      throw std::system_error(errno, std::generic_category(), "cannot create a directory for the upload");
-    }
-    path_ = pattern;
-  }
-  ~PrivateDirectory() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  PrivateDirectory(const PrivateDirectory&) = delete;
-  PrivateDirectory& operator=(const PrivateDirectory&) = delete;
-  [[nodiscard]] const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
 
 /// A file name an upload may carry: one plain component, not hidden, no separators.
 bool plain_name(const std::string& name) {
@@ -46,28 +22,32 @@ bool plain_name(const std::string& name) {
 
 }  // namespace
 
-nlohmann::json import_upload(const httplib::Request& req) {
+AssemblyUpload import_upload(const httplib::Request& req) {
   if (!req.is_multipart_form_data()) {
     throw HttpError(400, "Bad Request",
                     "POST /v1/imports takes multipart/form-data: a part \"assembly\" (the assembly document) and "
                     "one part per file it names, with that file's name as its filename");
   }
   if (!req.has_file("assembly")) throw HttpError(400, "Bad Request", "the upload has no part named \"assembly\"");
-  const nlohmann::json assembly = io::parse_document(req.get_file_value("assembly").content);
-  const PrivateDirectory dir;
+  AssemblyUpload upload;
+  upload.input.assembly = req.get_file_value("assembly").content;
+  upload.assembly = io::parse_document(upload.input.assembly);
+  const PrivateDirectory dir("saasgaps-import-");
   for (const auto& [field, part] : req.files) {
     if (field == "assembly") continue;
     if (!plain_name(part.filename)) {
       throw HttpError(400, "Bad Request", "part \"" + field + "\" must carry a plain file name (no directories, not "
                                           "hidden), got \"" + part.filename + "\"");
     }
-    const fs::path target = dir.path() / part.filename;
-    if (fs::exists(target)) throw HttpError(400, "Bad Request", "two parts carry the file name \"" + part.filename + "\"");
-    std::ofstream out(target, std::ios::binary);
-    out.write(part.content.data(), static_cast<std::streamsize>(part.content.size()));
-    if (!out) throw std::runtime_error("cannot store the uploaded file " + part.filename);
+    if (fs::exists(dir.path() / part.filename)) {
+      throw HttpError(400, "Bad Request", "two parts carry the file name \"" + part.filename + "\"");
+    }
+    dir.write(part.filename, part.content);
+    upload.input.files.emplace_back(part.filename, part.content);
   }
-  return io::import_assembly(assembly, dir.path(), io::FileAccess::base_only);
+  std::sort(upload.input.files.begin(), upload.input.files.end());
+  upload.model = io::import_assembly(upload.assembly, dir.path(), io::FileAccess::base_only);
+  return upload;
 }
 
 }  // namespace saasgaps::service

@@ -9,10 +9,19 @@
 
 #include <nlohmann/json.hpp>
 
+#include "service/store/job_store.hpp"
+
 namespace saasgaps::service {
 
-/// The model document. Throws HttpError 400 for a request that is not such an upload, ModelError
+/// What an upload holds, imported.
+struct AssemblyUpload {
+  nlohmann::json assembly;  ///< the assembly document
+  AdaptiveInput input;      ///< its text and the uploaded files (what an adaptive job keeps)
+  nlohmann::json model;     ///< the model document of its (first) mesh
+};
+
+/// The upload imported. Throws HttpError 400 for a request that is not such an upload, ModelError
 /// (422) with every issue of the assembly, each at its JSON Pointer.
-nlohmann::json import_upload(const httplib::Request& req);
+AssemblyUpload import_upload(const httplib::Request& req);
 
 }  // namespace saasgaps::service
