@@ -17,17 +17,7 @@ JobStore::Submitted JobStore::submit_adaptive(const std::string& model, const st
   try {
     auto db = pool_->lease();
     WriteTransaction tx(*db);
-    if (idempotency_key) {
-      Statement q = db->prepare("SELECT id, request_digest FROM jobs WHERE idempotency_key = ?");
-      q.bind(1, *idempotency_key);
-      if (q.step()) {
-        if (q.text(1) != request_digest) {
-          throw JobConflict("Idempotency-Key \"" + *idempotency_key + "\" was used for a different request (job " +
-                            std::to_string(q.integer(0)) + ")");
-        }
-        return {require_job(*db, q.integer(0)), true};
-      }
-    }
+    if (std::optional<JobRecord> earlier = replayed_job(*db, idempotency_key, request_digest)) return {*earlier, true};
     const std::int64_t id = insert_job_row(*db, model, title, max_iterations, idempotency_key, request_digest, {});
     db->prepare("INSERT INTO adapt_inputs (job_id, assembly) VALUES (?, ?)").bind(1, id).bind(2, input.assembly).run();
     for (const auto& [name, content] : input.files) {

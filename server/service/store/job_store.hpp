@@ -364,6 +364,10 @@ class JobStore {
   void hand_on(std::int64_t id, int attempt, const StoreError& why);
   /// Records the interruptions held in memory; StoreError when it cannot.
   void record_handed_on();
+  /// The job an earlier request with this Idempotency-Key made (inside the caller's transaction);
+  /// none without a key or a job; JobConflict when that request's digest differs.
+  static std::optional<JobRecord> replayed_job(Connection& db, const std::optional<std::string>& idempotency_key,
+                                               const std::string& request_digest);
   Submitted insert_job(const std::string& model, const std::string& title, int max_iterations,
                        const std::optional<std::string>& idempotency_key, const std::string& request_digest,
                        const std::optional<std::string>& cache_key);
