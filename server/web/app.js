@@ -676,7 +676,24 @@ async function showJob(id) {
     $("#thermal tbody").insertBefore(tr, later === undefined ? null : thermalRows.get(later));
   }
 
+  // Adaptive jobs: the cycles stored so far (job.adaptation) and their convergence plot.
+  function showAdaptation(job) {
+    if (!Array.isArray(job.adaptation)) return;
+    $("#adapt-section").hidden = false;
+    const cell = text => Object.assign(document.createElement("td"), { textContent: text });
+    $("#adapt tbody").replaceChildren(...job.adaptation.map(c => {
+      const tr = document.createElement("tr");
+      const s = c.seconds || {};
+      const t = [s.mesh, s.import, s.solve, s.estimate].map(v => (v || 0).toFixed(2)).join(" / ");
+      tr.append(cell(c.cycle), cell(c.nodes), cell(c.elements), cell(c.unknowns),
+                cell(`${(100 * c.relative_error).toPrecision(3)} %`), cell(t));
+      return tr;
+    }));
+    if (job.adaptation.length) $("#adapt-plot").src = withToken(`${base}/plots/adaptation.svg?n=${job.adaptation.length}&state=${job.state}`);
+  }
+
   function showState(job) {
+    showAdaptation(job);
     $("#job-title").textContent = job.title;
     $("#job-id").textContent = job.id;
     stateBadge($("#job-state"), job);
@@ -946,6 +963,7 @@ async function showJob(id) {
       api(base).then(showState).catch(() => {});
     });
     source.addEventListener("thermal", event => addThermalRow(JSON.parse(event.data)));
+    source.addEventListener("adapt_cycle", () => api(base).then(showState).catch(() => {}));
     source.addEventListener("state", () => api(base).then(showState).catch(() => {}));
     source.onerror = () => {
       // A finished job closes its stream; stop reconnecting then.

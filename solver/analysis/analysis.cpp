@@ -404,6 +404,7 @@ class GapContactAnalysis {
   /// Recovered nodal stresses and the error estimate (solver/recovery) of the evaluated state, from
   /// the laws and the material points' stresses elements[] reports.
   void recover(const RestartState& state, const Evaluation& v, Solution& s) const {
+    const auto started = std::chrono::steady_clock::now();
     const IncrementSystem& now = *now_;
     StressRecovery r = recover_stresses(
         now.model, state.displacement,
@@ -415,6 +416,7 @@ class GapContactAnalysis {
     for (std::size_t e = 0; e < s.elements.size(); ++e) s.elements[e].error = r.element_error[e];
     s.recovered = std::move(r.stress);
     s.error_estimate = r.estimate;
+    s.recovery_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   }
 
   /// The supports' forces in the state's last solve (reactions.hpp). A stepped run stopped right after

@@ -128,6 +128,13 @@ struct ThermalResult {
   int passes = 1;                 ///< thermal-contact passes (conducting gaps), else 1
   int time_steps = 0;             ///< transient: steps taken
   int factorizations = 0;         ///< of the conduction matrix
+  /// The recovered nodal heat flux (q_r, q_z, 0, 0) per node and material side, each element's
+  /// estimated flux error in the conduction energy norm, and the model's estimate, with T above
+  /// (solver/recovery/flux_recovery.hpp); empty / none before a conduction solve.
+  RecoveredField recovered_flux;
+  std::vector<double> heat_error;
+  std::optional<ErrorEstimate> heat_error_estimate;
+  double recovery_seconds = 0.0;  ///< wall time of that recovery and estimate (not written to the result)
 };
 
 struct Solution {
@@ -147,6 +154,9 @@ struct Solution {
   RecoveredField recovered;
   /// The estimate of the stresses' error in the energy norm; none before iteration 1.
   std::optional<ErrorEstimate> error_estimate;
+  /// Wall time (s) of the recovery and the error estimate (stresses, and heat flux with `thermal`),
+  /// summed over the solves of the run; not written to the result (the adaptive loop's time split).
+  double recovery_seconds = 0.0;
 };
 
 }  // namespace saasgaps

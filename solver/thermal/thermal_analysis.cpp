@@ -1,10 +1,12 @@
 #include "solver/thermal/thermal_analysis.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
 #include "solver/lac/sparse_cholesky.hpp"
+#include "solver/recovery/flux_recovery.hpp"
 #include "solver/thermal/contact_conductance.hpp"
 #include "solver/thermal/thermal_system.hpp"
 #include "solver/thermal/transient_coupling.hpp"
@@ -12,6 +14,20 @@
 namespace saasgaps {
 
 namespace {
+
+/// The recovered heat flux and its error estimate (solver/recovery/flux_recovery.hpp) of the
+/// result's temperatures, with the conductivities the last solve used.
+void estimate_flux_error(const Model& model, std::span<const Conductivity> k, ThermalResult& result) {
+  const auto started = std::chrono::steady_clock::now();
+  std::vector<Eigen::Matrix2d> tensors;
+  tensors.reserve(k.size());
+  for (const Conductivity& c : k) tensors.push_back(c.tensor());
+  FluxRecovery r = recover_heat_flux(model, result.T, tensors);
+  result.recovered_flux = std::move(r.flux);
+  result.heat_error = std::move(r.element_error);
+  result.heat_error_estimate = r.estimate;
+  result.recovery_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
 
 double largest_magnitude(std::span<const double> T) {
   double m = 0.0;
@@ -179,6 +195,7 @@ ThermalResult solve_steady_conduction(const Model& model, std::span<const double
       result.factorizations = solver.factorizations();
       result.flux = system.fluxes(k_next, T);
       result.T = std::move(T);
+      estimate_flux_error(model, k_next, result);
       return result;
     }
     k = std::move(k_next);
@@ -247,8 +264,10 @@ ThermalResult solve_transient_conduction(const Model& model, std::span<const dou
     H = std::move(*next);
   }
   result.factorizations = solver.factorizations();
-  result.flux = system.fluxes(system.conductivities(T), T);
+  const std::vector<Conductivity> k_last = system.conductivities(T);
+  result.flux = system.fluxes(k_last, T);
   result.T = std::move(T);
+  estimate_flux_error(model, k_last, result);
   return result;
 }
 

@@ -360,6 +360,7 @@ TEST_F(SolveCommand, AnAdaptiveAssemblyWritesItsCyclesAndSaysWhenALimitStoppedIt
   const Outcome r = saasgaps("solve -q " + path("le1.json") + " -o " + path("le1-result.json"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("adapt cycle 2: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" s, estimate "), std::string::npos) << r.err;  // the time split, per cycle
   const nlohmann::json result = json_of(path("le1-result.json"));
   ASSERT_TRUE(result.contains("adaptation"));
   const nlohmann::json& rows = result["adaptation"];
@@ -369,7 +370,10 @@ TEST_F(SolveCommand, AnAdaptiveAssemblyWritesItsCyclesAndSaysWhenALimitStoppedIt
   EXPECT_LE(rows.back()["relative_error"].get<double>(), 0.03);
   for (std::size_t k = 0; k < rows.size(); ++k) {
     EXPECT_EQ(rows[k]["cycle"], k + 1);
-    for (const char* part : {"mesh", "import", "solve", "sizes"}) EXPECT_GE(rows[k]["seconds"][part].get<double>(), 0.0);
+    for (const char* part : {"mesh", "import", "solve", "estimate", "sizes"}) {
+      EXPECT_GE(rows[k]["seconds"][part].get<double>(), 0.0) << part;
+    }
+    EXPECT_GT(rows[k]["seconds"]["estimate"].get<double>(), 0.0);
   }
   EXPECT_NE(result["message"].get<std::string>().find("adaptation reached relative error"), std::string::npos);
 

@@ -15,6 +15,7 @@
 
 #include "plot/draw/band_levels.hpp"
 #include "plot/draw/band_raster.hpp"
+#include "plot/draw/chart.hpp"
 #include "plot/draw/color_map.hpp"
 #include "plot/draw/contour_bands.hpp"
 #include "plot/draw/nice_scale.hpp"
@@ -225,7 +226,8 @@ TEST(RenderPlot, SmallDocumentDrawsEveryKindOfPlot) {
     request.name = name;
     // two_squares has no history (see the next test), no contact pairs (see FrictionPlot) and no
     // named sets (the force plot's tests: tests/cli/solve_command_test.cpp, the press fit).
-    if (name == "convergence" || name == "friction" || name == "force") continue;
+    // Nor adaptive cycles (AdaptationPlot, below).
+    if (name == "convergence" || name == "friction" || name == "force" || name == "adaptation") continue;
     for (const ImageFormat format : {ImageFormat::png, ImageFormat::svg}) {
       request.format = format;
       const std::string image = render_plot(document, request);
@@ -1032,6 +1034,35 @@ TEST(BandRaster, MeshesAbovePathFillLimitAreRasterized) {
   const std::string above = render_plot(grid_result(200, 100, 1), request);
   EXPECT_NE(above.find("<image"), std::string::npos) << "20,001 elements: an image";
   EXPECT_LT(above.size(), at_limit.size()) << "the image is smaller than 12 paths through 40,000 triangles";
+}
+
+/// The adaptive loop's convergence: error against unknowns on log-log axes (decade ticks labelled
+/// with the values), a point per cycle, the target dashed; a document without cycles is refused.
+TEST(AdaptationPlot, ErrorAgainstUnknownsLogLog) {
+  const Axis a = log_axis(300.0, 40000.0, "unknowns");
+  EXPECT_EQ(a.min, 2.0);
+  EXPECT_EQ(a.max, 5.0);
+  ASSERT_EQ(a.labels.size(), 4U);  // three decades and more: the decades only
+  EXPECT_EQ(a.labels.front(), "100");
+  EXPECT_EQ(a.labels.back(), "100000");
+  const Axis fine = log_axis(0.01, 0.2, "error");
+  EXPECT_NE(std::find(fine.labels.begin(), fine.labels.end(), "0.05"), fine.labels.end());
+
+  json document = {{"title", "LE1"},
+                   {"target_error", 0.01},
+                   {"adaptation",
+                    {{{"cycle", 1}, {"unknowns", 296}, {"relative_error", 0.1237}},
+                     {{"cycle", 2}, {"unknowns", 4898}, {"relative_error", 0.02793}},
+                     {{"cycle", 3}, {"unknowns", 20742}, {"relative_error", 0.011}}}}};
+  PlotRequest request;
+  request.name = "adaptation";
+  request.format = ImageFormat::svg;
+  const std::string svg = render_plot(document, request);
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_GT(svg.size(), 1000U);
+  const std::string csv = render_table(document, request);
+  EXPECT_NE(csv.find("2,4898,0.02793"), std::string::npos) << csv;
+  EXPECT_THROW(render_plot(json{{"title", "none"}}, request), std::invalid_argument);
 }
 
 }  // namespace

@@ -226,11 +226,12 @@ int run_assembly_solve(const SolveOptions& options, const std::string& destinati
     return io::run_adaptive(
         assembly, base, io::FileAccess::anywhere, *settings,
         [&](const Model& model) { return solve_one(options, model, {}, nullptr, cache ? &*cache : nullptr); },
-        [&](const io::AdaptCycle& c) {
+        [&](const io::AdaptCycle& c, const io::AdaptSizes*) {
           std::cerr << "adapt cycle " << c.cycle << ": " << c.nodes << " nodes, " << c.elements
                     << " elements, relative error " << c.relative_error << " (target " << settings->target_error
                     << "; mesh " << c.mesh_seconds << " s, import " << c.import_seconds << " s, solve "
-                    << c.solve_seconds << " s)\n";
+                    << c.solve_seconds << " s, estimate " << c.estimate_seconds << " s, sizes " << c.sizes_seconds
+                    << " s)\n";
         });
   });
   std::cerr << run.message << '\n';

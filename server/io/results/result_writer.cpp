@@ -56,8 +56,9 @@ void write_node_sides(JsonWriter& out, const Model& model, const RecoveredField&
 
 /// temperature: the element's mean; flux: (q_r, q_z) of thermal runs, else nullptr.
 /// with_error: the result carries an error estimate (every solved model's does).
+/// heat_error: the element's estimated flux error (runs with `thermal`), else nullptr.
 void write_element(JsonWriter& out, const Model& model, const Element& el, const ElementResult& e, double temperature,
-                   const Vec2* flux, bool with_error) {
+                   const Vec2* flux, bool with_error, const double* heat_error) {
   out.begin_object()
       .field("angle", e.principal.angle_deg)
       .field("effective", e.effective)
@@ -65,8 +66,9 @@ void write_element(JsonWriter& out, const Model& model, const Element& el, const
       .field("eps_theta", e.strain[th])
       .field("eps_z", e.strain[zz]);
   if (with_error) out.field("error", e.error);
-  out.field("gamma_rz", e.strain[rz])
-      .field("id", e.id)
+  out.field("gamma_rz", e.strain[rz]);
+  if (heat_error != nullptr) out.field("heat_error", *heat_error);
+  out.field("id", e.id)
       .field("material", model.materials[el.material].id);
   out.key("nodes");
   write_node_ids(out, model, el.nodes, el.node_count);
@@ -149,8 +151,9 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s, const 
     const Element& el = model.elements[e];
     double mean = 0.0;  // of the node temperatures, as element_temperature does for the model's loads
     for (int a = 0; a < el.node_count; ++a) mean += T[static_cast<std::size_t>(el.nodes[a])];
+    const bool heat_error = s.thermal && e < s.thermal->heat_error.size();
     write_element(item, model, el, s.elements[e], mean / el.node_count, s.thermal ? &s.thermal->flux[e] : nullptr,
-                  s.error_estimate.has_value());
+                  s.error_estimate.has_value(), heat_error ? &s.thermal->heat_error[e] : nullptr);
   }, pieces);
   out.end_array();
   if (s.error_estimate) {
@@ -164,6 +167,15 @@ void write_result(JsonWriter& out, const Model& model, const Solution& s, const 
   out.key("gaps").begin_array();
   for (std::size_t g = 0; g < s.gaps.size(); ++g) write_gap(out, model, model.gaps->elements[g], s.gaps[g]);
   out.end_array();
+  if (s.thermal && s.thermal->heat_error_estimate) {  // runs with `thermal`: the heat flux's estimate
+    const ErrorEstimate& h = *s.thermal->heat_error_estimate;
+    out.key("heat_error_estimate")
+        .begin_object()
+        .field("energy_norm", h.energy_norm)
+        .field("error", h.error)
+        .field("relative", h.relative)
+        .end_object();
+  }
   out.key("history").begin_array();
   for (const IterationRecord& row : s.history) write_history_row(out, row);
   out.end_array();

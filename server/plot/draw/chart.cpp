@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "plot/draw/nice_scale.hpp"
@@ -39,6 +40,31 @@ Axis integer_axis(int lo, int hi, std::string title, int max_ticks, double paddi
   Axis a = axis_from_scale(s, std::move(title));
   a.min -= padding;
   a.max += padding;
+  return a;
+}
+
+Axis log_axis(double lo, double hi, std::string title) {
+  if (!(lo > 0.0)) lo = 1.0;
+  if (!(hi > lo)) hi = lo * 10.0;
+  Axis a;
+  a.title = std::move(title);
+  a.min = std::floor(std::log10(lo) + 1e-9);
+  a.max = std::ceil(std::log10(hi) - 1e-9);
+  if (a.max <= a.min) a.max = a.min + 1.0;
+  const bool fine = a.max - a.min < 3.0;
+  const int step = static_cast<int>(std::ceil((a.max - a.min) / 8.0));
+  for (int d = static_cast<int>(a.min); d <= static_cast<int>(a.max); ++d) {
+    for (const double m : {1.0, 2.0, 5.0}) {
+      if ((m != 1.0 && (!fine || d == static_cast<int>(a.max))) || (m == 1.0 && (d - static_cast<int>(a.min)) % step != 0)) {
+        continue;
+      }
+      const double value = m * std::pow(10.0, d);
+      char label[32];
+      std::snprintf(label, sizeof label, "%g", value);
+      a.ticks.push_back(std::log10(value));
+      a.labels.emplace_back(label);
+    }
+  }
   return a;
 }
 

@@ -25,6 +25,11 @@ Axis numeric_axis(double lo, double hi, std::string title, int max_ticks = 8);
 /// beyond the end ticks (0.5 keeps the end markers off the frame).
 Axis integer_axis(int lo, int hi, std::string title, int max_ticks = 10, double padding = 0.0);
 
+/// A logarithmic axis over [lo, hi] (both > 0): its coordinates are log10 of the values (a series
+/// on it gives log10 of its values), ticks at the decades (and at 2 and 5 of each when the range
+/// spans fewer than three decades) labelled with the values themselves.
+Axis log_axis(double lo, double hi, std::string title);
+
 struct Series {
   std::string name;  ///< legend text; empty: not in the legend
   std::vector<double> x, y;

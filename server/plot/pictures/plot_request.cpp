@@ -4,6 +4,7 @@
 #include <charconv>
 #include <stdexcept>
 
+#include "plot/pictures/adaptation_plot.hpp"
 #include "plot/pictures/contact_plot.hpp"
 #include "plot/pictures/convergence_plot.hpp"
 #include "plot/pictures/force_plot.hpp"
@@ -46,12 +47,14 @@ std::vector<std::string> plot_names() {
   names.emplace_back("convergence");
   names.emplace_back("friction");
   names.emplace_back("force");
+  names.emplace_back("adaptation");
   return names;
 }
 
 io::ResultSelection result_selection_for(const PlotRequest& request) {
   // The convergence plot reads the history and the gaps, the friction plot the contact pairs: no mesh.
-  if (request.name == "convergence" || request.name == "friction" || request.name == "force") {
+  if (request.name == "convergence" || request.name == "friction" || request.name == "force" ||
+      request.name == "adaptation") {
     return {.mesh = false, .element_keys = {}};
   }
   // Every other plot draws the mesh (result_mesh.cpp), and an element field reads its stored
@@ -75,7 +78,8 @@ namespace {
 std::optional<DataTable> draw(const Canvas& canvas, const PlotResult& result, const PlotRequest& request) {
   require_plot_name(request.name);
   if (request.path) {
-    if (request.name == "convergence" || request.name == "friction" || request.name == "force") {
+    if (request.name == "convergence" || request.name == "friction" || request.name == "force" ||
+        request.name == "adaptation") {
       throw std::invalid_argument("the " + request.name + " plot does not run along a path");
     }
     return draw_path_plot(canvas, result, request.name, *request.path, request.centre);
@@ -86,6 +90,8 @@ std::optional<DataTable> draw(const Canvas& canvas, const PlotResult& result, co
     return draw_friction_plot(canvas, result.document());
   } else if (request.name == "force") {
     return draw_force_plot(canvas, result.document(), request.set);
+  } else if (request.name == "adaptation") {
+    return draw_adaptation_plot(canvas, result.document());
   } else if (request.name == "contact_pressure") {
     return draw_contact_plot(canvas, result, request.row);
   } else if (request.name == "closure") {
@@ -116,7 +122,8 @@ std::string render_table(const PlotResult& result, const PlotRequest& request) {
   Canvas canvas(ImageFormat::png, request.width, request.height);
   const std::optional<DataTable> table = draw(canvas, result, request);
   if (!table) {
-    throw std::invalid_argument("a data table (.csv) is made for closure, contact_pressure, friction, force and a field along a path, "
+    throw std::invalid_argument("a data table (.csv) is made for closure, contact_pressure, friction, force, adaptation and a "
+                                "field along a path, "
                                 "not for '" + request.name + "'");
   }
   return table->csv();

@@ -1,10 +1,6 @@
 #include "service/http/assembly_upload.hpp"
 
-#include <stdlib.h>
-
-#include <cerrno>
-#include <fstream>
-#include <system_error>
+#include <algorithm>
 
 #include "io/import/assembly_reader.hpp"
 #include "io/model/model_reader.hpp"
@@ -24,7 +20,8 @@ bool plain_name(const std::string& name) {
 
 }  // namespace
 
-UploadedFiles::UploadedFiles(const httplib::Request& req, const std::string& document_part, const std::string& route) {
+UploadedFiles::UploadedFiles(const httplib::Request& req, const std::string& document_part, const std::string& route)
+    : directory_("saasgaps-import-") {
   if (!req.is_multipart_form_data()) {
     throw HttpError(400, "Bad Request",
                     route + " takes multipart/form-data: a part \"" + document_part + "\" (the " + document_part +
@@ -34,39 +31,29 @@ UploadedFiles::UploadedFiles(const httplib::Request& req, const std::string& doc
     throw HttpError(400, "Bad Request", "the upload has no part named \"" + document_part + "\"");
   }
   document_ = req.get_file_value(document_part).content;
-  std::string pattern = (fs::temp_directory_path() / "saasgaps-import-XXXXXX").string();
-  if (::mkdtemp(pattern.data()) == nullptr) {
-    throw std::system_error(errno, std::generic_category(), "cannot create a directory for the upload");
-  }
-  directory_ = pattern;
-  try {
-    for (const auto& [field, part] : req.files) {
-      if (field == document_part) continue;
-      if (!plain_name(part.filename)) {
-        throw HttpError(400, "Bad Request", "part \"" + field + "\" must carry a plain file name (no directories, not "
-                                            "hidden), got \"" + part.filename + "\"");
-      }
-      const fs::path target = directory_ / part.filename;
-      if (fs::exists(target)) throw HttpError(400, "Bad Request", "two parts carry the file name \"" + part.filename + "\"");
-      std::ofstream out(target, std::ios::binary);
-      out.write(part.content.data(), static_cast<std::streamsize>(part.content.size()));
-      if (!out) throw std::runtime_error("cannot store the uploaded file " + part.filename);
+  for (const auto& [field, part] : req.files) {
+    if (field == document_part) continue;
+    if (!plain_name(part.filename)) {
+      throw HttpError(400, "Bad Request", "part \"" + field + "\" must carry a plain file name (no directories, not "
+                                          "hidden), got \"" + part.filename + "\"");
     }
-  } catch (...) {
-    std::error_code ignored;
-    fs::remove_all(directory_, ignored);
-    throw;
+    if (fs::exists(directory_.path() / part.filename)) {
+      throw HttpError(400, "Bad Request", "two parts carry the file name \"" + part.filename + "\"");
+    }
+    directory_.write(part.filename, part.content);
+    files_.emplace_back(part.filename, part.content);
   }
+  std::sort(files_.begin(), files_.end());
 }
 
-UploadedFiles::~UploadedFiles() {
-  std::error_code ignored;
-  fs::remove_all(directory_, ignored);
-}
-
-nlohmann::json import_upload(const httplib::Request& req) {
+AssemblyUpload import_upload(const httplib::Request& req) {
   const UploadedFiles files(req, "assembly", "POST /v1/imports");
-  return io::import_assembly(io::parse_document(files.document()), files.directory(), io::FileAccess::base_only);
+  AssemblyUpload upload;
+  upload.input.assembly = files.document();
+  upload.input.files = files.files();
+  upload.assembly = io::parse_document(upload.input.assembly);
+  upload.model = io::import_assembly(upload.assembly, files.directory(), io::FileAccess::base_only);
+  return upload;
 }
 
 }  // namespace saasgaps::service

@@ -9,12 +9,17 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "service/ops/private_directory.hpp"
+#include "service/store/job_store.hpp"
+
 namespace saasgaps::service {
 
-/// The files of an upload in a directory only this process can use (mkdtemp: mode 0700), removed
+/// The files of an upload in a directory only this process can use (PrivateDirectory), removed
 /// with everything in it when this object ends.
 class UploadedFiles {
  public:
@@ -22,22 +27,29 @@ class UploadedFiles {
   /// `document_part`, a part without a plain file name, two parts with the same file name. `route`
   /// ("POST /v1/imports") names the request in messages.
   UploadedFiles(const httplib::Request& req, const std::string& document_part, const std::string& route);
-  ~UploadedFiles();
-  UploadedFiles(const UploadedFiles&) = delete;
-  UploadedFiles& operator=(const UploadedFiles&) = delete;
 
   /// The text of the document part.
   [[nodiscard]] const std::string& document() const { return document_; }
   /// Where the other parts are, each under its file name.
-  [[nodiscard]] const std::filesystem::path& directory() const { return directory_; }
+  [[nodiscard]] const std::filesystem::path& directory() const { return directory_.path(); }
+  /// The other parts, (file name, content), in name order.
+  [[nodiscard]] const std::vector<std::pair<std::string, std::string>>& files() const { return files_; }
 
  private:
-  std::filesystem::path directory_;
+  PrivateDirectory directory_;
   std::string document_;
+  std::vector<std::pair<std::string, std::string>> files_;
 };
 
-/// POST /v1/imports: the model document. Throws HttpError 400 for a request that is not such an
+/// What an upload holds, imported.
+struct AssemblyUpload {
+  nlohmann::json assembly;  ///< the assembly document
+  AdaptiveInput input;      ///< its text and the uploaded files (what an adaptive job keeps)
+  nlohmann::json model;     ///< the model document of its (first) mesh
+};
+
+/// POST /v1/imports: the upload imported. Throws HttpError 400 for a request that is not such an
 /// upload, ModelError (422) with every issue of the assembly, each at its JSON Pointer.
-nlohmann::json import_upload(const httplib::Request& req);
+AssemblyUpload import_upload(const httplib::Request& req);
 
 }  // namespace saasgaps::service

@@ -127,14 +127,44 @@ void HttpApi::enqueue(const std::string& body, const Model& model, const httplib
 }
 
 void HttpApi::import_assembly(const httplib::Request& req, httplib::Response& res) {
-  const json model = import_upload(req);
+  const AssemblyUpload upload = import_upload(req);
   const std::string submit = req.get_param_value("submit");
   if (submit == "true" || submit == "1") {
-    const std::string body = model.dump(1);
-    enqueue(body, io::read_model(model), req, res);
+    const std::string body = upload.model.dump(1);
+    if (upload.assembly.contains("adapt")) {
+      enqueue_adaptive(body, upload, req, res);
+      return;
+    }
+    enqueue(body, io::read_model(upload.model), req, res);
     return;
   }
-  send_json(res, 200, model);
+  send_json(res, 200, upload.model);
+}
+
+void HttpApi::enqueue_adaptive(const std::string& body, const AssemblyUpload& upload, const httplib::Request& req,
+                               httplib::Response& res) {
+  if (options_.remote_workers) {
+    throw HttpError(501, "Not Implemented",
+                    "adaptive jobs (an assembly with adapt) run in the service's own workers; this server hands its "
+                    "jobs to remote workers (--executor slurm): run saasgaps solve ASSEMBLY.json instead");
+  }
+  const Model model = io::read_model(upload.model);
+  io::require_restrained(model);
+  // What the request asks for: the assembly and every file, so a replay under the same key matches.
+  std::string request = upload.input.assembly;
+  for (const auto& [name, content] : upload.input.files) request += '\0' + name + '\0' + content;
+  std::optional<std::string> key;
+  if (req.has_header("Idempotency-Key")) key = req.get_header_value("Idempotency-Key");
+  const JobStore::Submitted submitted = store_.submit_adaptive(body, model.title, model.solver.max_iterations,
+                                                               upload.input, key, body_digest(request));
+  if (submitted.replayed) res.set_header("Idempotent-Replayed", "true");
+  if (!submitted.replayed) {
+    log_info("job_queued", {{"job", submitted.job.id}, {"request_id", res.get_header_value("X-Request-Id")},
+                            {"title", model.title}, {"nodes", model.nodes.size()}, {"adaptive", true}});
+  }
+  res.set_header("Location", "/v1/jobs/" + std::to_string(submitted.job.id));
+  send_json(res, 202, job_json(submitted.job));
+  hub_.notify();
 }
 
 void HttpApi::list(const httplib::Request& req, httplib::Response& res) {
@@ -164,6 +194,13 @@ void HttpApi::show(const httplib::Request& req, httplib::Response& res) {
     std::lock_guard lock(plans_mutex_);
     const auto known = plans_.find(job.id);
     plan = known != plans_.end() ? known->second : plans_.emplace(job.id, io::load_plan(store_.model(job.id))).first->second;
+  }
+  if (job.adaptive) {
+    // The cycles stored so far (docs/http-api.md): the `adaptation` rows of the result, as they come.
+    json rows = json::array();
+    for (const StoredAdaptCycle& c : store_.adapt_cycles(job.id)) rows.push_back(json::parse(c.row));
+    body["adaptation"] = std::move(rows);
+    body["links"]["adaptation_plot"] = "/v1/jobs/" + std::to_string(job.id) + "/plots/adaptation.svg";
   }
   const json row = body["last_row"];
   const double elapsed = job.started_at ? io::seconds_since(*job.started_at, std::chrono::system_clock::now()) : 0.0;

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "service/http/assembly_upload.hpp"
 #include "service/http/event_stream.hpp"
 #include "io/results/load_progress.hpp"
 #include "service/http/request_guard.hpp"
@@ -52,8 +53,13 @@ class HttpApi {
   /// `parsed` (optional): the model read with its digest, handed to the worker that runs the job.
   void enqueue(const std::string& body, const Model& model, const httplib::Request& req, httplib::Response& res,
                std::shared_ptr<const ParsedModel> parsed = nullptr);
-  /// POST /v1/imports: the model document of an uploaded assembly; with ?submit=true, queued as a job.
+  /// POST /v1/imports: the model document of an uploaded assembly; with ?submit=true, queued as a job
+  /// (with `adapt`, an adaptive job: enqueue_adaptive).
   void import_assembly(const httplib::Request& req, httplib::Response& res);
+  /// Queues an uploaded assembly with `adapt` as one adaptive job (runs/adaptive_execution.hpp):
+  /// `body` the first mesh's model document. 202 with Location.
+  void enqueue_adaptive(const std::string& body, const AssemblyUpload& upload, const httplib::Request& req,
+                        httplib::Response& res);
   /// GET /v1/jobs: a page of jobs, newest first (?state=, ?page_size=, ?page_token=).
   void list(const httplib::Request& req, httplib::Response& res);
   /// GET /v1/jobs/{id}: the job resource.

@@ -80,6 +80,25 @@ json history_so_far(JobStore& store, const JobRecord& job) {
           {"gaps", json(std::vector<json>(gaps, json::object()))}};
 }
 
+/// What the adaptation plot reads of an adaptive job, running or finished: its stored cycles and
+/// the target of its assembly's `adapt`. 409 for a job that is not adaptive, or before its first cycle.
+json adaptation_so_far(JobStore& store, const JobRecord& job) {
+  json rows = json::array();
+  for (const StoredAdaptCycle& c : store.adapt_cycles(job.id)) rows.push_back(io::parse_document(c.row));
+  if (rows.empty()) {
+    throw HttpError(409, "Conflict", "job " + std::to_string(job.id) +
+                                         (job.adaptive ? std::string(" has no adaptive cycle yet (") + to_string(job.state) + ")"
+                                                       : " is not an adaptive job (an assembly with adapt)"));
+  }
+  double target = 0.0;
+  if (const std::optional<AdaptiveInput> input = store.adaptive_input(job.id)) {
+    const json assembly = io::parse_document(input->assembly);
+    target = assembly.value("/adapt/target_error"_json_pointer, 0.0);
+  }
+  return {{"title", job.title}, {"status", to_string(job.state)}, {"adaptation", std::move(rows)},
+          {"target_error", target}};
+}
+
 }  // namespace
 
 void ResultRoutes::document(const httplib::Request& req, httplib::Response& res) {
@@ -141,6 +160,20 @@ void ResultRoutes::picture(const httplib::Request& req, httplib::Response& res) 
   // A job still running has no result: its convergence plot is drawn from the rows stored so far
   // (the dashboard follows it live), tagged by its last iteration as well.
   const JobRecord job = store_.get(id);
+  if (request.name == "adaptation") {
+    // Drawn from the stored cycles (live while the job runs), never from the result: small enough
+    // to draw every time.
+    const json document = adaptation_so_far(store_, job);
+    const plot::PlotResult cycles(document);  // views the document
+    const bool csv = req.matches[3] == "csv";
+    try {
+      res.set_content(csv ? plot::render_table(cycles, request) : plot::render_plot(cycles, request),
+                      csv ? "text/csv; charset=utf-8" : plot::media_type(request.format));
+    } catch (const std::invalid_argument& e) {
+      throw HttpError(409, "Conflict", "job " + std::to_string(id) + ": " + e.what());
+    }
+    return;
+  }
   const bool live = request.name == "convergence" &&
                     (job.state == JobState::queued || job.state == JobState::running || job.state == JobState::interrupted);
   const std::string variant = live ? req.target + "@" + std::to_string(job.iteration) : req.target;

@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "service/ops/log.hpp"
+#include "service/runs/adaptive_execution.hpp"
 #include "service/runs/job_execution.hpp"
 #include "service/runs/metrics.hpp"
 
@@ -133,6 +134,21 @@ void JobRunner::work(const std::string& name) {
 }
 
 void JobRunner::run(const ClaimedJob& claimed) {
+  if (claimed.job.adaptive) {
+    // An adaptive job: the assembly's loop (adaptive_execution.hpp), not the stored first model.
+    if (handoff_ != nullptr) handoff_->take(claimed.job.id);
+    try {
+      const std::optional<AdaptiveInput> input = store_.adaptive_input(claimed.job.id);
+      if (input) {
+        execute_adaptive_run(store_, hub_, claimed, *input, stopping_, ordering_cache_ ? &*ordering_cache_ : nullptr);
+        return;
+      }
+    } catch (const std::exception& e) {
+      // The input cannot be read (the database failing): the job stays running and the next start resumes it.
+      log_error("store_error", {{"operation", "adaptive_input"}, {"job", claimed.job.id}, {"error", e.what()}});
+      return;
+    }
+  }
   StoreSink sink(store_, hub_, claimed.job.id);
   std::shared_ptr<const ParsedModel> parsed = handoff_ != nullptr ? handoff_->take(claimed.job.id) : nullptr;
   execute_run({claimed.model, std::move(parsed), claimed.state, claimed.job.settings, claimed.job.id}, sink, stopping_,

@@ -30,6 +30,7 @@ JobRecord read_job(const Statement& q) {
   j.last_row = q.optional_text(14);
   j.slurm_job_id = q.optional_text(15);
   j.slurm_state = q.optional_text(16);
+  j.adaptive = q.integer(17) != 0;
   return j;
 }
 

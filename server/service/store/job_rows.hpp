@@ -18,7 +18,7 @@ inline constexpr const char* job_columns =
     "id, state, title, created_at, started_at, finished_at, iteration, max_iterations, attempts, interruptions, "
     "cancel_requested, error, message, settings, "
     "(SELECT row FROM iterations i WHERE i.job_id = jobs.id ORDER BY iteration DESC LIMIT 1), "
-    "slurm_job_id, slurm_state";
+    "slurm_job_id, slurm_state, EXISTS (SELECT 1 FROM adapt_inputs a WHERE a.job_id = jobs.id)";
 
 /// The JobRecord of a row selected with job_columns.
 JobRecord read_job(const Statement& q);

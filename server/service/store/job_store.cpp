@@ -49,23 +49,26 @@ std::int64_t JobStore::insert_job_row(Connection& db, const std::string& model, 
   return id;
 }
 
+std::optional<JobRecord> JobStore::replayed_job(Connection& db, const std::optional<std::string>& idempotency_key,
+                                               const std::string& request_digest) {
+  if (!idempotency_key) return std::nullopt;
+  Statement q = db.prepare("SELECT id, request_digest FROM jobs WHERE idempotency_key = ?");
+  q.bind(1, *idempotency_key);
+  if (!q.step()) return std::nullopt;
+  if (q.text(1) != request_digest) {
+    throw JobConflict("Idempotency-Key \"" + *idempotency_key + "\" was used for a different request (job " +
+                      std::to_string(q.integer(0)) + ")");
+  }
+  return require_job(db, q.integer(0));
+}
+
 JobStore::Submitted JobStore::insert_job(const std::string& model, const std::string& title, int max_iterations,
                                          const std::optional<std::string>& idempotency_key,
                                          const std::string& request_digest,
                                          const std::optional<std::string>& cache_key) {
   auto db = pool_->lease();
   WriteTransaction tx(*db);
-  if (idempotency_key) {
-    Statement q = db->prepare("SELECT id, request_digest FROM jobs WHERE idempotency_key = ?");
-    q.bind(1, *idempotency_key);
-    if (q.step()) {
-      if (q.text(1) != request_digest) {
-        throw JobConflict("Idempotency-Key \"" + *idempotency_key + "\" was used for a different request (job " +
-                          std::to_string(q.integer(0)) + ")");
-      }
-      return {require_job(*db, q.integer(0)), true};
-    }
-  }
+  if (std::optional<JobRecord> earlier = replayed_job(*db, idempotency_key, request_digest)) return {*earlier, true};
   const std::int64_t id = insert_job_row(*db, model, title, max_iterations, idempotency_key, request_digest, cache_key);
   JobRecord job = require_job(*db, id);
   tx.commit();

@@ -16,6 +16,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "service/ops/utc_time.hpp"
@@ -58,6 +59,7 @@ struct JobRecord {
   ResumeOptions settings;
   std::optional<std::string> slurm_job_id;  ///< the Slurm job running it (executor slurm)
   std::optional<std::string> slurm_state;   ///< that Slurm job's state as squeue last showed it
+  bool adaptive = false;  ///< an adaptive job (an assembly with `adapt`): its cycles in adapt_cycles
 };
 
 /// The right to write a job's iterations and result: the run's attempt number and a secret the
@@ -132,6 +134,19 @@ struct StudyPointRow {
   std::string message;
   std::optional<JobState> job_state;  ///< the job's state now (none when the job was deleted)
   std::optional<std::string> job_error;
+};
+
+/// What an adaptive job re-imports in every cycle: the uploaded assembly and the files it names.
+struct AdaptiveInput {
+  std::string assembly;  ///< the assembly document as uploaded
+  std::vector<std::pair<std::string, std::string>> files;  ///< (file name, content), in name order
+};
+
+/// A stored cycle of an adaptive job.
+struct StoredAdaptCycle {
+  int cycle = 0;
+  std::string row;                        ///< its `adaptation` row (JSON)
+  std::optional<std::string> next_sizes;  ///< the sizes it asked for the next mesh (JSON); none for the last
 };
 
 struct StudyRecord {
@@ -285,6 +300,23 @@ class JobStore {
   void set_study_point(std::int64_t study, std::size_t index, const std::string& status, const std::string& outputs,
                        const std::string& message);
 
+  // Adaptive jobs (adapt_store.cpp, docs/http-api.md).
+
+  /// Queues an adaptive job: `model` (the first mesh's model document, what GET .../model shows),
+  /// the assembly and its files, in one transaction. Idempotency keys as submit.
+  Submitted submit_adaptive(const std::string& model, const std::string& title, int max_iterations,
+                            const AdaptiveInput& input, const std::optional<std::string>& idempotency_key,
+                            const std::string& request_digest);
+  /// The assembly and files of an adaptive job; none for any other job.
+  [[nodiscard]] std::optional<AdaptiveInput> adaptive_input(std::int64_t id);
+  /// One solved cycle (its row and the sizes it asked for) and its `adapt_cycle` event, in one
+  /// transaction; a cycle stored before is replaced and the cycles after it dropped (a resumed run
+  /// solves the last cycle again). Written like a thermal row (run_write: space, hand-on).
+  void record_adapt_cycle(std::int64_t id, int cycle, const std::string& row,
+                          const std::optional<std::string>& next_sizes);
+  /// The stored cycles in order; with_sizes false leaves next_sizes empty (the job view).
+  [[nodiscard]] std::vector<StoredAdaptCycle> adapt_cycles(std::int64_t id, bool with_sizes = false);
+
   // Remote workers and the Slurm executor (run_leases.cpp).
 
   /// A Slurm worker trades its run's ticket for the lease: the job must be running under the
@@ -332,6 +364,10 @@ class JobStore {
   void hand_on(std::int64_t id, int attempt, const StoreError& why);
   /// Records the interruptions held in memory; StoreError when it cannot.
   void record_handed_on();
+  /// The job an earlier request with this Idempotency-Key made (inside the caller's transaction);
+  /// none without a key or a job; JobConflict when that request's digest differs.
+  static std::optional<JobRecord> replayed_job(Connection& db, const std::optional<std::string>& idempotency_key,
+                                               const std::string& request_digest);
   Submitted insert_job(const std::string& model, const std::string& title, int max_iterations,
                        const std::optional<std::string>& idempotency_key, const std::string& request_digest,
                        const std::optional<std::string>& cache_key);

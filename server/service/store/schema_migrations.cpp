@@ -112,6 +112,29 @@ extern const std::vector<const char*> migrations = {
     ) WITHOUT ROWID;
     CREATE INDEX study_points_by_job ON study_points(job_id);
     )sql",
+    // 7: adaptive jobs (docs/http-api.md, POST /v1/imports?submit=true with `adapt`): the uploaded
+    // assembly and its files, which every cycle re-imports, and each cycle's `adaptation` row with
+    // the sizes it asked for the next mesh (null for the last cycle), so that a run resumes after
+    // the last stored cycle.
+    R"sql(
+    CREATE TABLE adapt_inputs (
+      job_id INTEGER PRIMARY KEY REFERENCES jobs(id) ON DELETE CASCADE,
+      assembly TEXT NOT NULL
+    );
+    CREATE TABLE adapt_files (
+      job_id INTEGER NOT NULL REFERENCES jobs(id) ON DELETE CASCADE,
+      name TEXT NOT NULL,
+      content BLOB NOT NULL,
+      PRIMARY KEY (job_id, name)
+    ) WITHOUT ROWID;
+    CREATE TABLE adapt_cycles (
+      job_id INTEGER NOT NULL REFERENCES jobs(id) ON DELETE CASCADE,
+      cycle INTEGER NOT NULL,
+      row TEXT NOT NULL,
+      next_sizes TEXT,
+      PRIMARY KEY (job_id, cycle)
+    );
+    )sql",
 };
 
 }  // namespace detail
