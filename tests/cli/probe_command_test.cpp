@@ -6,6 +6,8 @@
 #include <fstream>
 #include <map>
 
+#include "support/two_material_block.hpp"
+
 namespace saasgaps::testing {
 namespace {
 
@@ -13,19 +15,10 @@ using nlohmann::json;
 
 class ProbeCommand : public CommandTest {
  protected:
-  /// The quickstart block (2 x 2 elements, uniform sigma_z = -1000 psi, heated to 200 degF); with
-  /// `two_materials` its right column (elements 2 and 4) gets a material with twice the expansion,
-  /// so the out-of-plane stress jumps across the interface r = 1.
+  /// The quickstart block (2 x 2 elements, uniform sigma_z = -1000 psi, heated to 200 degF), or
+  /// with `two_materials` support/two_material_block.hpp's (an interface at r = 1), solved.
   std::string solved_block(bool two_materials) const {
-    json model = json::parse(read(example("quickstart-plane-strain-block.json")));
-    if (two_materials) {
-      json hot = model["materials"][0];
-      hot["id"] = 2;
-      hot["table"][0]["alpha"] = 13.0e-6;
-      model["materials"].push_back(hot);
-      model["elements"][1]["material"] = 2;
-      model["elements"][3]["material"] = 2;
-    }
+    const json model = two_materials ? two_material_block() : json::parse(read(example("quickstart-plane-strain-block.json")));
     std::ofstream(path("block.json")) << model.dump();
     const Outcome solved = saasgaps("solve " + path("block.json") + " -q -o " + path("block.result.json"));
     EXPECT_EQ(solved.exit_code, 0) << solved.err;
@@ -48,6 +41,8 @@ TEST_F(ProbeCommand, PrintsTheRecoveredStressesDisplacementAndTemperatureAtThePo
   EXPECT_EQ(probe["stresses"], "recovered");
   EXPECT_TRUE(probe["sides"].empty());
   EXPECT_NEAR(probe["values"]["sigma_z"].get<double>(), -1000.0, 1e-6);  // the uniform pressure
+  // Plane strain: sigma_theta = nu sigma_z - E alpha (200 - 70) = -300 - 25350 (docs/cli.md).
+  EXPECT_NEAR(probe["values"]["sigma_theta"].get<double>(), -25650.0, 1e-6);
   EXPECT_NEAR(probe["values"]["temperature"].get<double>(), 200.0, 1e-12);
   // The strain is uniform, so u_r is linear in r from 0 at the held left edge: u_r(0.5) is half of
   // node 2's (r = 1).

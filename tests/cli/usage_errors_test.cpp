@@ -33,7 +33,7 @@ TEST_F(UsageErrors, NoCommandListsTheCommands) {
   const Outcome r = saasgaps("");
   EXPECT_EQ(r.exit_code, usage);
   EXPECT_CONTAINS(r.err, "a command is required (solve, study, validate, ");
-  EXPECT_CONTAINS(r.err, "serve, worker, plot, export-vtu");
+  EXPECT_CONTAINS(r.err, "serve, worker, plot, probe, export-vtu");
 }
 
 TEST_F(UsageErrors, MistypedOptionIsOneLineWithTheNearestOneAndAHint) {

@@ -221,6 +221,7 @@ TEST(RenderPlot, SmallDocumentDrawsEveryKindOfPlot) {
   for (json& e : document["elements"]) {  // as a thermal run stores them, for heat_flux
     e["q_r"] = 1.5 * e["id"].get<double>();
     e["q_z"] = -2.0;
+    e["error"] = 0.1 * e["id"].get<double>();  // as every solved result stores it, for error
   }
   for (const std::string& name : plot_names()) {
     request.name = name;

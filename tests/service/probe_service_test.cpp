@@ -5,29 +5,16 @@
 #include <gtest/gtest.h>
 
 #include "service/service_fixture.hpp"
+#include "support/two_material_block.hpp"
 
 namespace saasgaps::testing {
 namespace {
 
 using nlohmann::json;
-class ProbeService : public ServiceFixture {
- protected:
-  /// The quickstart block with its right column in a material of twice the expansion (an
-  /// interface at r = 1 where the out-of-plane stress jumps).
-  static std::string two_material_block() {
-    json model = json::parse(example_text("quickstart-plane-strain-block.json"));
-    json hot = model["materials"][0];
-    hot["id"] = 2;
-    hot["table"][0]["alpha"] = 13.0e-6;
-    model["materials"].push_back(hot);
-    model["elements"][1]["material"] = 2;
-    model["elements"][3]["material"] = 2;
-    return model.dump();
-  }
-};
+using ProbeService = ServiceFixture;
 
 TEST_F(ProbeService, TheProbeRouteAnswersAsTheCommandAndTheJobShowsItsErrorEstimate) {
-  const std::string body = two_material_block();
+  const std::string body = two_material_block().dump();
   const json reference = solve_locally(body);
   ServerProcess server(database());
   httplib::Client client = server.client();

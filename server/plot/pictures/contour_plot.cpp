@@ -1,6 +1,7 @@
 #include "plot/pictures/contour_plot.hpp"
 
 #include <algorithm>
+#include <deque>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -72,16 +73,22 @@ struct Samples {
   std::array<PlanePoint, 2> where{};
 };
 
-/// Shape functions at a subdivision's points, computed once per family.
+/// A family's shape functions at a subdivision's points, computed once per family and subdivision
+/// (two families may share a subdivision: saas and, above 20,000 elements, quad8 and quad9).
 const std::vector<ShapeValues>& shape_at(const ElementFamily& family, const Subdivision& sub) {
-  static thread_local std::vector<std::pair<const Subdivision*, std::vector<ShapeValues>>> cache;
-  for (const auto& [key, values] : cache) {
-    if (key == &sub && values.size() == sub.points.size()) return values;
+  struct Entry {
+    const ElementFamily* family;
+    const Subdivision* sub;
+    std::vector<ShapeValues> values;
+  };
+  static thread_local std::deque<Entry> cache;  // a deque: the references handed out stay valid
+  for (const Entry& entry : cache) {
+    if (entry.family == &family && entry.sub == &sub) return entry.values;
   }
   std::vector<ShapeValues> values(sub.points.size());
   for (std::size_t k = 0; k < sub.points.size(); ++k) family.shape(sub.points[k].xi, sub.points[k].eta, values[k]);
-  cache.emplace_back(&sub, std::move(values));
-  return cache.back().second;
+  cache.push_back({&family, &sub, std::move(values)});
+  return cache.back().values;
 }
 
 /// sum_a N_a p[nodes[a]]
