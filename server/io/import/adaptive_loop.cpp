@@ -97,7 +97,8 @@ AdaptiveRun run_adaptive(const nlohmann::json& assembly, const std::filesystem::
     } else if (cycle >= settings.max_cycles) {
       stop = "adaptation stopped at the limit max_cycles = " + std::to_string(settings.max_cycles) +
              " with relative error " + number(row.relative_error) + " > target " + target;
-    } else if (sizes && sizes->bounded_by_nodes && static_cast<double>(row.nodes) >= 0.8 * settings.max_nodes) {
+    } else if ((sizes && sizes->bounded_by_nodes && static_cast<double>(row.nodes) >= 0.8 * settings.max_nodes) ||
+               row.nodes >= settings.max_nodes) {  // Gmsh may overshoot the count the sizes aimed at
       stop = "adaptation stopped at the limit max_nodes = " + std::to_string(settings.max_nodes) + " (" +
              std::to_string(row.nodes) + " nodes) with relative error " + number(row.relative_error) + " > target " +
              target;

@@ -111,7 +111,9 @@ void Importer::adapt_mesh(const AdaptSettings& adapt) {
                          "was meshed from, or remove adapt");
     return;
   }
-  if (mesh_loaded_ && mesh_.r.size() > adapt.max_nodes) {
+  // The first mesh only: a re-mesh may overshoot the node count its sizes aimed at, and the loop
+  // stops at the limit with the error reached (adaptive_loop.cpp), not with this error.
+  if (mesh_loaded_ && sizes_ == nullptr && mesh_.r.size() > adapt.max_nodes) {
     report("/adapt/max_nodes", "max_nodes = " + std::to_string(adapt.max_nodes) + " is fewer than the first mesh's " +
                                    std::to_string(mesh_.r.size()) + " nodes: nothing could be refined; raise it or "
                                    "coarsen the geometry's sizes");

@@ -218,6 +218,19 @@ TEST(AdaptiveLoop, PressFitRefinesAtTheContactAndMeetsLame) {
   EXPECT_LT(worst, 0.001);  // observed 0.0931 %; docs/import.md: within 0.1 %
 }
 
+TEST(AdaptiveLoop, AReMeshThatOvershootsMaxNodesStopsAtTheLimit) {
+  // Sizes aimed at 400 nodes give Gmsh's 482: the run stops there with the error reached (it used
+  // to fail the re-import with "max_nodes = 400 is fewer than the first mesh's 482 nodes").
+  json a = load(assemblies / "le1-adapt.assembly.json");
+  a["adapt"] = {{"target_error", 0.001}, {"max_cycles", 6}, {"max_nodes", 400}};
+  const io::AdaptiveRun run = adapt(a, assemblies);
+  EXPECT_FALSE(run.reached);
+  ASSERT_EQ(run.cycles.size(), 2U);
+  EXPECT_GT(run.cycles.back().nodes, 400U);
+  EXPECT_EQ(run.solution.status, RunStatus::converged);
+  EXPECT_NE(run.message.find("adaptation stopped at the limit max_nodes = 400"), std::string::npos) << run.message;
+}
+
 TEST(AdaptiveLoop, ALimitThatCannotBeMetStopsWithTheReachedError) {
   json a = load(assemblies / "le1-adapt.assembly.json");
   a["adapt"] = {{"target_error", 0.001}, {"max_cycles", 2}};
