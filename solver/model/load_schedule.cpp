@@ -27,6 +27,13 @@ const Loads& final_loads(const Model& model) {
   return *last;
 }
 
+std::vector<double> final_prescribed(const Model& model) {
+  std::vector<double> prescribed(2 * model.nodes.size(), free_component);
+  prescribe(prescribed, model.constraints);
+  for (const Step& step : model.steps) prescribe(prescribed, step.constraints);
+  return prescribed;
+}
+
 LoadSchedule::LoadSchedule(const Model& model) : model_(model) {
   std::vector<double> prescribed(2 * model.nodes.size(), free_component);
   prescribe(prescribed, model.constraints);

@@ -38,6 +38,10 @@ struct StepPosition {
 /// The loads at the end of the run's load path: the last step's (with steps), else the model's.
 const Loads& final_loads(const Model& model);
 
+/// The prescribed displacement components at the end of the run's load path (prescribed_k of the
+/// last step, the model's constraints without steps): 2 per node, (u_r, u_z); NaN where free.
+std::vector<double> final_prescribed(const Model& model);
+
 class LoadSchedule {
  public:
   explicit LoadSchedule(const Model& model);

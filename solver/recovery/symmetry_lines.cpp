@@ -3,26 +3,12 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <optional>
-#include <span>
+
+#include "solver/model/load_schedule.hpp"
 
 namespace saasgaps {
 
 namespace {
-
-/// The prescribed components of one node at the end of the run.
-struct Prescribed {
-  std::optional<double> u_r;
-  std::optional<double> u_z;
-};
-
-void prescribe(std::vector<Prescribed>& out, std::span<const Constraint> constraints) {
-  for (const Constraint& c : constraints) {
-    Prescribed& p = out[static_cast<std::size_t>(c.node)];
-    if (c.u_r) p.u_r = c.u_r;
-    if (c.u_z) p.u_z = c.u_z;
-  }
-}
 
 /// Nodes where a tangential force may act on the line: no mirror there.
 void mark_loaded(std::vector<std::uint8_t>& loaded, const Loads& loads, const std::vector<MirrorKind>& kind) {
@@ -63,24 +49,21 @@ SymmetryLines stress_symmetry_lines(const Model& model) {
   const std::size_t count = model.nodes.size();
   if (model.constraints.empty() && model.steps.empty()) return lines;
 
-  std::vector<Prescribed> prescribed(count);
-  prescribe(prescribed, model.constraints);
-  for (const Step& s : model.steps) prescribe(prescribed, s.constraints);
-
+  const std::vector<double> prescribed = final_prescribed(model);
   lines.kind.assign(count, MirrorKind::none);
   lines.value.assign(count, 0.0);
   double size = 0.0;
   for (const Node& n : model.nodes) size = std::max({size, std::abs(n.r), std::abs(n.z)});
   lines.tolerance = 1e-9 * std::max(size, 1e-300);
   for (std::size_t n = 0; n < count; ++n) {
-    const Prescribed& p = prescribed[n];
-    if (p.u_z && !p.u_r) {
+    const double u_r = prescribed[2 * n], u_z = prescribed[2 * n + 1];
+    if (!std::isnan(u_z) && std::isnan(u_r)) {
       lines.kind[n] = MirrorKind::z_line;
-      lines.value[n] = *p.u_z;
-    } else if (p.u_r && !p.u_z &&
+      lines.value[n] = u_z;
+    } else if (!std::isnan(u_r) && std::isnan(u_z) &&
                (model.analysis != AnalysisType::axisymmetric || std::abs(model.nodes[n].r) <= lines.tolerance)) {
       lines.kind[n] = MirrorKind::r_line;
-      lines.value[n] = *p.u_r;
+      lines.value[n] = u_r;
     }
   }
 
