@@ -60,11 +60,21 @@ ElementData element_geometry(const Model& model, std::span<const int> nodes) {
   return d;
 }
 
-ElementData solid_data(const Model& model, std::size_t e) {
+}  // namespace
+
+ElementData solid_element_geometry(const Model& model, std::size_t e) {
   const Element& el = model.elements[e];
   ElementData d = element_geometry(model, el.node_span());
   d.type = el.type;
   d.integration = el.integration;
+  return d;
+}
+
+namespace {
+
+ElementData solid_data(const Model& model, std::size_t e) {
+  const Element& el = model.elements[e];
+  ElementData d = solid_element_geometry(model, e);
   for (int a = 0; a < el.node_count; ++a) {
     d.dT[static_cast<std::size_t>(a)] =
         model.loads.node_temperature[static_cast<std::size_t>(el.nodes[static_cast<std::size_t>(a)])] -

@@ -12,6 +12,10 @@ namespace saasgaps {
 /// properties at.
 double element_temperature(const Model& model, std::span<const int> nodes);
 
+/// Solid element e's geometry as the kernels take it: family, integration, coordinates, analysis,
+/// thickness; no temperatures, body force or law (what a field recovered from it needs).
+ElementData solid_element_geometry(const Model& model, std::size_t e);
+
 /// Kernel input of solid element e with one constitutive law at every material point.
 ElementData solid_element_data(const Model& model, std::size_t e, const Constitutive& law);
 

@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <cmath>
 
+#include "solver/assembly/element_data.hpp"
 #include "solver/base/index_ranges.hpp"
 #include "solver/fe/element_family.hpp"
 #include "solver/fe/element_geometry.hpp"
@@ -65,22 +66,6 @@ Vec2 point_flux(const PointGeometry& g, int nodes, std::span<const double> t, co
   return -(k * grad);
 }
 
-/// An element's geometry as the kernels take it (no loads, no laws: a temperature field's elements).
-ElementData geometry_of(const Model& model, std::size_t e) {
-  const Element& el = model.elements[e];
-  ElementData d;
-  d.type = el.type;
-  d.integration = el.integration;
-  d.node_count = el.node_count;
-  for (int a = 0; a < el.node_count; ++a) {
-    const Node& n = model.nodes[static_cast<std::size_t>(el.nodes[static_cast<std::size_t>(a)])];
-    d.x[static_cast<std::size_t>(a)] = Vec2(n.r, n.z);
-  }
-  d.analysis = model.analysis;
-  d.thickness = model.thickness;
-  return d;
-}
-
 bool report_element(ElementType type) { return type == ElementType::saas || type == ElementType::tri3; }
 
 std::span<const ReferencePoint> flux_sampling_rule(ElementType type) {
@@ -109,7 +94,7 @@ FluxRecovery recover_heat_flux(const Model& model, std::span<const double> T, st
   std::vector<ElementSamples> samples(count);
   for_each_range(count, [&](std::size_t begin, std::size_t end, unsigned) {
     for (std::size_t e = begin; e < end; ++e) {
-      const ElementData d = geometry_of(model, e);
+      const ElementData d = solid_element_geometry(model, e);
       const auto t = element_T(e);
       ElementSamples& s = samples[e];
       if (report_element(d.type)) {
@@ -137,7 +122,7 @@ FluxRecovery recover_heat_flux(const Model& model, std::span<const double> T, st
   std::vector<ElementError> errors(count);
   for_each_range(count, [&](std::size_t begin, std::size_t end, unsigned) {
     for (std::size_t e = begin; e < end; ++e) {
-      const ElementData d = geometry_of(model, e);
+      const ElementData d = solid_element_geometry(model, e);
       const auto t = element_T(e);
       const auto nodal = element_nodal_values(model, out.flux, e);
       const Eigen::Matrix2d k_inverse = k[e].inverse();
