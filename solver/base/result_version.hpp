@@ -11,6 +11,6 @@
 
 namespace saasgaps {
 
-inline constexpr int result_version = 2;
+inline constexpr int result_version = 3;
 
 }  // namespace saasgaps

@@ -4,6 +4,7 @@
 
 #include "solver/assembly/element_data.hpp"
 #include "solver/base/index_ranges.hpp"
+#include "solver/recovery/boundary_stresses.hpp"
 
 namespace saasgaps {
 
@@ -43,6 +44,7 @@ StressRecovery recover_stresses(const Model& model, std::span<const double> disp
   StressRecovery out;
   const SymmetryLines symmetry = stress_symmetry_lines(model);
   out.stress = recover_field(model, samples, &symmetry);
+  recover_boundary_stresses(model, displacement, laws, symmetry, out.stress);
   std::vector<ElementError> errors(count);
   for_each_range(count, [&](std::size_t begin, std::size_t end, unsigned) {
     std::array<Constitutive, max_material_points> scratch;

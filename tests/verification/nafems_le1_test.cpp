@@ -56,10 +56,11 @@ TEST(NafemsLe1, Quad8EightByEightAtD) {
   std::printf("LE1 quad8 8 x 8: sigma_yy(D) / 92.7 = %.4f here", ours);
   if (calculix) std::printf(", CalculiX CPS8 %.4f", *calculix);
   std::printf("\n");
-  // Observed 1.0129: the issue asks within 1 %, CalculiX's own extrapolation gives -0.59 %. D is a
-  // boundary corner whose recovered value is a patch polynomial extrapolated up to one element
-  // outwards (docs/recovery.md, "What it gives"); not yet within the 1 % asked.
-  EXPECT_NEAR(ours, 1.0129, 5e-4);
+  // Observed 0.9943: the issue asks within 1 %, CalculiX's own extrapolation gives -0.59 %. D is a
+  // free boundary node on a symmetry line: its stress comes from the traction (zero) and the
+  // stretch of the inner edge (docs/recovery.md, "What it gives").
+  EXPECT_NEAR(ours, 0.9943, 5e-4);
+  EXPECT_LT(std::abs(ours - 1.0), 0.01);
   if (!calculix) GTEST_SKIP() << "ccx (calculix-ccx) is not installed: deploy/test.sh installs it";
   EXPECT_NEAR(*calculix, 0.9941, 1e-4);  // observed: the issue's figure, so these are its meshes
 }
@@ -67,8 +68,9 @@ TEST(NafemsLe1, Quad8EightByEightAtD) {
 TEST(NafemsLe1, SaasSixteenBySixteenAtD) {
   const double ours = sigma_yy_at_d(16, "saas").first;
   std::printf("LE1 saas 16 x 16: sigma_yy(D) / 92.7 = %.4f here (CalculiX CPS4 on these corners: 1.0172)\n", ours);
-  // Observed 0.9506: the issue asks within 3 % (docs/recovery.md, "What it gives").
-  EXPECT_NEAR(ours, 0.9506, 5e-4);
+  // Observed 0.9785: the issue asks within 3 % (docs/recovery.md, "What it gives").
+  EXPECT_NEAR(ours, 0.9785, 5e-4);
+  EXPECT_LT(std::abs(ours - 1.0), 0.03);
 }
 
 /// The LE1 model with its outer pressure replaced by the consistent nodal forces of each curved

@@ -149,19 +149,18 @@ TEST(RecoveryLe1, SaasSixteenBySixteenRecoversSigmaYyAtD) {
   std::printf("LE1 saas 16 x 16: recovered %.3f (%+.4f), element centre %.3f (%+.4f)\n", recovered,
               recovered / le1_target - 1.0, centre, centre / le1_target - 1.0);
   EXPECT_NEAR(centre / le1_target - 1.0, -0.1625, 0.002);  // observed -0.1625
-  // Observed -0.0494 (the issue asks within 3 %; plain SPR without the symmetry line's mirror:
-  // -0.0448). The report element's triangles sample sigma_yy from 67 to 90 within D's element, and
-  // a plane fitted to them is extrapolated to D. On Gmsh's unstructured quadrilaterals of le1.geo
-  // the same recovery gives -14.5 %, -4.9 %, -0.09 % at lc = 0.2, 0.1, 0.05 (docs/recovery.md).
-  EXPECT_NEAR(recovered / le1_target - 1.0, -0.0494, 0.002);
+  // Observed -0.0215 (the issue asks within 3 %). D is a free boundary node on the symmetry line:
+  // sigma_xx = sigma_xy = 0 there and sigma_yy = E eps_yy from the stretch of the inner edge through
+  // D (boundary_stresses.hpp). The patches alone, extrapolated to D: -4.94 % (plain SPR -4.48 %).
+  EXPECT_NEAR(recovered / le1_target - 1.0, -0.0215, 0.002);
+  EXPECT_LT(std::abs(recovered / le1_target - 1.0), 0.03);
 }
 
 TEST(RecoveryLe1, Quad8RecoversSigmaYyAtDAndConverges) {
-  // 8 x 8, 16 x 16, 32 x 32. The issue asks 1 % at 8 x 8; +1.29 % is D's value as the mean of the
-  // patch on the symmetry line (mirrored: -6.3 % alone) and the diagonal patch with its mirror
-  // image (+5 % alone), each extrapolated one element outwards (docs/recovery.md). Plain SPR:
-  // +5.09 %, +1.22 %, +0.06 %.
-  const std::array<double, 3> observed{0.0129, 0.0041, -0.0003};
+  // 8 x 8, 16 x 16, 32 x 32. The issue asks 1 % at 8 x 8. D from its traction and the stretch
+  // through the five nodes of the inner edge and its mirror image; the patches alone, extrapolated
+  // to D: +1.29 %, +0.41 %, -0.03 % (plain SPR: +5.09 %, +1.22 %, +0.06 %).
+  const std::array<double, 3> observed{-0.0057, -0.0010, -0.0005};
   for (int k = 0; k < 3; ++k) {
     const int n = 8 << k;
     const Le1 c = le1("quad8", n);
@@ -169,7 +168,8 @@ TEST(RecoveryLe1, Quad8RecoversSigmaYyAtDAndConverges) {
     const double centre = c.solution.elements[0].stress[zz];
     std::printf("LE1 quad8 %d x %d: recovered %.3f (%+.4f), element centre %.3f (%+.4f)\n", n, n, recovered,
                 recovered / le1_target - 1.0, centre, centre / le1_target - 1.0);
-    EXPECT_NEAR(recovered / le1_target - 1.0, observed[static_cast<std::size_t>(k)], 0.002) << n;
+    EXPECT_NEAR(recovered / le1_target - 1.0, observed[static_cast<std::size_t>(k)], 0.001) << n;
+    EXPECT_LT(std::abs(recovered / le1_target - 1.0), 0.01) << n;
   }
 }
 
@@ -213,9 +213,11 @@ TEST(RecoveryLame, FourQuad8ThroughTheWallRecoverTheBoreHoopStress) {
   const double exact = lA + lB / (la * la);
   std::printf("Lame, 4 quad8: recovered bore hoop %.3f vs %.3f (%+.3e); element centre %.3f\n", hoop, exact,
               hoop / exact - 1.0, c.solution.elements[0].stress[th]);
-  // Observed -7.43e-3: the bore nodes take the interior patches'
-  // polynomials extrapolated half a patch outwards, short of the issue's 0.5 % (docs/recovery.md).
-  EXPECT_NEAR(hoop / exact - 1.0, -7.43e-3, 5e-4);
+  // Observed -7.9e-5 (the issue asks 0.5 %): sigma_rr = -p at the bore, eps_zz from the stretch
+  // along it and eps_th = u_r / r (boundary_stresses.hpp). The patches alone, extrapolated to the
+  // bore: -7.43e-3.
+  EXPECT_NEAR(hoop / exact - 1.0, -7.9e-5, 2e-5);
+  EXPECT_LT(std::abs(hoop / exact - 1.0), 0.005);
 }
 
 /// The effectivity index on Lame's cylinder, true error from the closed-form energy.
@@ -243,10 +245,11 @@ TEST(RecoveryEffectivity, Quad8OnLameTendsToOne) {
     EXPECT_GT(i, 0.8);
     EXPECT_LT(i, 1.25);
   }
-  // Observed 1.097, 0.945, 0.965 (4, 16, 64 quad8, square elements).
-  EXPECT_NEAR(index[0], 1.097, 0.01);
-  EXPECT_NEAR(index[1], 0.945, 0.01);
-  EXPECT_NEAR(index[2], 0.965, 0.01);
+  // Observed 1.088, 1.016, 0.997 (4, 16, 64 quad8, square elements; with the patches alone at the
+  // boundary 1.097, 0.945, 0.965).
+  EXPECT_NEAR(index[0], 1.088, 0.01);
+  EXPECT_NEAR(index[1], 1.016, 0.01);
+  EXPECT_NEAR(index[2], 0.997, 0.01);
   EXPECT_LT(std::abs(index[2] - 1.0), std::abs(index[0] - 1.0));
 }
 
@@ -309,12 +312,13 @@ std::pair<Model, Solution> l_shape(const std::string& type, int n) {
 TEST(RecoveryEffectivity, Le1Smooth) {
   const Effectivity quad8 = effectivity("LE1 quad8", 8, [](int n) { return le1_solved("quad8", n); });
   const Effectivity saas = effectivity("LE1 saas", 8, [](int n) { return le1_solved("saas", n); });
-  // Observed: quad8 8 x 8 1.349 (plain SPR 1.499), an overestimate outside the issue's 0.8 .. 1.25:
-  // the boundary nodes near D, where sigma_yy falls by a third within one element, are
-  // extrapolated from interior patches, and their excess counts in the estimate. The SAAS element
-  // at 8 x 8: 0.907. Both limits agree to 1e-5 (1.216747e-3, 1.216757e-3).
-  EXPECT_NEAR(quad8.index, 1.349, 0.01);
-  EXPECT_NEAR(saas.index, 0.907, 0.01);
+  // Observed: quad8 8 x 8 1.336 (the patches alone at the boundary 1.349, plain SPR 1.499), an
+  // overestimate outside the issue's 0.8 .. 1.25: near D sigma_yy falls by a third within one
+  // element, and the recovered field between the nodes (the quad8 interpolation of nodal values)
+  // misses it by as much as the element's own stress does. The SAAS element at 8 x 8: 0.903. Both
+  // limits agree to 1e-5 (1.216747e-3, 1.216757e-3).
+  EXPECT_NEAR(quad8.index, 1.336, 0.01);
+  EXPECT_NEAR(saas.index, 0.903, 0.01);
   EXPECT_GT(saas.index, 0.7);
   EXPECT_LT(saas.index, 1.4);
 }
@@ -322,9 +326,10 @@ TEST(RecoveryEffectivity, Le1Smooth) {
 TEST(RecoveryEffectivity, LShapeWithSingularities) {
   const Effectivity quad8 = effectivity("L quad8", 2, [](int n) { return l_shape("quad8", n); });
   const Effectivity saas = effectivity("L saas", 4, [](int n) { return l_shape("saas", n); });
-  // Observed: quad8 2 x 2 per unit (12 elements) 0.873, the SAAS element 4 x 4 per unit 0.921.
-  EXPECT_NEAR(quad8.index, 0.873, 0.01);
-  EXPECT_NEAR(saas.index, 0.921, 0.01);
+  // Observed: quad8 2 x 2 per unit (12 elements) 0.872, the SAAS element 4 x 4 per unit 0.963 (the
+  // patches alone at the boundary: 0.873, 0.921).
+  EXPECT_NEAR(quad8.index, 0.872, 0.01);
+  EXPECT_NEAR(saas.index, 0.963, 0.01);
   EXPECT_GT(quad8.index, 0.8);
   EXPECT_LT(quad8.index, 1.25);
   EXPECT_GT(saas.index, 0.7);

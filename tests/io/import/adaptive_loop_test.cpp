@@ -122,13 +122,13 @@ TEST(AdaptiveLoop, Le1ReachesOnePercentWithFewerNodesThanAUniformMesh) {
   std::printf("LE1 adaptive: %zu nodes, relative error %.4g, sigma_yy at D %.4g (%.3g %% from 92.7)\n",
               run.model.nodes.size(), run.cycles.back().relative_error, sigma_yy, 100.0 * (sigma_yy / 92.7 - 1.0));
   EXPECT_NEAR(sigma_yy / 92.7, 1.0, 0.015);  // the bound
-  EXPECT_NEAR(sigma_yy, 92.79, 0.05);          // docs/import.md and README: 92.79
-  // docs/import.md, README, docs/performance.md: 4 cycles, 148 .. 13444 nodes (Gmsh is deterministic;
+  EXPECT_NEAR(sigma_yy, 92.65, 0.05);          // docs/import.md and README: 92.65
+  // docs/import.md, README, docs/performance.md: 4 cycles, 148 .. 14062 nodes (Gmsh is deterministic;
   // 2 % for another Gmsh build).
   EXPECT_EQ(run.cycles.size(), 4U);
   EXPECT_EQ(run.cycles.front().nodes, 148U);
-  EXPECT_NEAR(static_cast<double>(run.model.nodes.size()), 13444.0, 0.02 * 13444.0);
-  EXPECT_NEAR(run.cycles.front().relative_error, 0.1218, 0.0005);
+  EXPECT_NEAR(static_cast<double>(run.model.nodes.size()), 14062.0, 0.02 * 14062.0);
+  EXPECT_NEAR(run.cycles.front().relative_error, 0.1214, 0.0005);
 
   // Uniform meshes of the same geometry, halving the size until the estimate is as small.
   const UniformLe1 uniform;
@@ -147,8 +147,10 @@ TEST(AdaptiveLoop, Le1ReachesOnePercentWithFewerNodesThanAUniformMesh) {
   EXPECT_NEAR(static_cast<double>(uniform_nodes), 26171.0, 0.02 * 26171.0);  // docs/import.md, README
 }
 
-TEST(AdaptiveLoop, Le1UnstructuredMeshesRecoverDFromTheMirroredPatches) {
+TEST(AdaptiveLoop, Le1UnstructuredMeshesRecoverD) {
   // D lies on the symmetry line y = 0 and on the free inner edge: docs/recovery.md, "What it gives".
+  // The report element at lc = 0.2, 0.1, 0.05, 0.025: -5.0 %, -2.2 %, +0.56 %, -0.45 %; quad8 at
+  // lc = 0.2, 0.1, 0.05: -0.31 %, -0.12 %, -0.11 %.
   const UniformLe1 uniform;
   const auto saas = uniform.solve_at(0.05);
   const auto quad8 = uniform.solve_at(0.1, 2);
@@ -156,7 +158,7 @@ TEST(AdaptiveLoop, Le1UnstructuredMeshesRecoverDFromTheMirroredPatches) {
               saas.sigma_yy_at_d / 92.7 - 1.0, quad8.nodes, quad8.sigma_yy_at_d / 92.7 - 1.0);
   EXPECT_NEAR(static_cast<double>(saas.nodes), 2752.0, 0.02 * 2752.0);
   EXPECT_NEAR(static_cast<double>(quad8.nodes), 2887.0, 0.02 * 2887.0);
-  EXPECT_NEAR(saas.sigma_yy_at_d / 92.7 - 1.0, -0.0009, 0.001);   // observed -0.09 %
+  EXPECT_NEAR(saas.sigma_yy_at_d / 92.7 - 1.0, 0.0056, 0.001);    // observed +0.56 %
   EXPECT_NEAR(quad8.sigma_yy_at_d / 92.7 - 1.0, -0.0012, 0.001);  // observed -0.12 %
 }
 
@@ -201,7 +203,7 @@ TEST(AdaptiveLoop, PressFitRefinesAtTheContactAndMeetsLame) {
   EXPECT_LT(after, before);
   EXPECT_LT(after / before, far_after / far_before);
   EXPECT_LT(after / before, 0.4);          // docs/import.md: 0.0188 -> 0.0065 (0.35)
-  EXPECT_GT(far_after / far_before, 0.7);  // and 0.0161 -> 0.0133 (0.83)
+  EXPECT_GT(far_after / far_before, 0.7);  // and 0.0161 -> 0.0117 (0.73)
   EXPECT_EQ(run.cycles.size(), 2U);
   EXPECT_NEAR(run.cycles.front().relative_error, 0.0041, 0.0001);
   EXPECT_NEAR(run.cycles.back().relative_error, 0.0017, 0.0001);
@@ -215,7 +217,10 @@ TEST(AdaptiveLoop, PressFitRefinesAtTheContactAndMeetsLame) {
   }
   std::printf("press fit adaptive: %zu nodes, worst contact pressure error %.3g %%\n", run.model.nodes.size(),
               100.0 * worst);
-  EXPECT_LT(worst, 0.001);  // observed 0.0931 %; docs/import.md: within 0.1 %
+  // Observed 0.123 %; docs/import.md: within 0.13 % (0.093 % when the free surfaces' recovered
+  // stresses were extrapolated patches and the hub's outside was refined less: the contact's mesh
+  // is the same, 0.0188 -> 0.0065).
+  EXPECT_LT(worst, 0.0013);
 }
 
 TEST(AdaptiveLoop, AReMeshThatOvershootsMaxNodesStopsAtTheLimit) {
@@ -240,7 +245,7 @@ TEST(AdaptiveLoop, ALimitThatCannotBeMetStopsWithTheReachedError) {
   EXPECT_EQ(run.solution.status, RunStatus::converged);
   EXPECT_NE(run.message.find("adaptation stopped at the limit max_cycles = 2 with relative error"), std::string::npos)
       << run.message;
-  EXPECT_NE(run.message.find("relative error 0.02788 > target 0.001"), std::string::npos) << run.message;  // docs/import.md
+  EXPECT_NE(run.message.find("relative error 0.02853 > target 0.001"), std::string::npos) << run.message;  // docs/import.md
 }
 
 /// A loop resumed after cycle 1 from the sizes that cycle asked for (as the service resumes an
