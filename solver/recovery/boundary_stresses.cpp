@@ -102,19 +102,7 @@ std::vector<std::uint8_t> unknown_traction(const Model& model, const SymmetryLin
   for (const NodalForce& f : final_loads(model).nodal_forces) {
     if (f.f_r != 0.0 || f.f_z != 0.0) unknown[static_cast<std::size_t>(f.node)] = 1;
   }
-  if (model.gaps) {
-    for (const GapElement& g : model.gaps->elements) {
-      for (const int n : g.node_span()) unknown[static_cast<std::size_t>(n)] = 1;
-    }
-  }
-  if (model.contact) {
-    for (const SurfaceDefinition& s : model.contact->surfaces) {
-      for (const auto& [a, b] : s.edges) {
-        unknown[static_cast<std::size_t>(a)] = 1;
-        unknown[static_cast<std::size_t>(b)] = 1;
-      }
-    }
-  }
+  mark_contact_nodes(model, unknown);
   return unknown;
 }
 

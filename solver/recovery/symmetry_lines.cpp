@@ -26,6 +26,22 @@ void mark_loaded(std::vector<std::uint8_t>& loaded, const Loads& loads, const st
 
 }  // namespace
 
+void mark_contact_nodes(const Model& model, std::vector<std::uint8_t>& marked) {
+  if (model.gaps) {
+    for (const GapElement& g : model.gaps->elements) {
+      for (const int n : g.node_span()) marked[static_cast<std::size_t>(n)] = 1;
+    }
+  }
+  if (model.contact) {
+    for (const SurfaceDefinition& s : model.contact->surfaces) {
+      for (const auto& [a, b] : s.edges) {
+        marked[static_cast<std::size_t>(a)] = 1;
+        marked[static_cast<std::size_t>(b)] = 1;
+      }
+    }
+  }
+}
+
 bool SymmetryLines::same_line(const Model& model, std::size_t a, std::size_t b) const {
   if (!on_line(a) || kind[a] != kind[b] || value[a] != value[b]) return false;
   const Node& na = model.nodes[a];
@@ -72,19 +88,7 @@ SymmetryLines stress_symmetry_lines(const Model& model) {
   for (const Step& s : model.steps) {
     if (s.loads) mark_loaded(loaded, *s.loads, lines.kind);
   }
-  if (model.gaps) {
-    for (const GapElement& g : model.gaps->elements) {
-      for (const int n : g.node_span()) loaded[static_cast<std::size_t>(n)] = 1;
-    }
-  }
-  if (model.contact) {
-    for (const SurfaceDefinition& s : model.contact->surfaces) {
-      for (const auto& [a, b] : s.edges) {
-        loaded[static_cast<std::size_t>(a)] = 1;
-        loaded[static_cast<std::size_t>(b)] = 1;
-      }
-    }
-  }
+  mark_contact_nodes(model, loaded);
   for (std::size_t n = 0; n < count; ++n) {
     if (loaded[n] != 0) lines.kind[n] = MirrorKind::none;
   }

@@ -51,6 +51,10 @@ struct SymmetryLines {
   [[nodiscard]] Vec4 mirror_value(std::size_t n, const Vec4& v) const;
 };
 
+/// Sets marked[n] = 1 at the nodes where another body pushes: the nodes of gap elements and of
+/// contact surfaces' edges.
+void mark_contact_nodes(const Model& model, std::vector<std::uint8_t>& marked);
+
 /// The symmetry lines of a stress analysis (see the file comment); no line for a model without
 /// constraints.
 SymmetryLines stress_symmetry_lines(const Model& model);
