@@ -251,4 +251,19 @@ int saas_triangle_states(const ElementData& e, std::span<const double> u_span, s
   return 4;
 }
 
+int saas_triangles(const ElementData& e, std::array<TriangleState, 4>& out) {
+  if (e.node_count == 3) {
+    const LinearTriangle g = linear_triangle(e.x[0], e.x[1], e.x[2], e.analysis, e.thickness);
+    out[0] = {{0, 1, 2}, (e.x[0] + e.x[1] + e.x[2]) / 3.0, g.area, g.w, {}};
+    return 1;
+  }
+  const auto p = quad_points(corners(e));
+  for (std::size_t k = 0; k < quad_triangles.size(); ++k) {
+    const auto& tri = quad_triangles[k];
+    const LinearTriangle g = linear_triangle(p[tri[0]], p[tri[1]], p[tri[2]], e.analysis, e.thickness);
+    out[k] = {tri, (p[tri[0]] + p[tri[1]] + p[tri[2]]) / 3.0, g.area, g.w, {}};
+  }
+  return 4;
+}
+
 }  // namespace saasgaps

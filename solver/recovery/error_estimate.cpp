@@ -1,6 +1,7 @@
 #include "solver/recovery/error_estimate.hpp"
 
 #include <Eigen/LU>  // inverse
+#include <cassert>
 #include <cmath>
 
 #include "solver/fe/element_geometry.hpp"
@@ -29,54 +30,97 @@ Mat4 compliance(const Mat4& D, AnalysisType analysis) {
 
 double energy(const Mat4& C, const Vec4& sigma) { return sigma.dot(C * sigma); }
 
-}  // namespace
-
-ElementError element_error(const ElementData& e, const ElementStates& states, std::span<const double> u,
-                           std::span<const Vec4> nodal) {
+/// A report element's integrals over its constant-strain triangles (saas_triangle_states' geometry
+/// and stresses), C its law's compliance.
+ElementError triangles_error(const ElementData& e, const Mat4& C, std::span<const TriangleState> tri,
+                             std::span<const Vec4> nodal) {
   ElementError out;
-  if (e.type == ElementType::saas || e.type == ElementType::tri3) {
-    std::array<TriangleState, 4> tri;
-    const int count = saas_triangle_states(e, u, tri);
-    // Vertex values: the corners' recovered stresses and, for a quad, their mean at the centre.
-    std::array<Vec4, 5> v{};
-    std::array<Vec2, 5> x{};
-    for (int a = 0; a < e.node_count; ++a) {
-      v[static_cast<std::size_t>(a)] = nodal[static_cast<std::size_t>(a)];
-      x[static_cast<std::size_t>(a)] = e.x[static_cast<std::size_t>(a)];
-    }
-    if (e.node_count == 4) {
-      v[4] = (v[0] + v[1] + v[2] + v[3]) / 4.0;
-      x[4] = (x[0] + x[1] + x[2] + x[3]) / 4.0;
-    }
-    const Mat4 C = compliance(e.law_at(0).D, e.analysis);
-    for (int k = 0; k < count; ++k) {
-      const TriangleState& t = tri[static_cast<std::size_t>(k)];
-      const Vec4& sigma_h = t.state.stress;
-      out.norm2 += t.w * energy(C, sigma_h);
-      for (int i = 0; i < 3; ++i) {
-        const auto a = static_cast<std::size_t>(t.vertex[static_cast<std::size_t>(i)]);
-        const auto b = static_cast<std::size_t>(t.vertex[static_cast<std::size_t>((i + 1) % 3)]);
-        const Vec4 diff = 0.5 * (v[a] + v[b]) - sigma_h;
-        const double w = e.analysis == AnalysisType::axisymmetric
-                             ? two_pi * 0.5 * (x[a].x() + x[b].x()) * t.area / 3.0
-                             : t.w / 3.0;
-        out.error2 += w * energy(C, diff);
-      }
-    }
-    return out;
+  // Vertex values: the corners' recovered stresses and, for a quad, their mean at the centre.
+  std::array<Vec4, 5> v{};
+  std::array<Vec2, 5> x{};
+  for (int a = 0; a < e.node_count; ++a) {
+    v[static_cast<std::size_t>(a)] = nodal[static_cast<std::size_t>(a)];
+    x[static_cast<std::size_t>(a)] = e.x[static_cast<std::size_t>(a)];
   }
+  if (e.node_count == 4) {
+    v[4] = (v[0] + v[1] + v[2] + v[3]) / 4.0;
+    x[4] = (x[0] + x[1] + x[2] + x[3]) / 4.0;
+  }
+  for (const TriangleState& t : tri) {
+    const Vec4& sigma_h = t.state.stress;
+    out.norm2 += t.w * energy(C, sigma_h);
+    for (int i = 0; i < 3; ++i) {
+      const auto a = static_cast<std::size_t>(t.vertex[static_cast<std::size_t>(i)]);
+      const auto b = static_cast<std::size_t>(t.vertex[static_cast<std::size_t>((i + 1) % 3)]);
+      const Vec4 diff = 0.5 * (v[a] + v[b]) - sigma_h;
+      const double w = e.analysis == AnalysisType::axisymmetric
+                           ? two_pi * 0.5 * (x[a].x() + x[b].x()) * t.area / 3.0
+                           : t.w / 3.0;
+      out.error2 += w * energy(C, diff);
+    }
+  }
+  return out;
+}
+
+/// An isoparametric element's integrals at its material points (states: their stresses), D_of(p)
+/// the law of point p; the compliance is inverted again only where the law changes.
+template <class LawOf>
+ElementError points_error(const ElementData& e, const LawOf& D_of, std::span<const ElementState> states,
+                          std::span<const Vec4> nodal) {
+  ElementError out;
   const auto rule = family(e.type).material_points(e.integration);
+  Mat4 D_last;
+  Mat4 C;
   for (std::size_t p = 0; p < rule.size(); ++p) {
     const PointGeometry g = point_geometry(e, rule[p].xi, rule[p].eta);
     const double w = volume_weight(e, g, rule[p].weight);
     Vec4 star = Vec4::Zero();
     for (int a = 0; a < e.node_count; ++a) star += g.shape.N[static_cast<std::size_t>(a)] * nodal[static_cast<std::size_t>(a)];
-    const Vec4& sigma_h = states.point[p].stress;
-    const Mat4 C = compliance(e.law_at(static_cast<int>(p)).D, e.analysis);
+    const Vec4& sigma_h = states[p].stress;
+    const Mat4& D = D_of(p);
+    if (p == 0 || D != D_last) {
+      D_last = D;
+      C = compliance(D, e.analysis);
+    }
     out.error2 += w * energy(C, star - sigma_h);
     out.norm2 += w * energy(C, sigma_h);
   }
   return out;
+}
+
+bool report_element(ElementType type) { return type == ElementType::saas || type == ElementType::tri3; }
+
+}  // namespace
+
+ElementError element_error(const ElementData& e, const ElementStates& states, std::span<const double> u,
+                           std::span<const Vec4> nodal) {
+  if (report_element(e.type)) {
+    std::array<TriangleState, 4> tri;
+    const int count = saas_triangle_states(e, u, tri);
+    return triangles_error(e, compliance(e.law_at(0).D, e.analysis),
+                           std::span<const TriangleState>(tri).first(static_cast<std::size_t>(count)), nodal);
+  }
+  return points_error(
+      e, [&](std::size_t p) -> const Mat4& { return e.law_at(static_cast<int>(p)).D; },
+      std::span<const ElementState>(states.point).first(static_cast<std::size_t>(states.point_count)), nodal);
+}
+
+ElementError element_error(const ElementData& geometry, std::span<const Constitutive> laws,
+                           std::span<const ElementState> point_states, const ElementSamples& samples,
+                           std::span<const Vec4> nodal) {
+  if (report_element(geometry.type)) {
+    std::array<TriangleState, 4> tri;
+    const int count = saas_triangles(geometry, tri);
+    assert(count == samples.count);
+    for (int k = 0; k < count; ++k) {
+      tri[static_cast<std::size_t>(k)].state.stress = samples.point[static_cast<std::size_t>(k)].value;
+    }
+    return triangles_error(geometry, compliance(laws.front().D, geometry.analysis),
+                           std::span<const TriangleState>(tri).first(static_cast<std::size_t>(count)), nodal);
+  }
+  return points_error(
+      geometry, [&](std::size_t p) -> const Mat4& { return (laws.size() == 1 ? laws.front() : laws[p]).D; },
+      point_states, nodal);
 }
 
 ErrorEstimate total_error(std::span<const ElementError> elements) {

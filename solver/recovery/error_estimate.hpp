@@ -20,6 +20,7 @@
 #include <span>
 
 #include "solver/fe/element_kernel.hpp"
+#include "solver/recovery/sampling_points.hpp"
 #include "solver/state/recovered_field.hpp"
 
 namespace saasgaps {
@@ -36,6 +37,14 @@ double complementary_energy_density(const Mat4& D, AnalysisType analysis, const 
 /// Element e's integrals: states its kernel states at the material points, u its displacements,
 /// nodal the recovered stress at its nodes (node_count of them, in its order).
 ElementError element_error(const ElementData& e, const ElementStates& states, std::span<const double> u,
+                           std::span<const Vec4> nodal);
+
+/// The same integrals from what the sampling pass computed (stress_samples): a report element's
+/// triangle stresses are its samples' values, so its static condensation is not repeated; the
+/// isoparametric families read their material points' states. geometry: solid_element_geometry's
+/// (no law); laws: the law of each material point, or one for all.
+ElementError element_error(const ElementData& geometry, std::span<const Constitutive> laws,
+                           std::span<const ElementState> point_states, const ElementSamples& samples,
                            std::span<const Vec4> nodal);
 
 /// The model's estimate from the elements' integrals.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <memory>
 #include <optional>
 
 #include "solver/base/index_ranges.hpp"
@@ -79,10 +80,6 @@ struct Fit {
   bool made = false;  ///< false: no patch (the node is no corner in this material)
   Polynomial polynomial = Polynomial::constant;
   Coefficients c;
-
-  [[nodiscard]] Vec4 at(const Vec2& x) const {
-    return c.transpose() * basis((x - centre) / scale, polynomial);
-  }
 };
 
 /// The corners of an element: its family's, or 3 for a report element given 3 nodes (a tri3 that
@@ -117,7 +114,31 @@ Incidence incidence(const Model& model) {
   return in;
 }
 
-/// Least squares with the highest polynomial the points determine (see the header).
+/// Cholesky factor L L^T = A of the n x n normal matrix A (lower triangle, row-major with stride
+/// max_terms), in place. False when a pivot falls to 1e-8 of its diagonal or below: a term the
+/// points (nearly) do not determine apart from the others (the sine of its column's angle to the
+/// earlier columns' span below 1e-4), left to the rank-revealing decomposition.
+bool cholesky_in_place(std::array<double, max_terms * max_terms>& L, int n) {
+  for (int j = 0; j < n; ++j) {
+    double* row_j = &L[static_cast<std::size_t>(j * max_terms)];
+    const double diagonal = row_j[j];
+    double d = diagonal;
+    for (int k = 0; k < j; ++k) d -= row_j[k] * row_j[k];
+    if (!(d > 1e-8 * diagonal)) return false;
+    row_j[j] = std::sqrt(d);
+    for (int i = j + 1; i < n; ++i) {
+      double* row_i = &L[static_cast<std::size_t>(i * max_terms)];
+      double v = row_i[j];
+      for (int k = 0; k < j; ++k) v -= row_i[k] * row_j[k];
+      row_i[j] = v / row_j[j];
+    }
+  }
+  return true;
+}
+
+/// Least squares with the highest polynomial the points determine (see the header). The normal
+/// equations A c = b (A = sum P P^T, b = sum P value^T) are accumulated in fixed-size arrays and
+/// solved by Cholesky; a rank-deficient A goes to the complete orthogonal decomposition.
 Fit fit_patch(const Vec2& centre, Polynomial most, std::span<const SamplingPoint* const> points) {
   Fit f;
   f.centre = centre;
@@ -127,28 +148,115 @@ Fit fit_patch(const Vec2& centre, Polynomial most, std::span<const SamplingPoint
   if (points.empty()) return f;
   f.made = true;
   for (Polynomial poly = most;; poly = monomials_of(poly).smaller) {
-    const int terms = monomials_of(poly).count;
+    const Monomials& m = monomials_of(poly);
+    const int terms = m.count;
     if (static_cast<int>(points.size()) < terms) continue;
-    TermMatrix A = TermMatrix::Zero(terms, terms);
-    Coefficients b = Coefficients::Zero(terms, 4);
+    std::array<double, max_terms * max_terms> A{};  // lower triangle, row i at i * max_terms
+    std::array<double, max_terms * 4> b{};          // row i at 4 i
     for (const SamplingPoint* p : points) {
-      const Basis P = basis((p->x - centre) / f.scale, poly);
-      A.noalias() += P * P.transpose();
-      b.noalias() += P * p->value.transpose();
+      const Vec2 x = (p->x - centre) / f.scale;
+      const std::array<double, 3> xp{1.0, x.x(), x.x() * x.x()};
+      const std::array<double, 3> yp{1.0, x.y(), x.y() * x.y()};
+      std::array<double, max_terms> P{};
+      for (int k = 0; k < terms; ++k) {
+        P[static_cast<std::size_t>(k)] = xp[static_cast<std::size_t>(m.power[static_cast<std::size_t>(k)][0])] *
+                                         yp[static_cast<std::size_t>(m.power[static_cast<std::size_t>(k)][1])];
+      }
+      for (std::size_t i = 0; i < static_cast<std::size_t>(terms); ++i) {
+        for (std::size_t j = 0; j <= i; ++j) A[i * max_terms + j] += P[i] * P[j];
+        for (std::size_t c = 0; c < 4; ++c) b[4 * i + c] += P[i] * p->value[static_cast<Eigen::Index>(c)];
+      }
     }
     f.polynomial = poly;
+    f.c.resize(terms, 4);
     if (terms == 1) {
-      f.c = b / A(0, 0);
+      for (Eigen::Index c = 0; c < 4; ++c) f.c(0, c) = b[static_cast<std::size_t>(c)] / A[0];
+      return f;
+    }
+    std::array<double, max_terms * max_terms> L = A;
+    if (cholesky_in_place(L, terms)) {
+      const auto n = static_cast<std::size_t>(terms);
+      for (std::size_t c = 0; c < 4; ++c) {
+        std::array<double, max_terms> y{};
+        for (std::size_t i = 0; i < n; ++i) {  // L y = b
+          double v = b[4 * i + c];
+          for (std::size_t k = 0; k < i; ++k) v -= L[i * max_terms + k] * y[k];
+          y[i] = v / L[i * max_terms + i];
+        }
+        for (std::size_t i = n; i-- > 0;) {  // L^T c = y
+          double v = y[i];
+          for (std::size_t k = i + 1; k < n; ++k) v -= L[k * max_terms + i] * y[k];
+          y[i] = v / L[i * max_terms + i];
+        }
+        for (std::size_t i = 0; i < n; ++i) f.c(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c)) = y[i];
+      }
       return f;
     }
     // Points that do not determine every term (all on two lines, say: a patch one element high)
     // leave the undetermined combinations at zero: the minimum-norm least-squares solution.
-    Eigen::CompleteOrthogonalDecomposition<TermMatrix> cod(A);
+    TermMatrix full(terms, terms);
+    Coefficients rhs(terms, 4);
+    for (Eigen::Index i = 0; i < terms; ++i) {
+      for (Eigen::Index j = 0; j <= i; ++j) {
+        full(i, j) = full(j, i) = A[static_cast<std::size_t>(i * max_terms + j)];
+      }
+      for (Eigen::Index c = 0; c < 4; ++c) rhs(i, c) = b[static_cast<std::size_t>(4 * i + c)];
+    }
+    Eigen::CompleteOrthogonalDecomposition<TermMatrix> cod(full);
     cod.setThreshold(1e-10);
-    f.c = cod.solve(b);
+    f.c = cod.solve(rhs);
     return f;
   }
 }
+
+/// A fit as pass 2 reads it, 16 bytes a side: a model-sized array of Fits (330 bytes each) is
+/// hundreds of MB at 10^6 unknowns, and fresh memory costs about 4 us a page on first touch on a
+/// virtual machine. Its numbers live in the pass's FitPool.
+struct StoredFit {
+  const double* data = nullptr;  ///< centre (r, z), scale, then c (terms x 4, column-major)
+  Polynomial polynomial = Polynomial::constant;
+  bool made = false;  ///< false: no patch (the node is no corner in this material)
+
+  [[nodiscard]] Vec4 at(const Vec2& x) const {
+    if (data == nullptr) return Vec4::Zero();
+    const Vec2 centre(data[0], data[1]);
+    const Eigen::Map<const Coefficients> c(data + 3, monomials_of(polynomial).count, 4);
+    return c.transpose() * basis((x - centre) / data[2], polynomial);
+  }
+};
+
+/// The numbers of one thread's fits, in chunks that never move (StoredFit points into them).
+class FitPool {
+ public:
+  StoredFit keep(const Fit& f) {
+    StoredFit s;
+    s.polynomial = f.polynomial;
+    s.made = f.made;
+    if (!f.made) return s;
+    const auto size = static_cast<std::size_t>(f.c.size());
+    double* d = take(3 + size);
+    d[0] = f.centre.x();
+    d[1] = f.centre.y();
+    d[2] = f.scale;
+    std::copy_n(f.c.data(), size, d + 3);
+    s.data = d;
+    return s;
+  }
+
+ private:
+  static constexpr std::size_t chunk = std::size_t{1} << 14;  // doubles (128 KiB)
+  double* take(std::size_t n) {
+    if (used_ + n > chunk) {
+      chunks_.push_back(std::make_unique_for_overwrite<double[]>(chunk));
+      used_ = 0;
+    }
+    double* p = chunks_.back().get() + used_;
+    used_ += n;
+    return p;
+  }
+  std::vector<std::unique_ptr<double[]>> chunks_;
+  std::size_t used_ = chunk;
+};
 
 /// The sampling points of one patch: those of corner node n's elements in material m, and their
 /// mirror images when n is on a symmetry line. Kept in the caller's buffers (reused per patch).
@@ -214,6 +322,7 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
   // The sides: the distinct materials of each node's elements, in increasing order.
   RecoveredField f;
   f.first.assign(node_count + 1, 0);
+  f.material.reserve(node_count);
   for (std::size_t n = 0; n < node_count; ++n) {
     std::array<int, 16> seen{};
     int count = 0;
@@ -231,9 +340,10 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
   f.value.assign(side_count, Vec4::Zero());
 
   // Pass 1, per corner side: its patch's fit and whether it is interior to its material's region.
-  std::vector<Fit> fits(side_count);
+  std::vector<StoredFit> fits(side_count);
+  std::vector<FitPool> pools(range_count(node_count));
   std::vector<std::uint8_t> interior(side_count, 0);
-  for_each_range(node_count, [&](std::size_t begin, std::size_t end, unsigned) {
+  for_each_range(node_count, [&](std::size_t begin, std::size_t end, unsigned r) {
     PatchPoints patch(model, in, samples, symmetry);
     std::vector<int> neighbours;
     for (std::size_t n = begin; n < end; ++n) {
@@ -264,7 +374,7 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
           i = j;
         }
         interior[s] = closed ? 1 : 0;
-        fits[s] = fit_patch(x, *poly, patch.points());
+        fits[s] = pools[r].keep(fit_patch(x, *poly, patch.points()));
       }
     }
   });

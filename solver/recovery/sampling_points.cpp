@@ -55,6 +55,11 @@ const std::array<std::array<double, 9>, 4>& gauss3_to_gauss2() {
 }
 
 ElementSamples stress_samples(const ElementData& e, const ElementStates& states, std::span<const double> u) {
+  return stress_samples(e, std::span<const ElementState>(states.point).first(static_cast<std::size_t>(states.point_count)),
+                        u);
+}
+
+ElementSamples stress_samples(const ElementData& e, std::span<const ElementState> states, std::span<const double> u) {
   ElementSamples out;
   switch (e.type) {
     case ElementType::saas:
@@ -69,13 +74,13 @@ ElementSamples stress_samples(const ElementData& e, const ElementStates& states,
     }
     case ElementType::quad8:
     case ElementType::quad9:
-      if (states.point_count == 9) {
+      if (states.size() == 9) {
         const auto two = gauss_square(2);
         const auto& W = gauss3_to_gauss2();
         out.count = 4;
         for (std::size_t q = 0; q < 4; ++q) {
           Vec4 s = Vec4::Zero();
-          for (std::size_t p = 0; p < 9; ++p) s += W[q][p] * states.point[p].stress;
+          for (std::size_t p = 0; p < 9; ++p) s += W[q][p] * states[p].stress;
           out.point[q] = {position(e, two[q].xi, two[q].eta), s};
         }
         return out;
@@ -84,10 +89,10 @@ ElementSamples stress_samples(const ElementData& e, const ElementStates& states,
     case ElementType::tri6:
     case ElementType::quad4i: {
       const auto rule = family(e.type).material_points(e.integration);
-      assert(static_cast<int>(rule.size()) == states.point_count && rule.size() <= max_sampling_points);
-      out.count = states.point_count;
+      assert(rule.size() == states.size() && rule.size() <= max_sampling_points);
+      out.count = static_cast<int>(states.size());
       for (std::size_t p = 0; p < rule.size(); ++p) {
-        out.point[p] = {position(e, rule[p].xi, rule[p].eta), states.point[p].stress};
+        out.point[p] = {position(e, rule[p].xi, rule[p].eta), states[p].stress};
       }
       return out;
     }

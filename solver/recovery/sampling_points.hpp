@@ -38,6 +38,10 @@ struct ElementSamples {
 /// The sampling points of an element with displacements u (2 x node_count) whose kernel states
 /// (at its material points) are `states`.
 ElementSamples stress_samples(const ElementData& e, const ElementStates& states, std::span<const double> u);
+/// The same with the states at the material points viewed (point_count of them). The report's
+/// elements (saas, tri3) read e's law, temperatures and loads and u, not the states; the others read
+/// only e's geometry (solid_element_geometry) and the states, not u.
+ElementSamples stress_samples(const ElementData& e, std::span<const ElementState> point_states, std::span<const double> u);
 
 /// The 2 x 2 Gauss points' values from a 3 x 3 rule's (both xi fastest): value(q) = sum_p W[q][p] value(p).
 const std::array<std::array<double, 9>, 4>& gauss3_to_gauss2();

@@ -10,35 +10,31 @@ namespace saasgaps {
 
 namespace {
 
-/// Element e's kernel input and its states at its material points.
-struct ElementInput {
-  ElementData data;
-  ElementStates states;
-  ElementVector u;
-};
-
-ElementInput element_input(const Model& model, std::size_t e, std::span<const double> displacement,
-                           std::span<const Constitutive> laws, std::span<const ElementState> point_states,
-                           const MaterialPoints& points) {
-  ElementInput in{solid_element_data(model, e, laws), {}, element_displacements(displacement, model.elements[e].node_span())};
-  in.states.point_count = points.count(e);
-  for (int p = 0; p < in.states.point_count; ++p) {
-    in.states.point[static_cast<std::size_t>(p)] = point_states[points.first(e) + static_cast<std::size_t>(p)];
-  }
-  return in;
-}
+bool report_element(ElementType type) { return type == ElementType::saas || type == ElementType::tri3; }
 
 }  // namespace
 
 StressRecovery recover_stresses(const Model& model, std::span<const double> displacement, const PointLawsOf& laws,
                                 std::span<const ElementState> point_states, const MaterialPoints& points) {
   const std::size_t count = model.elements.size();
+  const auto states_of = [&](std::size_t e) {
+    return point_states.subspan(points.first(e), static_cast<std::size_t>(points.count(e)));
+  };
+  // Each element is evaluated once: the report's elements solve their four triangles here (their
+  // centre is condensed out: law, temperatures, loads and displacements needed), and the error pass
+  // reads those triangles' stresses back from the samples; the isoparametric families need only
+  // their geometry and their material points' states, here and in the error pass.
   std::vector<ElementSamples> samples(count);
   for_each_range(count, [&](std::size_t begin, std::size_t end, unsigned) {
     std::array<Constitutive, max_material_points> scratch;
     for (std::size_t e = begin; e < end; ++e) {
-      const ElementInput in = element_input(model, e, displacement, laws(e, scratch), point_states, points);
-      samples[e] = stress_samples(in.data, in.states, values(in.u));
+      const Element& el = model.elements[e];
+      if (report_element(el.type)) {
+        const ElementData data = solid_element_data(model, e, laws(e, scratch));
+        samples[e] = stress_samples(data, std::span<const ElementState>(), values(element_displacements(displacement, el.node_span())));
+      } else {
+        samples[e] = stress_samples(solid_element_geometry(model, e), states_of(e), std::span<const double>());
+      }
     }
   });
   StressRecovery out;
@@ -49,10 +45,10 @@ StressRecovery recover_stresses(const Model& model, std::span<const double> disp
   for_each_range(count, [&](std::size_t begin, std::size_t end, unsigned) {
     std::array<Constitutive, max_material_points> scratch;
     for (std::size_t e = begin; e < end; ++e) {
-      const ElementInput in = element_input(model, e, displacement, laws(e, scratch), point_states, points);
+      const ElementData geometry = solid_element_geometry(model, e);
       const auto nodal = element_nodal_values(model, out.stress, e);
-      errors[e] = element_error(in.data, in.states, values(in.u),
-                                std::span<const Vec4>(nodal).first(static_cast<std::size_t>(in.data.node_count)));
+      errors[e] = element_error(geometry, laws(e, scratch), states_of(e), samples[e],
+                                std::span<const Vec4>(nodal).first(static_cast<std::size_t>(geometry.node_count)));
     }
   });
   out.element_error.resize(count);
