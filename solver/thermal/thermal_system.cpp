@@ -323,6 +323,11 @@ void ThermalSystem::assemble_rhs(std::span<const Conductivity> k, double inverse
   // Films add into these; add_rhs reads no K unless the element is lifted.
   Eigen::Matrix4d unused = Eigen::Matrix4d::Zero();
   ConductionMatrix unused_iso;
+  // A lifted element's whole block (its K lifts the prescribed temperatures), edges included.
+  const auto add_whole = [&](std::size_t e, std::span<const Vec2> x, auto block) {
+    add_edges(e, x, {}, block.K, block.f);
+    assembler_.add_rhs(e, ElementBlock::of(block.K, block.f), rhs);
+  };
   for (std::size_t e = 0; e < model_.elements.size(); ++e) {
     const ConductionLoad element_load = load(e, rates.empty() ? 0.0 : rates[e], previous);
     const Element& el = model_.elements[e];
@@ -330,9 +335,7 @@ void ThermalSystem::assemble_rhs(std::span<const Conductivity> k, double inverse
     if (conducts_isoparametrically(el.type)) {
       if (lifted) {
         const IsoConductionData d = iso_data(el, k[e]);
-        IsoConductionBlock block = isoparametric_conduction_block(d, element_load);
-        add_edges(e, d.x, {}, block.K, block.f);
-        assembler_.add_rhs(e, ElementBlock::of(block.K, block.f), rhs);
+        add_whole(e, d.x, isoparametric_conduction_block(d, element_load));
         continue;
       }
       ConductionVector f = isoparametric_conduction_load(loads.capacity(e), loads.source(e), element_load);
@@ -343,9 +346,7 @@ void ThermalSystem::assemble_rhs(std::span<const Conductivity> k, double inverse
     }
     if (lifted) {
       const ConductionData d = data(el, k[e]);
-      ConductionBlock block = conduction_block(d, element_load);
-      add_edges(e, d.x, {}, block.K, block.f);
-      assembler_.add_rhs(e, ElementBlock::of(block.K, block.f), rhs);
+      add_whole(e, d.x, conduction_block(d, element_load));
       continue;
     }
     Eigen::Vector4d f = conduction_load(loads.report_parts(e), element_load);
