@@ -24,6 +24,7 @@
 #include "service/server_process.hpp"
 #include "support/transient_heating.hpp"
 #include "web/browser_session.hpp"
+#include "web/plain_block.hpp"
 
 namespace saasgaps::testing {
 namespace {
@@ -478,7 +479,7 @@ TEST_F(DashboardRuns, ATransientHeatRunShowsItsThermalRowsInATable) {
 
 /// A quarter of a thick ring a = 1 .. b = 2 of quad8, `radial` x `around` elements, every node on the
 /// map (the mid-side nodes of the arcs on the circles), under a bore pressure of 100 (plane strain,
-/// held in z on the x axis and in r on the y axis).
+/// held in z on the x axis and in r on the y axis; the plain block's units and material).
 json quad8_quarter_ring(int radial, int around) {
   json nodes = json::array(), elements = json::array(), constraints = json::array(), pressures = json::array();
   const auto id = [radial](int I, int J) { return J * (2 * radial + 1) + I + 1; };
@@ -501,14 +502,13 @@ json quad8_quarter_ring(int radial, int around) {
       if (i == 0) pressures.push_back({{"nodes", {id(0, J + 2), id(0, J)}}, {"normal", 100.0}});
     }
   }
-  return {{"schema_version", 1},
-          {"title", "quad8 quarter ring under bore pressure"},
-          {"analysis", {{"type", "plane_strain"}}},
-          {"nodes", nodes},
-          {"materials", {{{"id", 1}, {"elastic", "isotropic"}, {"table", {{{"T", 0.0}, {"E", 30.0e6}, {"nu", 0.3}, {"alpha", 0.0}}}}}}},
-          {"elements", elements},
-          {"constraints", constraints},
-          {"loads", {{"pressures", pressures}}}};
+  json doc = plain_block_document(1, 1);  // its units, analysis and material; the mesh and loads are the ring's
+  doc["title"] = "quad8 quarter ring under bore pressure";
+  doc["nodes"] = nodes;
+  doc["elements"] = elements;
+  doc["constraints"] = constraints;
+  doc["loads"] = {{"pressures", pressures}};
+  return doc;
 }
 
 TEST_F(DashboardRuns, AQuad8ResultIsDrawnWithCurvedEdgesAndItsErrorEstimate) {
