@@ -128,6 +128,9 @@ struct ThermalResult {
   int passes = 1;                 ///< thermal-contact passes (conducting gaps), else 1
   int time_steps = 0;             ///< transient: steps taken
   int factorizations = 0;         ///< of the conduction matrix
+  /// Solves whose matrix was that of the solve before, so that only their right-hand side was
+  /// assembled (ThermalSystem::assemble_rhs); not written to the result.
+  int rhs_only_solves = 0;
   /// The recovered nodal heat flux (q_r, q_z, 0, 0) per node and material side, each element's
   /// estimated flux error in the conduction energy norm, and the model's estimate, with T above
   /// (solver/recovery/flux_recovery.hpp); empty / none before a conduction solve.

@@ -54,17 +54,26 @@ IsoConductionParts isoparametric_conduction_parts(const IsoConductionData& e) {
   return parts;
 }
 
-IsoConductionBlock isoparametric_conduction_block(const IsoConductionData& e, const ConductionLoad& load) {
-  const IsoConductionParts parts = isoparametric_conduction_parts(e);
+ConductionVector isoparametric_conduction_load(const ConductionMatrix& C, const ConductionVector& source,
+                                               const ConductionLoad& load) {
+  ConductionVector f = load.source * source;
+  if (load.capacity_rate > 0.0) {
+    const Eigen::Map<const Eigen::VectorXd> previous(load.previous.data(), source.size());
+    f += load.capacity_rate * (C * previous);
+  }
+  return f;
+}
+
+IsoConductionBlock isoparametric_conduction_block(const IsoConductionParts& parts, const ConductionLoad& load) {
   IsoConductionBlock out;
   out.K = parts.K;
-  out.f = load.source * parts.source;
-  if (load.capacity_rate > 0.0) {
-    const Eigen::Map<const Eigen::VectorXd> previous(load.previous.data(), e.node_count);
-    out.K += load.capacity_rate * parts.C;
-    out.f += load.capacity_rate * (parts.C * previous);
-  }
+  if (load.capacity_rate > 0.0) out.K += load.capacity_rate * parts.C;
+  out.f = isoparametric_conduction_load(parts.C, parts.source, load);
   return out;
+}
+
+IsoConductionBlock isoparametric_conduction_block(const IsoConductionData& e, const ConductionLoad& load) {
+  return isoparametric_conduction_block(isoparametric_conduction_parts(e), load);
 }
 
 Vec2 isoparametric_conduction_flux(const IsoConductionData& e, std::span<const double> T) {

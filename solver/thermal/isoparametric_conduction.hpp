@@ -67,6 +67,13 @@ struct IsoConductionBlock {
   ConductionVector f;
 };
 IsoConductionBlock isoparametric_conduction_block(const IsoConductionData& e, const ConductionLoad& load);
+/// The same from the element's parts.
+IsoConductionBlock isoparametric_conduction_block(const IsoConductionParts& parts, const ConductionLoad& load);
+
+/// f of isoparametric_conduction_block from the parts it depends on (C, source; K is not read): the
+/// same operations, so the same bits, without the kernel.
+ConductionVector isoparametric_conduction_load(const ConductionMatrix& C, const ConductionVector& source,
+                                               const ConductionLoad& load);
 
 /// The heat flux q = -k grad T at the element's reference centre (power / area); T one per node.
 Vec2 isoparametric_conduction_flux(const IsoConductionData& e, std::span<const double> T);

@@ -62,6 +62,7 @@ class ConductionSolver {
 
   [[nodiscard]] const ThermalSystem& system() const { return system_; }
   [[nodiscard]] int factorizations() const { return factorizations_; }
+  [[nodiscard]] int rhs_only_solves() const { return rhs_only_solves_; }
 
   /// current: where radiating edges are linearized (ThermalSystem::assemble).
   std::vector<double> solve(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
@@ -76,6 +77,7 @@ class ConductionSolver {
                              std::ranges::equal(contact_conductance, pairs_);
     if (same_matrix) {
       system_.assemble_rhs(k, inverse_dt, previous, gap_conductance, contact_conductance, loads_, rhs_);
+      ++rhs_only_solves_;
       cholesky_.solve(rhs_, x_);
       return system_.node_temperatures(x_);
     }
@@ -119,10 +121,11 @@ class ConductionSolver {
   std::vector<double> rates_;
   std::vector<double> gaps_;
   std::vector<double> pairs_;
-  std::vector<ConductionLoadParts> loads_;
+  ConductionLoads loads_;
   std::vector<double> rhs_;
   std::vector<double> x_;
   int factorizations_ = 0;
+  int rhs_only_solves_ = 0;
 };
 
 /// A row of `kind` at position `index` with the extremes of T filled in.
@@ -193,6 +196,7 @@ ThermalResult solve_steady_conduction(const Model& model, std::span<const double
       result.iterations = pass;
       result.last_change = change;
       result.factorizations = solver.factorizations();
+      result.rhs_only_solves = solver.rhs_only_solves();
       result.flux = system.fluxes(k_next, T);
       result.T = std::move(T);
       estimate_flux_error(model, k_next, result);
@@ -264,6 +268,7 @@ ThermalResult solve_transient_conduction(const Model& model, std::span<const dou
     H = std::move(*next);
   }
   result.factorizations = solver.factorizations();
+  result.rhs_only_solves = solver.rhs_only_solves();
   const std::vector<Conductivity> k_last = system.conductivities(T);
   result.flux = system.fluxes(k_last, T);
   result.T = std::move(T);

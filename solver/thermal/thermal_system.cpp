@@ -275,25 +275,26 @@ Eigen::Matrix4d ThermalSystem::gap_matrix(std::size_t g, double conductance) con
 void ThermalSystem::assemble(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
                              std::span<const double> gap_conductance, std::span<const double> contact_conductance,
                              std::span<const double> current, std::span<double> values, std::span<double> rhs,
-                             std::vector<ConductionLoadParts>* loads) const {
+                             ConductionLoads* loads) const {
   std::fill(values.begin(), values.end(), 0.0);
   std::fill(rhs.begin(), rhs.end(), 0.0);
   const SystemSink sink{values, rhs};
   const std::vector<double> rates = capacity_rates(inverse_dt, previous);
-  if (loads != nullptr) loads->resize(model_.elements.size());
+  if (loads != nullptr) loads->clear();
   for (std::size_t e = 0; e < model_.elements.size(); ++e) {
     const Element& el = model_.elements[e];
     if (conducts_isoparametrically(el.type)) {
-      // Its load parts are not kept: assemble_rhs computes its block whole.
       const IsoConductionData d = iso_data(el, k[e]);
-      IsoConductionBlock block = isoparametric_conduction_block(d, load(e, rates.empty() ? 0.0 : rates[e], previous));
+      const IsoConductionParts parts = isoparametric_conduction_parts(d);
+      IsoConductionBlock block = isoparametric_conduction_block(parts, load(e, rates.empty() ? 0.0 : rates[e], previous));
+      if (loads != nullptr) loads->keep(parts.C, parts.source);
       add_edges(e, d.x, current, block.K, block.f);
       assembler_.add(e, ElementBlock::of(block.K, block.f), sink);
       continue;
     }
     const ConductionData d = data(el, k[e]);
     ConductionBlock block = conduction_block(d, load(e, rates.empty() ? 0.0 : rates[e], previous));
-    if (loads != nullptr) (*loads)[e] = conduction_load_parts(d, source_[e]);
+    if (loads != nullptr) loads->keep(conduction_load_parts(d, source_[e]));
     add_edges(e, d.x, current, block.K, block.f);
     assembler_.add(e, ElementBlock::of(block.K, block.f), sink);
   }
@@ -314,30 +315,41 @@ void ThermalSystem::assemble(std::span<const Conductivity> k, double inverse_dt,
 
 void ThermalSystem::assemble_rhs(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
                                  std::span<const double> gap_conductance,
-                                 std::span<const double> contact_conductance,
-                                 const std::vector<ConductionLoadParts>& loads, std::span<double> rhs) const {
+                                 std::span<const double> contact_conductance, const ConductionLoads& loads,
+                                 std::span<double> rhs) const {
   assert(!radiates_ && loads.size() == model_.elements.size());
   std::fill(rhs.begin(), rhs.end(), 0.0);
   const std::vector<double> rates = capacity_rates(inverse_dt, previous);
-  Eigen::Matrix4d unused = Eigen::Matrix4d::Zero();  // films add into it; add_rhs reads no K unless lifted
+  // Films add into these; add_rhs reads no K unless the element is lifted.
+  Eigen::Matrix4d unused = Eigen::Matrix4d::Zero();
+  ConductionMatrix unused_iso;
+  // A lifted element's whole block (its K lifts the prescribed temperatures), edges included.
+  const auto add_whole = [&](std::size_t e, std::span<const Vec2> x, auto block) {
+    add_edges(e, x, {}, block.K, block.f);
+    assembler_.add_rhs(e, ElementBlock::of(block.K, block.f), rhs);
+  };
   for (std::size_t e = 0; e < model_.elements.size(); ++e) {
     const ConductionLoad element_load = load(e, rates.empty() ? 0.0 : rates[e], previous);
     const Element& el = model_.elements[e];
+    const bool lifted = assembler_.lifted(e);
     if (conducts_isoparametrically(el.type)) {
-      const IsoConductionData d = iso_data(el, k[e]);
-      IsoConductionBlock block = isoparametric_conduction_block(d, element_load);
-      add_edges(e, d.x, {}, block.K, block.f);
-      assembler_.add_rhs(e, ElementBlock::of(block.K, block.f), rhs);
+      if (lifted) {
+        const IsoConductionData d = iso_data(el, k[e]);
+        add_whole(e, d.x, isoparametric_conduction_block(d, element_load));
+        continue;
+      }
+      ConductionVector f = isoparametric_conduction_load(loads.capacity(e), loads.source(e), element_load);
+      unused_iso.setZero(f.size(), f.size());
+      if (!edges_[e].empty()) add_edges(e, node_coordinates(model_, el.node_span()), {}, unused_iso, f);
+      assembler_.add_rhs(e, ElementBlock::of(unused_iso, f), rhs);
       continue;
     }
-    if (assembler_.lifted(e)) {
+    if (lifted) {
       const ConductionData d = data(el, k[e]);
-      ConductionBlock block = conduction_block(d, element_load);
-      add_edges(e, d.x, {}, block.K, block.f);
-      assembler_.add_rhs(e, ElementBlock::of(block.K, block.f), rhs);
+      add_whole(e, d.x, conduction_block(d, element_load));
       continue;
     }
-    Eigen::Vector4d f = conduction_load(loads[e], element_load);
+    Eigen::Vector4d f = conduction_load(loads.report_parts(e), element_load);
     if (!edges_[e].empty()) add_edges(e, corner_coordinates(model_, el.nodes, el.node_count), {}, unused, f);
     assembler_.add_rhs(e, ElementBlock::of(unused, f), rhs);
   }

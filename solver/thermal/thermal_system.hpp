@@ -29,6 +29,7 @@
 #include "solver/assembly/dof_map.hpp"
 #include "solver/model/model.hpp"
 #include "solver/thermal/conduction_kernel.hpp"
+#include "solver/thermal/conduction_loads.hpp"
 #include "solver/thermal/contact_conductance.hpp"
 #include "solver/thermal/isoparametric_conduction.hpp"
 
@@ -63,13 +64,13 @@ class ThermalSystem {
   /// at the edge's mean current temperature T0 (Newton): q_out ~ es (T0^4 - Ta^4) + 4 es T0^3 (T - T0),
   /// a film h = 4 es T0^3 with ambient T0 - (T0^4 - Ta^4) / (4 T0^3). At T0 <= 0 (a start at zero
   /// absolute) the secant film es (T0^2 + Ta^2)(T0 + Ta) with ambient Ta instead.
-  /// loads (optional): receives each solid element's load parts (conduction_kernel.hpp) for
+  /// loads (optional): receives each solid element's load parts (conduction_loads.hpp) for
   /// assemble_rhs. A node nothing conducts to gets the row T = held (above): previous's value, or
   /// the reference temperature when previous is empty.
   void assemble(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
                 std::span<const double> gap_conductance, std::span<const double> contact_conductance,
                 std::span<const double> current, std::span<double> values, std::span<double> rhs,
-                std::vector<ConductionLoadParts>* loads = nullptr) const;
+                ConductionLoads* loads = nullptr) const;
 
   /// Each solid element's capacity rate density c / dt, c at the mean of its nodes' previous
   /// temperatures (what assemble uses); empty for inverse_dt = 0.
@@ -78,11 +79,10 @@ class ThermalSystem {
   /// The rhs of assemble, to the last bit, without the matrix: valid while k, the capacity rates,
   /// the conductances and loads (from the assemble that filled it) are those of that assemble and
   /// no edge radiates. Elements with a nonzero prescribed temperature are computed whole (their K
-  /// lifts it), and so are tri6, quad8, quad9 and quad4i (no load parts are kept for them: their C
-  /// would be 81 numbers an element); the report's others from their load parts with no kernel.
+  /// lifts it); every other element of every family from its load parts with no kernel.
   void assemble_rhs(std::span<const Conductivity> k, double inverse_dt, std::span<const double> previous,
                     std::span<const double> gap_conductance, std::span<const double> contact_conductance,
-                    const std::vector<ConductionLoadParts>& loads, std::span<double> rhs) const;
+                    const ConductionLoads& loads, std::span<double> rhs) const;
 
   /// Node temperatures from the free unknowns x (prescribed nodes take their values).
   [[nodiscard]] std::vector<double> node_temperatures(std::span<const double> x) const;

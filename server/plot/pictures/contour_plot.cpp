@@ -154,16 +154,16 @@ std::size_t element_triangles(const ResultMesh& mesh, std::size_t e, bool many, 
 
 // ----------------------------------------------------------------------------------------- edges
 /// An element's edge as drawn: its points from corner to corner in device px, through the
-/// mid-side node along the element's own map (curved: kEdgePieces straight pieces).
-constexpr int edge_pieces = 8;
-
-void add_edge_path(cairo_t* cr, const SolidElement& e, int edge, const std::vector<Point>& at) {
+/// mid-side node along the element's own map, in the straight pieces of the element's drawing
+/// subdivision (drawing_edge_pieces): the outline and the mesh lines follow the bands' edges
+/// (finer pieces left white slivers between the bands and a curved outline).
+void add_edge_path(cairo_t* cr, const SolidElement& e, int edge, const std::vector<Point>& at, bool many) {
   const ElementFamily& family = element_family(e);
   const std::vector<int> nodes = family_nodes(e);
   const EdgeNodes& nodes_of_edge = family.edges[static_cast<std::size_t>(edge)];
   const auto& p0 = family.node_positions[static_cast<std::size_t>(nodes_of_edge.first())];
   const auto& p1 = family.node_positions[static_cast<std::size_t>(nodes_of_edge.last())];
-  const int pieces = family.quadratic() ? edge_pieces : 1;
+  const int pieces = drawing_edge_pieces(family, many);
   const auto device = [&at](int n) { return std::array<double, 2>{at[n].x, at[n].y}; };
   ShapeValues N;
   for (int k = 0; k <= pieces; ++k) {
@@ -207,8 +207,8 @@ std::vector<std::array<std::size_t, 2>> boundary_edges(const ResultMesh& mesh) {
 }
 
 void stroke_edges(cairo_t* cr, const ResultMesh& mesh, const std::vector<std::array<std::size_t, 2>>& edges,
-                  const std::vector<Point>& at) {
-  for (const auto& [e, edge] : edges) add_edge_path(cr, mesh.solids[e], static_cast<int>(edge), at);
+                  const std::vector<Point>& at, bool many) {
+  for (const auto& [e, edge] : edges) add_edge_path(cr, mesh.solids[e], static_cast<int>(edge), at, many);
   cairo_stroke(cr);
 }
 
@@ -504,7 +504,7 @@ ContourLegend draw_contour_plot(const Canvas& canvas, const PlotResult& result, 
   if (deformed) {
     canvas.set_color(grey(0.55));
     canvas.set_line(0.9, true);
-    stroke_edges(cr, mesh, outline, rest);
+    stroke_edges(cr, mesh, outline, rest, many);
     canvas.set_line(1.0);
   }
 
@@ -520,13 +520,13 @@ ContourLegend draw_contour_plot(const Canvas& canvas, const PlotResult& result, 
     canvas.set_color(grey(0.15), 0.55);
     canvas.set_line(0.6);
     for (const SolidElement& e : mesh.solids) {
-      for (int k = 0; k < element_family(e).edge_count(); ++k) add_edge_path(cr, e, k, at);
+      for (int k = 0; k < element_family(e).edge_count(); ++k) add_edge_path(cr, e, k, at, many);
     }
     cairo_stroke(cr);
   }
   canvas.set_color(colors::black);
   canvas.set_line(1.2);
-  stroke_edges(cr, mesh, outline, at);
+  stroke_edges(cr, mesh, outline, at, many);
   canvas.set_line(1.0);
   draw_gap_markers(canvas, mesh, at, rest, strip);
   const std::string length_unit = with_unit("", Quantity::length, mesh.units);

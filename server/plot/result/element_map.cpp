@@ -128,4 +128,9 @@ const Subdivision& drawing_subdivision(const ElementFamily& family, bool many) {
   return triangle ? triangle4 : square4;
 }
 
+int drawing_edge_pieces(const ElementFamily& family, bool many) {
+  if (!family.quadratic()) return 1;
+  return many ? 2 : 4;
+}
+
 }  // namespace saasgaps::plot

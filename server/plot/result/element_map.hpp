@@ -45,4 +45,9 @@ Subdivision subdivide(CellShape cell, int n);
 /// sub-vertices drawn linearly), 2 for those above `many` elements (memory and time).
 const Subdivision& drawing_subdivision(const ElementFamily& family, bool many);
 
+/// The straight pieces an edge of the family is drawn with, those of its drawing subdivision's
+/// boundary (1 for the straight edges of tri3, saas and quad4i), so that outlines and mesh lines
+/// run along the filled bands' edges.
+int drawing_edge_pieces(const ElementFamily& family, bool many);
+
 }  // namespace saasgaps::plot
