@@ -83,8 +83,13 @@ void ConstraintRows::set_penalties(std::span<const double> values) {
   for (std::size_t r = 0; r < rows_.size(); ++r) {
     Row& row = rows_[r];
     row.stiffness = 0.0;
-    for (const Entry& e : entries(r)) row.stiffness += e.coefficient * e.coefficient * values[diagonal_[e.equation]];
-    row.rho = penalty_factor * row.stiffness;
+    double flexibility = 0.0;  // c_r^T diag(K)^-1 c_r
+    for (const Entry& e : entries(r)) {
+      const double d = values[diagonal_[e.equation]];
+      row.stiffness += e.coefficient * e.coefficient * d;
+      flexibility += e.coefficient * e.coefficient / d;
+    }
+    row.rho = penalty_factor * std::min(row.stiffness, jacobi_multiple / flexibility);
   }
   factored_.clear();
   held_.clear();
