@@ -227,6 +227,12 @@ class ConstraintRows {
   // made, so it can no longer solve.
   SetCorrection correction_;
   std::vector<std::uint8_t> corrected_;
+  // condense()'s forward solves on the supernodal factorization held (window_reach_ over the rows
+  // window_rows_, window_gram_ = Z'Z), kept for correct() until the next factorization: a set the
+  // look-ahead finds differs from the factorized one only in rows of its window.
+  SparseCholesky::Reach window_reach_;
+  std::vector<double> window_gram_;
+  std::vector<std::size_t> window_rows_;
   bool converted_ = false;
   UpdatableFactor updatable_;
   SparseColumns columns_;
