@@ -83,8 +83,13 @@ void ConstraintRows::set_penalties(std::span<const double> values) {
   for (std::size_t r = 0; r < rows_.size(); ++r) {
     Row& row = rows_[r];
     row.stiffness = 0.0;
-    for (const Entry& e : entries(r)) row.stiffness += e.coefficient * e.coefficient * values[diagonal_[e.equation]];
-    row.rho = penalty_factor * row.stiffness;
+    double flexibility = 0.0;  // c_r^T diag(K)^-1 c_r
+    for (const Entry& e : entries(r)) {
+      const double d = values[diagonal_[e.equation]];
+      row.stiffness += e.coefficient * e.coefficient * d;
+      flexibility += e.coefficient * e.coefficient / d;
+    }
+    row.rho = penalty_factor * std::min(row.stiffness, jacobi_multiple / flexibility);
   }
   factored_.clear();
   held_.clear();
@@ -102,6 +107,7 @@ void ConstraintRows::factor(SparseCholesky& cholesky, std::span<const double> va
   }
   corrected_.clear();
   converted_ = false;
+  window_rows_.clear();  // condense()'s forward solves were on the factorization replaced
   cholesky.factorize(values_);
 }
 
@@ -125,12 +131,26 @@ void ConstraintRows::add_column(std::size_t r, double scale) {
 bool ConstraintRows::correct(std::span<const std::uint8_t> active) {
   columns_.clear();
   std::vector<double> penalties;
+  std::vector<std::size_t> changed;
   for (std::size_t r = 0; r < rows_.size(); ++r) {
     if (factored_[r] == active[r]) continue;
     add_column(r, 1.0);
+    changed.push_back(r);
     penalties.push_back(active[r] ? rows_[r].rho : -rows_[r].rho);
   }
-  correction_.set(*cholesky_, columns_, penalties);
+  // Rows the look-ahead condensed on this factorization (window_rows_, sorted): their columns of
+  // its forward solves instead of solving again.
+  std::vector<std::size_t> subset;
+  for (const std::size_t r : changed) {
+    const auto at = std::lower_bound(window_rows_.begin(), window_rows_.end(), r);
+    if (at == window_rows_.end() || *at != r) break;
+    subset.push_back(static_cast<std::size_t>(at - window_rows_.begin()));
+  }
+  if (!window_rows_.empty() && subset.size() == changed.size()) {
+    correction_.set(*cholesky_, window_reach_, window_gram_, subset, penalties);
+  } else {
+    correction_.set(*cholesky_, columns_, penalties);
+  }
   if (correction_.loss() > max_correction_loss) return false;
   corrected_.assign(active.begin(), active.end());
   return true;
@@ -298,8 +318,11 @@ bool ConstraintRows::condense(std::span<const std::size_t> window, std::span<con
   for (const std::size_t r : window) {
     add_column(r, 1.0);
   }
-  const std::vector<double> form = cholesky_->inverse_form(columns_);
-  const Eigen::Map<const Eigen::MatrixXd> t(form.data(), w, w);
+  window_reach_ = cholesky_->forward_columns(columns_);
+  window_gram_ = window_reach_.gram();
+  window_rows_.assign(window.begin(), window.end());
+  if (!std::is_sorted(window_rows_.begin(), window_rows_.end())) window_rows_.clear();  // correct() searches it
+  const Eigen::Map<const Eigen::MatrixXd> t(window_gram_.data(), w, w);
   Eigen::VectorXd penalty(w), gap(w), y0(w);
   for (Eigen::Index i = 0; i < w; ++i) {
     const std::size_t r = window[static_cast<std::size_t>(i)];

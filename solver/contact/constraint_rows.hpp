@@ -9,7 +9,8 @@
 ///
 /// The equality problem is solved to round-off by augmented-Lagrangian multiplier (Uzawa)
 /// iterations on ONE factorization of
-///   K_A = K + sum_{r in A} rho_r c_r c_r^T,     rho_r = penalty_factor * k_r,  k_r = c_r^T diag(K) c_r,
+///   K_A = K + sum_{r in A} rho_r c_r c_r^T,     rho_r = penalty_factor * min(k_r, jacobi_multiple / (c_r^T diag(K)^-1 c_r)),
+///   k_r = c_r^T diag(K) c_r,
 ///   K_A u = f + p(lambda) + C_A^T (lambda - rho g0),     lambda_r <- lambda_r - rho_r g_r(u),
 /// each iteration one pair of triangular solves. After each update K u = f + p + C_A^T lambda holds
 /// exactly; g_A is what is left. A change of A by at most max_update_rank rows is a rank-k update
@@ -44,12 +45,27 @@ class ConstraintRows {
   /// rho_r / k_r: large enough that each multiplier step gains about four digits, small enough not
   /// to spoil the factorization's accuracy.
   static constexpr double penalty_factor = 1.0e4;
+  /// The penalty's stiffness k_r = c_r' diag(K) c_r is capped at this many times the row's Jacobi
+  /// stiffness 1 / (c_r' diag(K)^-1 c_r) (force per length: the row's stiffness were its unknowns
+  /// uncoupled). k_r overestimates the Jacobi stiffness by (c' D c)(c' D^-1 c) >= (c' c)^2 (Cauchy-
+  /// Schwarz): 4 for a node pair (weights +-1) of equal diagonals, 3.5-4.3 on straight 2-node mortar
+  /// rows, but 3.0-11.4 on rows over 3-node (quad8) edges, whose weights spread over corner and
+  /// mid-side nodes of very different diagonals (the quad8 ring fit at 1.5 x 10^5 unknowns). There
+  /// the uncapped penalty was about 20 times a row's true stiffness 1 / f_r (8.5 on straight rows),
+  /// and a SetCorrection of such rows lost 1 + rho_r f_r = 2.03e5, over max_correction_loss, so
+  /// the eccentric fit on quad8 refactorized. The cap leaves node pairs of equal sides and straight
+  /// rows where they were (within 8 %), never raises a penalty, and brings quad8 rows to what
+  /// straight rows lose.
+  static constexpr double jacobi_multiple = 4.0;
   /// An active-set change of at most this many rows updates the factorization instead of
   /// refactorizing (at larger ranks an update costs as much as a factorization).
   static constexpr int max_update_rank = 100;
   /// A set within this many rows of the one factorized supernodally is solved on that factorization
-  /// through a SetCorrection (dense in these rows: the rank's cube stays under 2e7 flops).
-  static constexpr std::size_t max_correction_rank = 256;
+  /// through a SetCorrection (dense in these rows: the rank's cube stays under 1.4e8 flops, about
+  /// 0.05 s). 512, as ExactContact's largest look-ahead window, so that a set the look-ahead finds is
+  /// corrected rather than factorized (256 before: the quad8 eccentric fit's final set differs from
+  /// its first by 318 rows; its correction took 0.23 s under load, against a 0.5-1 s factorization).
+  static constexpr std::size_t max_correction_rank = 512;
   /// ... and when it loses at most this factor of accuracy (SetCorrection::loss), else the factor
   /// is updated or factorized as before. The correction's round-off is about loss x 1e-16 of the
   /// solution (observed 1.6e-12 at a loss of 3.6e4), and the active-set decisions are taken at
@@ -211,6 +227,12 @@ class ConstraintRows {
   // made, so it can no longer solve.
   SetCorrection correction_;
   std::vector<std::uint8_t> corrected_;
+  // condense()'s forward solves on the supernodal factorization held (window_reach_ over the rows
+  // window_rows_, window_gram_ = Z'Z), kept for correct() until the next factorization: a set the
+  // look-ahead finds differs from the factorized one only in rows of its window.
+  SparseCholesky::Reach window_reach_;
+  std::vector<double> window_gram_;
+  std::vector<std::size_t> window_rows_;
   bool converted_ = false;
   UpdatableFactor updatable_;
   SparseColumns columns_;

@@ -15,9 +15,33 @@ void SetCorrection::set(SparseCholesky& cholesky, const SparseColumns& rows, std
   cholesky_ = &cholesky;
   reach_ = cholesky.forward_columns(rows);
   const auto d = static_cast<Eigen::Index>(rows.size());
-  penalty_ = Eigen::Map<const Eigen::VectorXd>(signed_penalties.data(), d);
   const std::vector<double> gram = reach_.gram();
-  const Eigen::Map<const Eigen::MatrixXd> t(gram.data(), d, d);
+  prepare(signed_penalties, Eigen::Map<const Eigen::MatrixXd>(gram.data(), d, d));
+}
+
+void SetCorrection::set(SparseCholesky& cholesky, const SparseCholesky::Reach& window, std::span<const double> window_gram,
+                        std::span<const std::size_t> subset, std::span<const double> signed_penalties) {
+  assert(subset.size() == signed_penalties.size());
+  cholesky_ = &cholesky;
+  const auto d = static_cast<Eigen::Index>(subset.size());
+  const std::size_t m = static_cast<std::size_t>(window.columns);
+  reach_.positions = window.positions;
+  reach_.columns = d;
+  reach_.z.resize(window.positions.size() * subset.size());
+  for (std::size_t k = 0; k < window.positions.size(); ++k) {
+    for (std::size_t c = 0; c < subset.size(); ++c) reach_.z[k * subset.size() + c] = window.z[k * m + subset[c]];
+  }
+  const Eigen::Map<const Eigen::MatrixXd> gram(window_gram.data(), window.columns, window.columns);
+  Eigen::MatrixXd t(d, d);
+  for (Eigen::Index j = 0; j < d; ++j) {
+    for (Eigen::Index i = 0; i < d; ++i) t(i, j) = gram(static_cast<Eigen::Index>(subset[i]), static_cast<Eigen::Index>(subset[j]));
+  }
+  prepare(signed_penalties, t);
+}
+
+void SetCorrection::prepare(std::span<const double> signed_penalties, const Eigen::MatrixXd& t) {
+  const Eigen::Index d = t.rows();
+  penalty_ = Eigen::Map<const Eigen::VectorXd>(signed_penalties.data(), d);
   const Eigen::MatrixXd m = Eigen::MatrixXd::Identity(d, d) + penalty_.asDiagonal() * t;
   // m_rr = 1 + s_r rho_r T_rr is the ratio of row r's flexibility with and without the change:
   // about 1 + rho_r f_r for a row added (f_r its flexibility without the penalty), 1 / (1 + rho_r f_r)

@@ -29,6 +29,13 @@ class SetCorrection {
   /// Holds the correction of `cholesky`'s last factorization by the rows `rows` (one column c_r
   /// each) with signed penalties s_r rho_r. The factorization must stay as it is while this is used.
   void set(SparseCholesky& cholesky, const SparseColumns& rows, std::span<const double> signed_penalties);
+  /// The same for rows whose forward solves were done already: columns `subset` of `window`
+  /// (SparseCholesky::forward_columns of a superset of the rows, on the factorization held now) and
+  /// its Gram matrix `window_gram` (Z'Z, column-major), the look-ahead's condensation having computed
+  /// both. Saves the forward solves over the rows' reach (0.23 s of a 1.0 s factorization for the
+  /// 318 rows of the quad8 eccentric ring fit at 1.5 x 10^5 unknowns).
+  void set(SparseCholesky& cholesky, const SparseCholesky::Reach& window, std::span<const double> window_gram,
+           std::span<const std::size_t> subset, std::span<const double> signed_penalties);
   /// x = K_B^-1 b.
   void solve(std::span<const double> b, std::span<double> x);
   /// Rows in D.
@@ -42,6 +49,8 @@ class SetCorrection {
  private:
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   [[nodiscard]] Eigen::Map<const Rows> z() const;  // reach_.z as a matrix
+  /// From reach_ and T = Z'Z: penalty_, loss_ and lu_.
+  void prepare(std::span<const double> signed_penalties, const Eigen::MatrixXd& t);
 
   SparseCholesky* cholesky_ = nullptr;
   SparseCholesky::Reach reach_;

@@ -76,6 +76,51 @@ TEST(SetCorrection, SolvesTheNearbySetAsItsOwnFactorizationDoes) {
   EXPECT_EQ(again, direct);
 }
 
+// The same correction from the columns of a wider window's forward solves (the look-ahead's
+// condensation, ConstraintRows::condense) solves as one that does its own.
+TEST(SetCorrection, FromAWindowsForwardSolvesSolvesAsFromItsOwn) {
+  const Grid grid(50, 0.001);
+  const double rho = 1.0e4 * 8.0;
+  std::vector<Index> factored;
+  for (Index i = 0; i < 30; ++i) factored.push_back(i);
+  SparseCholesky cholesky(grid.pattern);
+  cholesky.factorize(with_penalties(grid, factored, rho));
+  // The window: rows 5..44; the change: drops 5..9, adds 30..34 (window columns 0..4, 25..29).
+  const auto gap_column = [](SparseColumns& c, Index i) {
+    c.add(i, 1.0);
+    c.add(i + 1, -1.0);
+    c.end_column();
+  };
+  SparseColumns window, d;
+  for (Index i = 5; i < 45; ++i) gap_column(window, i);
+  std::vector<std::size_t> subset;
+  std::vector<double> signed_penalties;
+  for (Index i = 5; i < 35; ++i) {
+    if (i >= 10 && i < 30) continue;
+    gap_column(d, i);
+    subset.push_back(static_cast<std::size_t>(i - 5));
+    signed_penalties.push_back(i >= 30 ? rho : -rho);
+  }
+  const SparseCholesky::Reach reach = cholesky.forward_columns(window);
+  const std::vector<double> gram = reach.gram();
+  SetCorrection own, from_window;
+  own.set(cholesky, d, signed_penalties);
+  from_window.set(cholesky, reach, gram, subset, signed_penalties);
+  EXPECT_EQ(from_window.rank(), 10U);
+  EXPECT_DOUBLE_EQ(from_window.loss(), own.loss());
+  std::vector<double> b(static_cast<std::size_t>(grid.n()));
+  for (std::size_t i = 0; i < b.size(); ++i) b[i] = std::cos(0.41 * static_cast<double>(i)) - 0.2;
+  std::vector<double> x(b.size()), expected(b.size());
+  from_window.solve(b, x);
+  own.solve(b, expected);
+  double largest = 0.0, worst = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    largest = std::max(largest, std::abs(expected[i]));
+    worst = std::max(worst, std::abs(x[i] - expected[i]));
+  }
+  EXPECT_LT(worst, 1e-13 * largest);  // the same arithmetic but for the order of Z'Z's sums
+}
+
 TEST(SetCorrection, ReportsTheDigitsItWouldLoseWhereAPenaltyIsAllThatHolds) {
   // A free grid (each diagonal the sum of its couplings, plus 1e-9): a part nothing holds but a
   // weak spring. A penalty on one of its unknowns changes that unknown's flexibility by 1 + rho f,
