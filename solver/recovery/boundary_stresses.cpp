@@ -44,49 +44,56 @@ std::array<int, max_edge_nodes> edge_nodes(const Model& model, EdgeRef edge, int
   return out;
 }
 
-/// The edges no other solid element shares, and per node the boundary edges it lies on.
+/// The edges no other solid element shares, and the nodes on them with the edges each lies on.
 struct BoundaryEdges {
   std::vector<EdgeRef> edge;
-  std::vector<std::uint32_t> first;  ///< node_count + 1 offsets into `at`
-  std::vector<std::uint32_t> at;     ///< per node: indices into `edge`
+  /// (node, index into `edge`) for every node of every boundary edge, sorted by node.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> node_edge;
 };
 
 BoundaryEdges boundary_edges(const Model& model) {
-  struct Entry {
-    std::array<int, 2> key;  // the end corners, smaller first
-    EdgeRef ref;
-  };
-  std::vector<Entry> all;
-  for (std::size_t e = 0; e < model.elements.size(); ++e) {
-    const Element& el = model.elements[e];
-    const auto edges = edges_of(el);
-    for (std::size_t l = 0; l < edges.size(); ++l) {
-      const int a = el.nodes[static_cast<std::size_t>(edges[l].first())];
-      const int b = el.nodes[static_cast<std::size_t>(edges[l].last())];
-      all.push_back({{std::min(a, b), std::max(a, b)}, {static_cast<std::uint32_t>(e), static_cast<std::uint8_t>(l)}});
+  // Each element edge is filed under its smaller end corner (a counting sort by node, O(edges)): an
+  // edge is on the boundary when no other edge filed there ends at the same larger corner. Only the
+  // boundary's edges and nodes are kept.
+  const auto each_edge = [&](const auto& visit) {
+    for (std::size_t e = 0; e < model.elements.size(); ++e) {
+      const Element& el = model.elements[e];
+      const auto edges = edges_of(el);
+      for (std::size_t l = 0; l < edges.size(); ++l) {
+        const int a = el.nodes[static_cast<std::size_t>(edges[l].first())];
+        const int b = el.nodes[static_cast<std::size_t>(edges[l].last())];
+        visit(static_cast<std::size_t>(std::min(a, b)), std::max(a, b), static_cast<std::uint32_t>(8 * e + l));
+      }
     }
+  };
+  std::vector<std::uint32_t> first(model.nodes.size() + 1, 0);
+  each_edge([&](std::size_t low, int, std::uint32_t) { ++first[low + 1]; });
+  for (std::size_t n = 0; n < model.nodes.size(); ++n) first[n + 1] += first[n];
+  struct Filed {
+    int high;
+    std::uint32_t edge;  // 8 element + local (at most 4 edges an element)
+  };
+  std::vector<Filed> filed(first.back());
+  {
+    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+    each_edge([&](std::size_t low, int high, std::uint32_t edge) { filed[next[low]++] = {high, edge}; });
   }
-  std::sort(all.begin(), all.end(), [](const Entry& x, const Entry& y) { return x.key < y.key; });
   BoundaryEdges out;
-  for (std::size_t i = 0; i < all.size();) {
-    std::size_t j = i;
-    while (j < all.size() && all[j].key == all[i].key) ++j;
-    if (j - i == 1) out.edge.push_back(all[i].ref);
-    i = j;
-  }
-  out.first.assign(model.nodes.size() + 1, 0);
-  const auto each_node = [&](const auto& visit) {
-    for (std::size_t k = 0; k < out.edge.size(); ++k) {
-      int count = 0;
-      const auto nodes = edge_nodes(model, out.edge[k], count);
-      for (int i = 0; i < count; ++i) visit(static_cast<std::size_t>(nodes[static_cast<std::size_t>(i)]), k);
+  for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+    for (std::uint32_t i = first[n]; i < first[n + 1]; ++i) {
+      int same = 0;
+      for (std::uint32_t j = first[n]; j < first[n + 1]; ++j) same += filed[j].high == filed[i].high ? 1 : 0;
+      if (same == 1) out.edge.push_back({filed[i].edge / 8, static_cast<std::uint8_t>(filed[i].edge % 8)});
     }
-  };
-  each_node([&](std::size_t n, std::size_t) { out.first[n + 1] += 1; });
-  for (std::size_t n = 0; n < model.nodes.size(); ++n) out.first[n + 1] += out.first[n];
-  out.at.resize(out.first.back());
-  std::vector<std::uint32_t> next(out.first.begin(), out.first.end() - 1);
-  each_node([&](std::size_t n, std::size_t k) { out.at[next[n]++] = static_cast<std::uint32_t>(k); });
+  }
+  for (std::size_t k = 0; k < out.edge.size(); ++k) {
+    int count = 0;
+    const auto nodes = edge_nodes(model, out.edge[k], count);
+    for (int i = 0; i < count; ++i) {
+      out.node_edge.emplace_back(static_cast<std::uint32_t>(nodes[static_cast<std::size_t>(i)]), static_cast<std::uint32_t>(k));
+    }
+  }
+  std::sort(out.node_edge.begin(), out.node_edge.end());
   return out;
 }
 
@@ -253,16 +260,22 @@ std::vector<BoundaryPoint> boundary_points(const Model& model, const RecoveredFi
   std::vector<BoundaryPoint> out;
   double size = 0.0;
   for (const Node& n : model.nodes) size = std::max({size, std::abs(n.r), std::abs(n.z)});
-  for (std::size_t n = 0; n < model.nodes.size(); ++n) {
-    if (unknown[n] != 0 || edges.first[n] == edges.first[n + 1]) continue;
+  for (std::size_t i = 0; i < edges.node_edge.size();) {
+    // Node n's boundary edges: node_edge[i .. end).
+    const std::size_t n = edges.node_edge[i].first;
+    std::size_t end = i;
+    while (end < edges.node_edge.size() && edges.node_edge[end].first == n) ++end;
+    const std::size_t begin = i;
+    i = end;
+    if (unknown[n] != 0) continue;
     if (model.analysis == AnalysisType::axisymmetric && model.nodes[n].r <= 1e-9 * size) continue;
     for (std::uint32_t s = field.first[n]; s < field.first[n + 1]; ++s) {
       const int m = field.material[s];
       std::array<EdgeRef, 2> mine{};
       int count = 0;
       bool usable_all = true;
-      for (std::uint32_t k = edges.first[n]; k < edges.first[n + 1]; ++k) {
-        const EdgeRef e = edges.edge[edges.at[k]];
+      for (std::size_t k = begin; k < end; ++k) {
+        const EdgeRef e = edges.edge[edges.node_edge[k].second];
         if (model.elements[e.element].material != m) continue;
         bool along_line = false;
         const bool ok = usable(e, along_line);
