@@ -9,6 +9,7 @@
 #include "solver/fe/element_geometry.hpp"
 #include "solver/fe/isoparametric_kernel.hpp"
 #include "solver/recovery/patch_recovery.hpp"
+#include "solver/recovery/symmetry_lines.hpp"
 
 namespace saasgaps {
 
@@ -118,7 +119,8 @@ FluxRecovery recover_heat_flux(const Model& model, std::span<const double> T, st
     }
   });
   FluxRecovery out;
-  out.flux = recover_field(model, samples);
+  const SymmetryLines lines = heat_symmetry_lines(model);
+  out.flux = recover_field(model, samples, &lines);
   std::vector<ElementError> errors(count);
   for_each_range(count, [&](std::size_t begin, std::size_t end, unsigned) {
     for (std::size_t e = begin; e < end; ++e) {

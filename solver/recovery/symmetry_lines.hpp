@@ -59,4 +59,16 @@ void mark_contact_nodes(const Model& model, std::vector<std::uint8_t>& marked);
 /// constraints.
 SymmetryLines stress_symmetry_lines(const Model& model);
 
+/// The symmetry lines of heat conduction: an insulated straight boundary is one. Zero normal flux
+/// is the condition the temperature's even extension across the line meets, so the conduction
+/// solution continues as its mirror image (q_r, q_z): across z = c q_z changes sign, across r = c
+/// q_r. The nodes of boundary edges (boundary_edges.hpp) with no thermal.boundary condition, no
+/// contact surface or gap element at either end, all of whose nodes lie on one line z = c (every
+/// analysis) or r = c (plane analyses; in axisymmetry only the axis); not a node of a conditioned
+/// edge along a line of the same kind (a face partly insulated), nor of insulated lines of both
+/// kinds (a corner). A conditioned edge across the line (a film on the face the line meets) is
+/// mirrored with the rest.
+/// Empty without a thermal section.
+SymmetryLines heat_symmetry_lines(const Model& model);
+
 }  // namespace saasgaps

@@ -116,5 +116,29 @@ TEST(SymmetryLines, MirroredPatchesKeepTheShearZeroOnTheLineAndLinearEvenTermsEx
   EXPECT_EQ(mirrored.mean(g.at(2, 2)), plain.mean(g.at(2, 2)));
 }
 
+TEST(SymmetryLines, InsulatedStraightEdgesAreHeatSymmetryLines) {
+  // The grid with a temperature on its left side (r = 0), a film on its right (r = 4), the bottom
+  // and the top insulated but for a flux on the top's last edge.
+  Grid g;
+  g.model.analysis = AnalysisType::plane_stress;
+  g.model.materials.push_back(testing::isotropic_material(1, 200.0e3, 0.3));
+  g.grid = testing::add_quadratic_grid(g.model, ElementType::saas, cells, cells, [](double s, double t) { return Vec2(cells * s, cells * t); }, 0);
+  g.model.thermal.emplace();
+  g.model.thermal->boundary.push_back({ThermalBoundary::Kind::temperature, testing::quadratic_grid_side(g.model, g.grid, 'l'), 100.0, 0.0});
+  g.model.thermal->boundary.push_back({ThermalBoundary::Kind::film, testing::quadratic_grid_side(g.model, g.grid, 'r'), 5.0, 20.0});
+  const std::vector<ThermalEdge> top = testing::quadratic_grid_side(g.model, g.grid, 't');
+  g.model.thermal->boundary.push_back({ThermalBoundary::Kind::flux, {top.back()}, 1.0, 0.0});
+  const SymmetryLines lines = heat_symmetry_lines(g.model);
+  for (int i = 0; i <= cells; ++i) EXPECT_EQ(lines.kind[g.at(i, 0)], MirrorKind::z_line) << i;  // corners too: the conditioned sides cross it
+  EXPECT_EQ(lines.kind[g.at(2, cells)], MirrorKind::z_line);
+  EXPECT_EQ(lines.kind[g.at(3, cells)], MirrorKind::none);  // the flux edge lies along the top
+  EXPECT_EQ(lines.kind[g.at(0, 2)], MirrorKind::none);      // a temperature edge is no line
+  EXPECT_EQ(lines.kind[g.at(2, 2)], MirrorKind::none);
+  EXPECT_EQ(lines.mirror_value(g.at(1, 0), Vec4(1, 2, 0, 0)), Vec4(1, -2, 0, 0));  // q_z changes sign
+  // No thermal section: no lines.
+  g.model.thermal.reset();
+  EXPECT_TRUE(heat_symmetry_lines(g.model).empty());
+}
+
 }  // namespace
 }  // namespace saasgaps
