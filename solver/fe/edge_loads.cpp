@@ -11,6 +11,11 @@ std::array<Vec2, 2> edge_traction_loads(const Vec2& a, const Vec2& b, const Vec2
   return {w[0] * traction, w[1] * traction};
 }
 
+EdgeShape edge_shape(double s, int count) {
+  if (count == 2) return {{(1.0 - s) / 2.0, (1.0 + s) / 2.0, 0.0}, {-0.5, 0.5, 0.0}};
+  return {{s * (s - 1.0) / 2.0, 1.0 - s * s, s * (s + 1.0) / 2.0}, {s - 0.5, -2.0 * s, s + 0.5}};
+}
+
 std::array<EdgePoint, 4> edge_points(const std::array<Vec2, max_edge_nodes>& nodes, int count) {
   std::array<EdgePoint, 4> points;
   const auto rule = gauss_line(4);
@@ -18,14 +23,9 @@ std::array<EdgePoint, 4> edge_points(const std::array<Vec2, max_edge_nodes>& nod
     EdgePoint& e = points[p];
     const double s = rule[p].s;
     e.weight = rule[p].weight;
-    std::array<double, max_edge_nodes> dN{};
-    if (count == 2) {
-      e.N = {(1.0 - s) / 2.0, (1.0 + s) / 2.0, 0.0};
-      dN = {-0.5, 0.5, 0.0};
-    } else {
-      e.N = {s * (s - 1.0) / 2.0, 1.0 - s * s, s * (s + 1.0) / 2.0};
-      dN = {s - 0.5, -2.0 * s, s + 0.5};
-    }
+    const EdgeShape shape = edge_shape(s, count);
+    e.N = shape.N;
+    const std::array<double, max_edge_nodes>& dN = shape.dN;
     for (int k = 0; k < count; ++k) {
       e.x += e.N[static_cast<std::size_t>(k)] * nodes[static_cast<std::size_t>(k)];
       e.dx += dN[static_cast<std::size_t>(k)] * nodes[static_cast<std::size_t>(k)];

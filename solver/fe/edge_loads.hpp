@@ -17,6 +17,14 @@
 
 namespace saasgaps {
 
+/// The shape functions of a 2-node (a, b) or 3-node (a, m, b) edge at s in [-1, 1] and their
+/// derivatives d/ds: linear, or N = (s (s - 1) / 2, 1 - s^2, s (s + 1) / 2).
+struct EdgeShape {
+  std::array<double, max_edge_nodes> N{};
+  std::array<double, max_edge_nodes> dN{};
+};
+EdgeShape edge_shape(double s, int count);
+
 /// A point of the 4-point Gauss rule along the edge through `nodes` (2 or 3 points, from a to b) on
 /// s in [-1, 1]: the edge's shape functions N_k (linear, or the quadratic ones above), the point
 /// x = sum N_k x_k and dx/ds (the tangent times the length element), and the Gauss weight.

@@ -8,6 +8,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "solver/fe/edge_loads.hpp"
 #include "solver/fe/element_family.hpp"
 #include "solver/recovery/boundary_edges.hpp"
 #include "solver/model/load_schedule.hpp"
@@ -82,12 +83,9 @@ EdgeAtNode edge_at_node(const Model& model, EdgeRef edge, std::size_t node) {
   EdgeAtNode out;
   out.nodes = edge_nodes(model, edge, out.count);
   while (static_cast<std::size_t>(out.nodes[static_cast<std::size_t>(out.position)]) != node) ++out.position;
-  // d x / d xi of the 2-node (a, b) or 3-node (a, m, b) edge at the node (xi = -1, 0, 1).
-  std::array<double, max_edge_nodes> dN{-0.5, 0.5, 0.0};
-  if (out.count == 3) {
-    const double xi = static_cast<double>(out.position - 1);
-    dN = {xi - 0.5, -2.0 * xi, xi + 0.5};
-  }
+  // d x / d s of the edge at the node (s = -1, 1 at the ends, 0 at a 3-node edge's middle).
+  const double s = out.count == 3 ? static_cast<double>(out.position - 1) : 2.0 * out.position - 1.0;
+  const std::array<double, max_edge_nodes> dN = edge_shape(s, out.count).dN;
   Vec2 dx = Vec2::Zero();
   for (int k = 0; k < out.count; ++k) dx += dN[static_cast<std::size_t>(k)] * position_of(model, out.nodes[static_cast<std::size_t>(k)]);
   out.t = dx.normalized();
