@@ -194,8 +194,11 @@ void ResultRoutes::picture(const httplib::Request& req, httplib::Response& res) 
 }
 
 json ResultRoutes::error_estimate(const JobRecord& job) {
-  // A finished run that wrote a result: converged, not converged, or cancelled at an iteration.
-  if (!job.finished_at || job.state == JobState::failed) return nullptr;
+  // A finished run that wrote a result: converged, not converged, or cancelled at an iteration. A
+  // queued job keeps the finished_at of the run before its resume: that run's estimate no longer holds.
+  const bool finished = job.state == JobState::converged || job.state == JobState::not_converged ||
+                        job.state == JobState::cancelled;
+  if (!job.finished_at || !finished) return nullptr;
   const std::string finish = *job.finished_at + "/" + std::to_string(job.attempts);
   {
     std::lock_guard lock(estimates_mutex_);
@@ -211,6 +214,8 @@ json ResultRoutes::error_estimate(const JobRecord& job) {
     }
   } catch (const HttpError&) {
     return nullptr;  // no result (deleted meanwhile) or a damaged one: the job resource still answers
+  } catch (const JobConflict&) {
+    return nullptr;  // resumed and claimed again since `job` was read: running, no estimate
   }
   std::lock_guard lock(estimates_mutex_);
   estimates_[job.id] = {finish, estimate};

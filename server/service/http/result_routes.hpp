@@ -35,7 +35,8 @@ class ResultRoutes {
   void probe(const httplib::Request& req, httplib::Response& res);
 
   /// The finished job's error_estimate ({"relative", "error", "energy_norm"}, docs/results.md) for
-  /// the job resource; null while it runs, when it failed or its result has none. Read from the
+  /// the job resource; null while it is queued or runs (also when `job`, read before, has been
+  /// resumed and claimed since), when it failed or its result has none. Read from the
   /// stored result once per finish (the result is read past its nodes and elements, which can be
   /// large), then kept.
   nlohmann::json error_estimate(const JobRecord& job);

@@ -152,7 +152,16 @@ json StudyRoutes::view(std::int64_t id) {
       p.status = "failed";
       p.message = "its job was deleted before the point's outputs were read";
     } else if (*row.job_state == JobState::converged || *row.job_state == JobState::not_converged) {
-      if (const std::optional<std::string> result = store_.result(*row.job)) {
+      std::optional<std::string> result;
+      try {
+        result = store_.result(*row.job);
+      } catch (const JobConflict&) {
+        // Resumed (a not converged job, through /v1/jobs) and claimed since the study was read.
+        p.status = following(JobState::running);
+        points.push_back(std::move(p));
+        continue;
+      }
+      if (result) {
         io::take_result(json::parse(*result), study, p);
       } else {
         p.status = "failed";
