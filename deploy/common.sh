@@ -7,10 +7,11 @@ SAASGAPS_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 SAASGAPS_BUILD="${SAASGAPS_BUILD:-$SAASGAPS_ROOT/build}"
 
 # What the build needs. libopenblas0-pthread takes over the libblas.so.3 alternative that CHOLMOD
-# calls: the reference BLAS makes the supernodal factorization about 6x slower.
+# calls: the reference BLAS makes the supernodal factorization about 6x slower. libblas-dev: the
+# CBLAS header and link name for the contact look-ahead's own dense products (sparse_cholesky.cpp).
 BUILD_PACKAGES=(
   build-essential cmake pkg-config
-  libeigen3-dev libsuitesparse-dev libopenblas0-pthread
+  libeigen3-dev libsuitesparse-dev libblas-dev libopenblas0-pthread
   libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev libcli11-dev libcairo2-dev zlib1g-dev
   libgmsh-dev libexpat1-dev libseccomp-dev libsimdjson-dev rapidjson-dev
 )

@@ -106,8 +106,10 @@ void ConstraintRows::factor(SparseCholesky& cholesky, std::span<const double> va
     for (std::size_t k = row.first_product; k < row.last_product; ++k) values_[positions_[k]] += row.rho * products_[k];
   }
   corrected_.clear();
+  correction_ = SetCorrection();  // its forward solves were on the factorization replaced
   converted_ = false;
-  window_rows_.clear();  // condense()'s forward solves were on the factorization replaced
+  window_rows_.clear();  // condense()'s too
+  window_reach_.reset();
   cholesky.factorize(values_);
 }
 
@@ -318,8 +320,8 @@ bool ConstraintRows::condense(std::span<const std::size_t> window, std::span<con
   for (const std::size_t r : window) {
     add_column(r, 1.0);
   }
-  window_reach_ = cholesky_->forward_columns(columns_);
-  window_gram_ = window_reach_.gram();
+  window_reach_ = std::make_shared<const SparseCholesky::Reach>(cholesky_->forward_columns(columns_));
+  window_gram_ = window_reach_->gram();
   window_rows_.assign(window.begin(), window.end());
   if (!std::is_sorted(window_rows_.begin(), window_rows_.end())) window_rows_.clear();  // correct() searches it
   const Eigen::Map<const Eigen::MatrixXd> t(window_gram_.data(), w, w);

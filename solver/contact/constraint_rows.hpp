@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -61,11 +62,12 @@ class ConstraintRows {
   /// refactorizing (at larger ranks an update costs as much as a factorization).
   static constexpr int max_update_rank = 100;
   /// A set within this many rows of the one factorized supernodally is solved on that factorization
-  /// through a SetCorrection (dense in these rows: the rank's cube stays under 1.4e8 flops, about
-  /// 0.05 s). 512, as ExactContact's largest look-ahead window, so that a set the look-ahead finds is
-  /// corrected rather than factorized (256 before: the quad8 eccentric fit's final set differs from
-  /// its first by 318 rows; its correction took 0.23 s under load, against a 0.5-1 s factorization).
-  static constexpr std::size_t max_correction_rank = 512;
+  /// through a SetCorrection (dense in these rows: the rank's cube stays under 1.1e9 flops, about
+  /// 0.1 s). 1024, as ExactContact's largest look-ahead window, so that a set the look-ahead finds is
+  /// corrected rather than factorized (the quad8 eccentric fit's final set differs from its first by
+  /// 318 rows at 1.5 x 10^5 unknowns and 826 at 10^6; with the window's forward solves shared the
+  /// correction of 826 rows took 0.015 s, against a 4.7 s factorization).
+  static constexpr std::size_t max_correction_rank = 1024;
   /// ... and when it loses at most this factor of accuracy (SetCorrection::loss), else the factor
   /// is updated or factorized as before. The correction's round-off is about loss x 1e-16 of the
   /// solution (observed 1.6e-12 at a loss of 3.6e4), and the active-set decisions are taken at
@@ -230,7 +232,7 @@ class ConstraintRows {
   // condense()'s forward solves on the supernodal factorization held (window_reach_ over the rows
   // window_rows_, window_gram_ = Z'Z), kept for correct() until the next factorization: a set the
   // look-ahead finds differs from the factorized one only in rows of its window.
-  SparseCholesky::Reach window_reach_;
+  std::shared_ptr<const SparseCholesky::Reach> window_reach_;
   std::vector<double> window_gram_;
   std::vector<std::size_t> window_rows_;
   bool converted_ = false;

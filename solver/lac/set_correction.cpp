@@ -6,35 +6,28 @@
 
 namespace saasgaps {
 
-Eigen::Map<const SetCorrection::Rows> SetCorrection::z() const {
-  return {reach_.z.data(), static_cast<Eigen::Index>(reach_.positions.size()), reach_.columns};
-}
-
 void SetCorrection::set(SparseCholesky& cholesky, const SparseColumns& rows, std::span<const double> signed_penalties) {
   assert(rows.size() == signed_penalties.size());
   cholesky_ = &cholesky;
-  reach_ = cholesky.forward_columns(rows);
+  reach_ = std::make_shared<const SparseCholesky::Reach>(cholesky.forward_columns(rows));
+  subset_.clear();
   const auto d = static_cast<Eigen::Index>(rows.size());
-  const std::vector<double> gram = reach_.gram();
+  const std::vector<double> gram = reach_->gram();
   prepare(signed_penalties, Eigen::Map<const Eigen::MatrixXd>(gram.data(), d, d));
 }
 
-void SetCorrection::set(SparseCholesky& cholesky, const SparseCholesky::Reach& window, std::span<const double> window_gram,
-                        std::span<const std::size_t> subset, std::span<const double> signed_penalties) {
+void SetCorrection::set(SparseCholesky& cholesky, std::shared_ptr<const SparseCholesky::Reach> window,
+                        std::span<const double> window_gram, std::span<const std::size_t> subset,
+                        std::span<const double> signed_penalties) {
   assert(subset.size() == signed_penalties.size());
   cholesky_ = &cholesky;
+  reach_ = std::move(window);
   const auto d = static_cast<Eigen::Index>(subset.size());
-  const std::size_t m = static_cast<std::size_t>(window.columns);
-  reach_.positions = window.positions;
-  reach_.columns = d;
-  reach_.z.resize(window.positions.size() * subset.size());
-  for (std::size_t k = 0; k < window.positions.size(); ++k) {
-    for (std::size_t c = 0; c < subset.size(); ++c) reach_.z[k * subset.size() + c] = window.z[k * m + subset[c]];
-  }
-  const Eigen::Map<const Eigen::MatrixXd> gram(window_gram.data(), window.columns, window.columns);
+  subset_.assign(subset.begin(), subset.end());
+  const Eigen::Map<const Eigen::MatrixXd> gram(window_gram.data(), reach_->columns, reach_->columns);
   Eigen::MatrixXd t(d, d);
   for (Eigen::Index j = 0; j < d; ++j) {
-    for (Eigen::Index i = 0; i < d; ++i) t(i, j) = gram(static_cast<Eigen::Index>(subset[i]), static_cast<Eigen::Index>(subset[j]));
+    for (Eigen::Index i = 0; i < d; ++i) t(i, j) = gram(subset_[static_cast<std::size_t>(i)], subset_[static_cast<std::size_t>(j)]);
   }
   prepare(signed_penalties, t);
 }
@@ -59,12 +52,31 @@ void SetCorrection::solve(std::span<const double> b, std::span<double> x) {
   assert(cholesky_ != nullptr && "set() before solve()");
   y_.resize(b.size());
   cholesky_->forward(b, y_);
-  const std::vector<Index>& at = reach_.positions;
-  Eigen::VectorXd yhat(static_cast<Eigen::Index>(at.size()));
-  for (std::size_t k = 0; k < at.size(); ++k) yhat[static_cast<Eigen::Index>(k)] = y_[at[k]];
-  const Eigen::VectorXd y = lu_.solve(-(penalty_.asDiagonal() * (z().transpose() * yhat)).eval());
-  const Eigen::VectorXd zy = z() * y;
-  for (std::size_t k = 0; k < at.size(); ++k) y_[at[k]] += zy[static_cast<Eigen::Index>(k)];
+  const std::vector<Index>& at = reach_->positions;
+  // Z_D' yhat and Z_D y band by band through the whole window's Z (its other columns read with zeros).
+  using Band = Eigen::Map<const Rows>;
+  const auto band = [&](const SparseCholesky::Reach::Block& b) {
+    return Band(reach_->z.data() + b.offset, static_cast<Eigen::Index>(b.rows), static_cast<Eigen::Index>(b.columns));
+  };
+  Eigen::VectorXd zt_yhat = Eigen::VectorXd::Zero(reach_->columns);
+  Eigen::VectorXd yhat;
+  for (const SparseCholesky::Reach::Block& b : reach_->blocks) {
+    yhat.resize(static_cast<Eigen::Index>(b.rows));
+    for (Index k = 0; k < b.rows; ++k) yhat[static_cast<Eigen::Index>(k)] = y_[at[static_cast<std::size_t>(b.first_row + k)]];
+    zt_yhat.segment(b.first_column, b.columns).noalias() += band(b).transpose() * yhat;
+  }
+  if (!subset_.empty()) zt_yhat = zt_yhat(subset_).eval();
+  const Eigen::VectorXd y = lu_.solve(-(penalty_.asDiagonal() * zt_yhat).eval());
+  Eigen::VectorXd y_all = y;
+  if (!subset_.empty()) {
+    y_all = Eigen::VectorXd::Zero(reach_->columns);
+    y_all(subset_) = y;
+  }
+  Eigen::VectorXd zy;
+  for (const SparseCholesky::Reach::Block& b : reach_->blocks) {
+    zy.noalias() = band(b) * y_all.segment(b.first_column, b.columns);
+    for (Index k = 0; k < b.rows; ++k) y_[at[static_cast<std::size_t>(b.first_row + k)]] += zy[static_cast<Eigen::Index>(k)];
+  }
   cholesky_->backward(y_, x);
 }
 

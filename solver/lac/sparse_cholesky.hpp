@@ -69,13 +69,23 @@ class SparseCholesky {
   /// Z = L^-1 P C' for a few sparse columns C' (rows in the original numbering) with the last
   /// factorization, over the columns' reach in the elimination tree alone (the supernodes on the
   /// paths from their rows to the root; every other row of Z is zero): supernodal forward solves in
-  /// dense blocks. For m columns whose reach holds a share f of L about 2 m f nnz(L) flops: a window
-  /// of adjacent contact rows (f a few per cent) costs a small fraction of m solves.
+  /// dense blocks (OpenBLAS). Each supernode keeps only its band, the columns from the first to the
+  /// last whose paths pass it (rows in chain order along a surface: nearby rows meet low in the tree),
+  /// so for m columns whose reach holds a share f of L the work is at most about 2 m f nnz(L) flops,
+  /// and a window of adjacent contact rows (f a few per cent, bands about a fifth of m) costs a small
+  /// fraction of m solves.
   /// Not while the factor is lent (factor_for_conversion).
   struct Reach {
-    std::vector<Index> positions;  ///< the permuted position (row of L) of each row of z
+    std::vector<Index> positions;  ///< the permuted position (row of L) of each row of Z
     Index columns = 0;             ///< m
-    std::vector<double> z;         ///< positions.size() x m, row after row
+    /// The supernodes of the reach, in order: rows [first_row, first_row + rows) of Z, nonzero only
+    /// in columns [first_column, first_column + columns), stored from z[offset] row after row.
+    struct Block {
+      Index first_row = 0, rows = 0, first_column = 0, columns = 0;
+      std::size_t offset = 0;
+    };
+    std::vector<Block> blocks;
+    std::vector<double> z;  ///< the blocks' bands (a fifth of positions.size() x m for a contact surface)
     /// Z'Z as a dense m x m matrix, column-major.
     [[nodiscard]] std::vector<double> gram() const;
   };

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "solver/contact/constraint_rows.hpp"
@@ -101,8 +102,8 @@ TEST(SetCorrection, FromAWindowsForwardSolvesSolvesAsFromItsOwn) {
     subset.push_back(static_cast<std::size_t>(i - 5));
     signed_penalties.push_back(i >= 30 ? rho : -rho);
   }
-  const SparseCholesky::Reach reach = cholesky.forward_columns(window);
-  const std::vector<double> gram = reach.gram();
+  const auto reach = std::make_shared<const SparseCholesky::Reach>(cholesky.forward_columns(window));
+  const std::vector<double> gram = reach->gram();
   SetCorrection own, from_window;
   own.set(cholesky, d, signed_penalties);
   from_window.set(cholesky, reach, gram, subset, signed_penalties);

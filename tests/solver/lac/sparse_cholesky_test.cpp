@@ -58,6 +58,55 @@ TEST(SparseCholesky, InverseFormOverTheReachEqualsWholeSolves) {
   }
 }
 
+TEST(SparseCholesky, ForwardColumnsKeepOnlyEachSupernodesBandAndEqualWholeForwardSolves) {
+  // Forty rows along one edge, in chain order: nearby rows' paths meet low in the elimination tree,
+  // all of them near the root, so most supernodes need a narrow band of the forty columns.
+  const Grid grid(60, 0.01);
+  SparseCholesky cholesky(grid.pattern);
+  cholesky.factorize(grid.values);
+  SparseColumns c;
+  for (Index k = 0; k < 40; ++k) {
+    c.add(60 * k + 3, 1.0);
+    c.add(60 * (k + 1) + 3, -0.7);
+    c.end_column();
+  }
+  const SparseCholesky::Reach reach = cholesky.forward_columns(c);
+  const auto m = static_cast<std::size_t>(reach.columns);
+  std::size_t stored = 0;
+  Index next_row = 0;
+  for (const SparseCholesky::Reach::Block& b : reach.blocks) {
+    EXPECT_EQ(b.first_row, next_row);
+    EXPECT_EQ(b.offset, stored);
+    next_row += b.rows;
+    stored += static_cast<std::size_t>(b.rows * b.columns);
+  }
+  EXPECT_EQ(static_cast<std::size_t>(next_row), reach.positions.size());
+  EXPECT_EQ(stored, reach.z.size());
+  EXPECT_LT(stored, reach.positions.size() * m / 2) << "the bands hold most of the dense Z";
+  // Column j of Z, read from the bands (zero outside them), against L^-1 P c_j from a whole forward solve.
+  std::vector<double> b(static_cast<std::size_t>(grid.n())), y(b.size());
+  double worst = 0.0, largest = 0.0;
+  for (std::size_t j = 0; j < m; ++j) {
+    std::fill(b.begin(), b.end(), 0.0);
+    for (Index k = c.start[j]; k < c.start[j + 1]; ++k) b[c.row[k]] += c.value[k];
+    cholesky.forward(b, y);
+    std::vector<double> from_reach(y.size(), 0.0);
+    for (const SparseCholesky::Reach::Block& blk : reach.blocks) {
+      const auto column = static_cast<Index>(j);
+      if (column < blk.first_column || column >= blk.first_column + blk.columns) continue;
+      for (Index r = 0; r < blk.rows; ++r) {
+        from_reach[reach.positions[static_cast<std::size_t>(blk.first_row + r)]] =
+            reach.z[blk.offset + static_cast<std::size_t>(r * blk.columns + column - blk.first_column)];
+      }
+    }
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      largest = std::max(largest, std::abs(y[i]));
+      worst = std::max(worst, std::abs(from_reach[i] - y[i]));
+    }
+  }
+  EXPECT_LT(worst, 1e-13 * largest);
+}
+
 TEST(SparseCholesky, InverseFormOfNoColumnsIsEmptyAndTheFactorStillSolves) {
   const Grid grid(10, 0.5);
   SparseCholesky cholesky(grid.pattern);
