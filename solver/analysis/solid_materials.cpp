@@ -18,7 +18,7 @@ std::vector<double> point_temperatures(const Model& model, const MaterialPoints&
   T.reserve(points.size());
   for (const Element& el : model.elements) {
     const ElementFamily& f = family(el.type);
-    if (f.point_count(el.integration) == 1 && (el.type == ElementType::saas || el.type == ElementType::tri3)) {
+    if (f.point_count(el.integration) == 1 && f.report_element) {
       T.push_back(element_temperature(model, el.node_span()));
       continue;
     }

@@ -84,6 +84,10 @@ struct ElementFamily {
   /// The kernel: condensed stiffness and nodal loads; stresses at its material points and centre.
   ElementMatrices (*matrices)(const ElementData& e) = nullptr;
   ElementStates (*states)(const ElementData& e, std::span<const double> u) = nullptr;
+  /// The report's elements (saas, tri3): constant-strain triangles with one material point at the
+  /// centre, whose stresses (the recovery's samples, the error estimate's field) come from their
+  /// displacements and law, not from the material points' states.
+  bool report_element = false;
 
   [[nodiscard]] int dof_count() const { return 2 * node_count; }
   [[nodiscard]] int edge_count() const { return static_cast<int>(edges.size()); }

@@ -59,7 +59,7 @@ std::array<int, max_element_nodes> reversed_order(ElementType type) {
 std::optional<ShapeProblem> element_shape_problem(ElementType type, Integration integration,
                                                   const std::array<Vec2, max_element_nodes>& x) {
   const ElementFamily& f = family(type);
-  if (type == ElementType::saas || type == ElementType::tri3) return report_element_problem(f, x);
+  if (f.report_element) return report_element_problem(f, x);
 
   const double area2 = twice_corner_area(f, x);
   if (!(area2 > 0.0)) {

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "solver/fe/element_family.hpp"
 #include "solver/fe/element_geometry.hpp"
 #include "solver/fe/isoparametric_kernel.hpp"
 #include "solver/fe/saas_kernel.hpp"
@@ -88,13 +89,11 @@ ElementError points_error(const ElementData& e, const LawOf& D_of, std::span<con
   return out;
 }
 
-bool report_element(ElementType type) { return type == ElementType::saas || type == ElementType::tri3; }
-
 }  // namespace
 
 ElementError element_error(const ElementData& e, const ElementStates& states, std::span<const double> u,
                            std::span<const Vec4> nodal) {
-  if (report_element(e.type)) {
+  if (family(e.type).report_element) {
     std::array<TriangleState, 4> tri;
     const int count = saas_triangle_states(e, u, tri);
     return triangles_error(e, compliance(e.law_at(0).D, e.analysis),
@@ -108,7 +107,7 @@ ElementError element_error(const ElementData& e, const ElementStates& states, st
 ElementError element_error(const ElementData& geometry, std::span<const Constitutive> laws,
                            std::span<const ElementState> point_states, const ElementSamples& samples,
                            std::span<const Vec4> nodal) {
-  if (report_element(geometry.type)) {
+  if (family(geometry.type).report_element) {
     std::array<TriangleState, 4> tri;
     const int count = saas_triangles(geometry, tri);
     assert(count == samples.count);

@@ -67,8 +67,6 @@ Vec2 point_flux(const PointGeometry& g, int nodes, std::span<const double> t, co
   return -(k * grad);
 }
 
-bool report_element(ElementType type) { return type == ElementType::saas || type == ElementType::tri3; }
-
 std::span<const ReferencePoint> flux_sampling_rule(ElementType type) {
   static const double g = 1.0 / std::sqrt(3.0);
   static const std::array<ReferencePoint, 4> gauss2{{{-g, -g, 1.0}, {g, -g, 1.0}, {-g, g, 1.0}, {g, g, 1.0}}};
@@ -98,7 +96,7 @@ FluxRecovery recover_heat_flux(const Model& model, std::span<const double> T, st
       const ElementData d = solid_element_geometry(model, e);
       const auto t = element_T(e);
       ElementSamples& s = samples[e];
-      if (report_element(d.type)) {
+      if (family(d.type).report_element) {
         std::array<Vec2, 5> x{};
         std::array<double, 5> Tv{};
         std::array<FluxTriangle, 4> tri;
@@ -130,7 +128,7 @@ FluxRecovery recover_heat_flux(const Model& model, std::span<const double> T, st
       const Eigen::Matrix2d k_inverse = k[e].inverse();
       const bool axisymmetric = d.analysis == AnalysisType::axisymmetric;
       ElementError& err = errors[e];
-      if (report_element(d.type)) {
+      if (family(d.type).report_element) {
         std::array<Vec2, 5> x{};
         std::array<double, 5> Tv{};
         std::array<FluxTriangle, 4> tri;

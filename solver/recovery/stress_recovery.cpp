@@ -4,15 +4,10 @@
 
 #include "solver/assembly/element_data.hpp"
 #include "solver/base/index_ranges.hpp"
+#include "solver/fe/element_family.hpp"
 #include "solver/recovery/boundary_stresses.hpp"
 
 namespace saasgaps {
-
-namespace {
-
-bool report_element(ElementType type) { return type == ElementType::saas || type == ElementType::tri3; }
-
-}  // namespace
 
 StressRecovery recover_stresses(const Model& model, std::span<const double> displacement, const PointLawsOf& laws,
                                 std::span<const ElementState> point_states, const MaterialPoints& points) {
@@ -29,7 +24,7 @@ StressRecovery recover_stresses(const Model& model, std::span<const double> disp
     std::array<Constitutive, max_material_points> scratch;
     for (std::size_t e = begin; e < end; ++e) {
       const Element& el = model.elements[e];
-      if (report_element(el.type)) {
+      if (family(el.type).report_element) {
         const ElementData data = solid_element_data(model, e, laws(e, scratch));
         samples[e] = stress_samples(data, std::span<const ElementState>(), values(element_displacements(displacement, el.node_span())));
       } else {

@@ -53,6 +53,6 @@ std::span<const ReferencePoint> points(Integration) { return centre; }
 }  // namespace
 
 const ElementFamily saas_family{ElementType::saas, CellShape::quadrilateral, 4, 4, 1, edges, nodes, 3, 9,
-                                shape, points, points, saas_matrices, saas_states};
+                                shape, points, points, saas_matrices, saas_states, true};
 
 }  // namespace saasgaps

@@ -28,6 +28,6 @@ std::span<const ReferencePoint> points(Integration) { return centroid; }
 }  // namespace
 
 const ElementFamily tri3_family{ElementType::tri3, CellShape::triangle, 3, 3, 1, edges, nodes, 2, 5,
-                                shape, points, points, saas_matrices, saas_states};
+                                shape, points, points, saas_matrices, saas_states, true};
 
 }  // namespace saasgaps
