@@ -10,6 +10,7 @@
 #include <cassert>
 #include <cmath>
 #include <chrono>
+#include <mutex>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -30,6 +31,13 @@ std::atomic<int> max_blas_threads{static_cast<int>(std::max(1U, std::thread::har
 
 /// Factorizations this big gain from parallel BLAS; smaller ones lose to thread overhead.
 constexpr double parallel_blas_flops = 1.0e10;
+
+/// METIS draws from GKlib's Mersenne twister, whose state is a static of the library: two orderings
+/// computed at once on different threads (a server's workers) interleave its draws, get other
+/// permutations than alone (a data race besides), and so factors that differ in their round-off:
+/// the same model solved side by side with another gave other last digits than alone. Every call
+/// that can reach METIS holds this lock; an ordering is computed once per pattern.
+std::mutex metis_mutex;
 
 }  // namespace
 
@@ -126,6 +134,7 @@ struct SparseCholesky::Impl {
     }
     if (L == nullptr) {
       common.method[0].ordering = CHOLMOD_METIS;
+      const std::lock_guard metis(metis_mutex);
       L = cholmod_l_analyze(&A, &common);
       ordering_name = "METIS";
     }
@@ -215,6 +224,7 @@ struct SparseCholesky::Impl {
     cholmod_sparse G = cholmod_csc_view(n, n, graph.rowind.size(), graph.colptr.data(), graph.rowind.data(), nullptr,
                                         1, CHOLMOD_PATTERN);
     std::vector<Index> group_perm(static_cast<size_t>(graph.n));
+    const std::lock_guard metis(metis_mutex);
     if (!cholmod_l_metis(&G, nullptr, 0, 0, group_perm.data(), &common)) return {};
     return expand(group_perm, members);
   }
