@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <numeric>
 
 namespace saasgaps {
 
@@ -10,8 +11,9 @@ void SetCorrection::set(SparseCholesky& cholesky, const SparseColumns& rows, std
   assert(rows.size() == signed_penalties.size());
   cholesky_ = &cholesky;
   reach_ = std::make_shared<const SparseCholesky::Reach>(cholesky.forward_columns(rows));
-  subset_.clear();
   const auto d = static_cast<Eigen::Index>(rows.size());
+  subset_.resize(static_cast<std::size_t>(d));
+  std::iota(subset_.begin(), subset_.end(), Eigen::Index{0});  // D is the reach's every column
   const std::vector<double> gram = reach_->gram();
   prepare(signed_penalties, Eigen::Map<const Eigen::MatrixXd>(gram.data(), d, d));
 }
@@ -65,13 +67,9 @@ void SetCorrection::solve(std::span<const double> b, std::span<double> x) {
     for (Index k = 0; k < b.rows; ++k) yhat[static_cast<Eigen::Index>(k)] = y_[at[static_cast<std::size_t>(b.first_row + k)]];
     zt_yhat.segment(b.first_column, b.columns).noalias() += band(b).transpose() * yhat;
   }
-  if (!subset_.empty()) zt_yhat = zt_yhat(subset_).eval();
-  const Eigen::VectorXd y = lu_.solve(-(penalty_.asDiagonal() * zt_yhat).eval());
-  Eigen::VectorXd y_all = y;
-  if (!subset_.empty()) {
-    y_all = Eigen::VectorXd::Zero(reach_->columns);
-    y_all(subset_) = y;
-  }
+  const Eigen::VectorXd y = lu_.solve(-(penalty_.asDiagonal() * zt_yhat(subset_)).eval());
+  Eigen::VectorXd y_all = Eigen::VectorXd::Zero(reach_->columns);
+  y_all(subset_) = y;
   Eigen::VectorXd zy;
   for (const SparseCholesky::Reach::Block& b : reach_->blocks) {
     zy.noalias() = band(b) * y_all.segment(b.first_column, b.columns);

@@ -56,7 +56,7 @@ class SetCorrection {
 
   SparseCholesky* cholesky_ = nullptr;
   std::shared_ptr<const SparseCholesky::Reach> reach_;
-  /// D's columns among reach_'s (its columns are D's, in order, when empty).
+  /// D's columns among reach_'s (all of them, in order, when the correction solved its own).
   std::vector<Eigen::Index> subset_;
   Eigen::VectorXd penalty_;                // s_r rho_r
   double loss_ = 1.0;
