@@ -408,9 +408,10 @@ class GapContactAnalysis {
     const IncrementSystem& now = *now_;
     StressRecovery r = recover_stresses(
         now.model, state.displacement,
-        [&](std::size_t e, std::span<Constitutive> scratch) {
-          SolidMaterials::LawMemo memo;  // one per call: the recovery asks from several threads
-          return now.materials.laws(e, state.materials, memo, scratch);
+        [&] {
+          return PointLawsOf([&, memo = SolidMaterials::LawMemo{}](std::size_t e, std::span<Constitutive> scratch) mutable {
+            return now.materials.laws(e, state.materials, memo, scratch);
+          });
         },
         v.points, now.materials.points());
     for (std::size_t e = 0; e < s.elements.size(); ++e) s.elements[e].error = r.element_error[e];

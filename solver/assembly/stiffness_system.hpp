@@ -31,6 +31,11 @@ using PointLawsOf = std::function<std::span<const Constitutive>(std::size_t e, s
 /// One law per element, at every point.
 PointLawsOf at_every_point(const LawOf& law_of);
 
+/// A PointLawsOf for one thread of a parallel pass, made once per range: each may keep what it
+/// computed last between its calls (SolidMaterials::LawMemo: an element of the same material and
+/// temperature as the one before takes its law again instead of computing it).
+using PointLawsFactory = std::function<PointLawsOf()>;
+
 /// The model's nodal forces and the consistent nodal loads of its edge tractions, one add(node index,
 /// (f_r, f_z)) per node and load, in assembly order: f_loads of K u = f (element loads apart).
 void for_each_external_load(const Model& model, const std::function<void(int node, const Vec2& force)>& add);

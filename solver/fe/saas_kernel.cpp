@@ -76,6 +76,31 @@ Vec6 initial_strain_loads(const Mat46& B, double w, const ElementData& e) {
 std::array<Vec2, 4> corners(const ElementData& e) { return {e.x[0], e.x[1], e.x[2], e.x[3]}; }
 std::array<double, 4> corner_dT(const ElementData& e) { return {e.dT[0], e.dT[1], e.dT[2], e.dT[3]}; }
 
+/// A saas quad's corners and centre, their temperature rises, and its four triangles (i, i+1,
+/// centre): made once for whichever of the system, the condensation and the states a call needs.
+struct QuadTriangles {
+  std::array<Vec2, 5> p;
+  std::array<double, 5> dT;
+  std::array<Triangle, 4> t;
+
+  /// The mean temperature rise of triangle k.
+  [[nodiscard]] double triangle_dT(std::size_t k) const {
+    const auto& tri = quad_triangles[k];
+    return (dT[tri[0]] + dT[tri[1]] + dT[tri[2]]) / 3.0;
+  }
+};
+
+QuadTriangles quad_triangles_of(const ElementData& e) {
+  QuadTriangles q{quad_points(corners(e)), quad_values(corner_dT(e)), {}};
+  for (std::size_t k = 0; k < quad_triangles.size(); ++k) {
+    const auto& tri = quad_triangles[k];
+    q.t[k] = make_triangle(q.p[tri[0]], q.p[tri[1]], q.p[tri[2]], e.analysis, e.thickness);
+  }
+  return q;
+}
+
+bool has_body_loads(const ElementData& e) { return e.body_force.x() != 0.0 || e.body_force.y() != 0.0 || e.spin != 0.0; }
+
 /// The corner-and-centre system of a SAAS quad before condensation (DOFs 8, 9: centre).
 struct QuadSystem {
   Mat10 K = Mat10::Zero();
@@ -83,24 +108,23 @@ struct QuadSystem {
 };
 
 QuadSystem quad_system(const ElementData& e) {
-  const auto p = quad_points(corners(e));
-  const auto dT = quad_values(corner_dT(e));
-  const bool loaded = e.body_force.x() != 0.0 || e.body_force.y() != 0.0 || e.spin != 0.0;
-  QuadSystem q;
-  for (const auto& tri : quad_triangles) {
-    const Triangle t = make_triangle(p[tri[0]], p[tri[1]], p[tri[2]], e.analysis, e.thickness);
+  const QuadTriangles q = quad_triangles_of(e);
+  const bool loaded = has_body_loads(e);
+  QuadSystem s;
+  for (std::size_t k = 0; k < quad_triangles.size(); ++k) {
+    const auto& tri = quad_triangles[k];
+    const Triangle& t = q.t[k];
     const Eigen::Matrix<double, 4, 6> DB = e.law_at(0).D * t.B;
-    const Mat6 k = t.w * t.B.transpose() * DB;
-    const double dT_tri = (dT[tri[0]] + dT[tri[1]] + dT[tri[2]]) / 3.0;
-    Vec6 f = (t.w * dT_tri) * (t.B.transpose() * e.law_at(0).beta);
+    const Mat6 K = t.w * t.B.transpose() * DB;
+    Vec6 f = (t.w * q.triangle_dT(k)) * (t.B.transpose() * e.law_at(0).beta);
     if (e.law_at(0).has_initial_strain()) f += initial_strain_loads(t.B, t.w, e);
-    if (loaded) f += triangle_body_loads(p[tri[0]], p[tri[1]], p[tri[2]], t, e);
+    if (loaded) f += triangle_body_loads(q.p[tri[0]], q.p[tri[1]], q.p[tri[2]], t, e);
     for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < 3; ++b) q.K.block<2, 2>(2 * tri[a], 2 * tri[b]) += k.block<2, 2>(2 * a, 2 * b);
-      q.f.segment<2>(2 * tri[a]) += f.segment<2>(2 * a);
+      for (int b = 0; b < 3; ++b) s.K.block<2, 2>(2 * tri[a], 2 * tri[b]) += K.block<2, 2>(2 * a, 2 * b);
+      s.f.segment<2>(2 * tri[a]) += f.segment<2>(2 * a);
     }
   }
-  return q;
+  return s;
 }
 
 /// Stiffness of a lone axisymmetric triangle. Its hoop strain u/r varies over the triangle; taken
@@ -167,14 +191,47 @@ void accumulate_triangle_state(const Triangle& t, const Vec6& u, double dT, cons
   sum.stress += t.w * s.stress;
 }
 
+/// The centre's rows of a SAAS quad's system (DOFs 8, 9), all that recovering its displacement
+/// needs: [K_ce K_cc] (2 x 10) and f_c, the rows quad_system sums, without its corner blocks.
+struct CentreRows {
+  Eigen::Matrix<double, 2, 10> K = Eigen::Matrix<double, 2, 10>::Zero();
+  Vec2 f = Vec2::Zero();
+};
+
+CentreRows centre_rows(const ElementData& e, const QuadTriangles& q) {
+  const bool loaded = has_body_loads(e);
+  CentreRows c;
+  for (std::size_t k = 0; k < quad_triangles.size(); ++k) {
+    const auto& tri = quad_triangles[k];
+    const Triangle& t = q.t[k];
+    // The centre is each triangle's third vertex: its rows of w B^T D B are w B_c^T D B.
+    assert(tri[2] == 4);
+    const auto Bc = t.B.rightCols<2>();
+    const Eigen::Matrix<double, 2, 6> K = t.w * Bc.transpose() * (e.law_at(0).D * t.B);
+    Vec2 f = (t.w * q.triangle_dT(k)) * (Bc.transpose() * e.law_at(0).beta);
+    if (e.law_at(0).has_initial_strain()) f += initial_strain_loads(t.B, t.w, e).tail<2>();
+    if (loaded) f += triangle_body_loads(q.p[tri[0]], q.p[tri[1]], q.p[tri[2]], t, e).tail<2>();
+    for (int a = 0; a < 3; ++a) c.K.block<2, 2>(0, 2 * tri[a]) += K.block<2, 2>(0, 2 * a);
+    c.f += f;
+  }
+  return c;
+}
+
 /// The displacements of a saas quad's corners and condensed centre (10 values).
-Vec10 quad_displacements(const ElementData& e, const Vec8& u) {
-  const QuadSystem q = quad_system(e);
+Vec10 quad_displacements(const ElementData& e, const QuadTriangles& q, const Vec8& u) {
+  const CentreRows c = centre_rows(e, q);
   // Kce ue + Kcc uc = fc gives the condensed centre displacement back.
-  const Vec2 uc = q.K.bottomRightCorner<2, 2>().inverse() * (q.f.tail<2>() - q.K.bottomLeftCorner<2, 8>() * u);
+  const Vec2 uc = c.K.rightCols<2>().inverse() * (c.f - c.K.leftCols<8>() * u);
   Vec10 all;
   all << u, uc;
   return all;
+}
+
+/// Triangle k's six displacements from the quad's ten.
+Vec6 triangle_displacements(std::size_t k, const Vec10& all) {
+  Vec6 ut;
+  for (int a = 0; a < 3; ++a) ut.segment<2>(2 * a) = all.segment<2>(2 * quad_triangles[k][static_cast<std::size_t>(a)]);
+  return ut;
 }
 
 }  // namespace
@@ -208,15 +265,11 @@ ElementStates saas_states(const ElementData& e, std::span<const double> u_span) 
     accumulate_triangle_state(t, u.head<6>(), (e.dT[0] + e.dT[1] + e.dT[2]) / 3.0, e, sum);
     weight = t.w;
   } else {
-    const Vec10 all = quad_displacements(e, u);
-    const auto p = quad_points(corners(e));
-    const auto dT = quad_values(corner_dT(e));
-    for (const auto& tri : quad_triangles) {
-      const Triangle t = make_triangle(p[tri[0]], p[tri[1]], p[tri[2]], e.analysis, e.thickness);
-      Vec6 ut;
-      for (int a = 0; a < 3; ++a) ut.segment<2>(2 * a) = all.segment<2>(2 * tri[a]);
-      accumulate_triangle_state(t, ut, (dT[tri[0]] + dT[tri[1]] + dT[tri[2]]) / 3.0, e, sum);
-      weight += t.w;
+    const QuadTriangles q = quad_triangles_of(e);
+    const Vec10 all = quad_displacements(e, q, u);
+    for (std::size_t k = 0; k < quad_triangles.size(); ++k) {
+      accumulate_triangle_state(q.t[k], triangle_displacements(k, all), q.triangle_dT(k), e, sum);
+      weight += q.t[k].w;
     }
   }
   sum.strain /= weight;
@@ -237,31 +290,13 @@ int saas_triangle_states(const ElementData& e, std::span<const double> u_span, s
               triangle_state(t, u.head<6>(), (e.dT[0] + e.dT[1] + e.dT[2]) / 3.0, e)};
     return 1;
   }
-  const Vec10 all = quad_displacements(e, u);
-  const auto p = quad_points(corners(e));
-  const auto dT = quad_values(corner_dT(e));
+  const QuadTriangles q = quad_triangles_of(e);
+  const Vec10 all = quad_displacements(e, q, u);
   for (std::size_t k = 0; k < quad_triangles.size(); ++k) {
     const auto& tri = quad_triangles[k];
-    const Triangle t = make_triangle(p[tri[0]], p[tri[1]], p[tri[2]], e.analysis, e.thickness);
-    Vec6 ut;
-    for (int a = 0; a < 3; ++a) ut.segment<2>(2 * a) = all.segment<2>(2 * tri[a]);
-    out[k] = {tri, (p[tri[0]] + p[tri[1]] + p[tri[2]]) / 3.0, t.area, t.w,
-              triangle_state(t, ut, (dT[tri[0]] + dT[tri[1]] + dT[tri[2]]) / 3.0, e)};
-  }
-  return 4;
-}
-
-int saas_triangles(const ElementData& e, std::array<TriangleState, 4>& out) {
-  if (e.node_count == 3) {
-    const LinearTriangle g = linear_triangle(e.x[0], e.x[1], e.x[2], e.analysis, e.thickness);
-    out[0] = {{0, 1, 2}, (e.x[0] + e.x[1] + e.x[2]) / 3.0, g.area, g.w, {}};
-    return 1;
-  }
-  const auto p = quad_points(corners(e));
-  for (std::size_t k = 0; k < quad_triangles.size(); ++k) {
-    const auto& tri = quad_triangles[k];
-    const LinearTriangle g = linear_triangle(p[tri[0]], p[tri[1]], p[tri[2]], e.analysis, e.thickness);
-    out[k] = {tri, (p[tri[0]] + p[tri[1]] + p[tri[2]]) / 3.0, g.area, g.w, {}};
+    const Triangle& t = q.t[k];
+    out[k] = {tri, (q.p[tri[0]] + q.p[tri[1]] + q.p[tri[2]]) / 3.0, t.area, t.w,
+              triangle_state(t, triangle_displacements(k, all), q.triangle_dT(k), e)};
   }
   return 4;
 }

@@ -39,8 +39,4 @@ struct TriangleState {
 /// Returns how many were written into `out`.
 int saas_triangle_states(const ElementData& e, std::span<const double> u, std::array<TriangleState, 4>& out);
 
-/// The same triangles' geometry alone (vertices, centroid, area, w; states left zero), the same
-/// numbers as saas_triangle_states gives: what needs no law, temperatures or displacements.
-int saas_triangles(const ElementData& e, std::array<TriangleState, 4>& out);
-
 }  // namespace saasgaps

@@ -91,32 +91,25 @@ ElementError points_error(const ElementData& e, const LawOf& D_of, std::span<con
 
 }  // namespace
 
+ElementError report_element_error(const ElementData& e, std::span<const double> u, std::span<const Vec4> nodal) {
+  assert(family(e.type).report_element);
+  std::array<TriangleState, 4> tri;
+  const int count = saas_triangle_states(e, u, tri);
+  return triangles_error(e, compliance(e.law_at(0).D, e.analysis),
+                         std::span<const TriangleState>(tri).first(static_cast<std::size_t>(count)), nodal);
+}
+
 ElementError element_error(const ElementData& e, const ElementStates& states, std::span<const double> u,
                            std::span<const Vec4> nodal) {
-  if (family(e.type).report_element) {
-    std::array<TriangleState, 4> tri;
-    const int count = saas_triangle_states(e, u, tri);
-    return triangles_error(e, compliance(e.law_at(0).D, e.analysis),
-                           std::span<const TriangleState>(tri).first(static_cast<std::size_t>(count)), nodal);
-  }
+  if (family(e.type).report_element) return report_element_error(e, u, nodal);
   return points_error(
       e, [&](std::size_t p) -> const Mat4& { return e.law_at(static_cast<int>(p)).D; },
       std::span<const ElementState>(states.point).first(static_cast<std::size_t>(states.point_count)), nodal);
 }
 
 ElementError element_error(const ElementData& geometry, std::span<const Constitutive> laws,
-                           std::span<const ElementState> point_states, const ElementSamples& samples,
-                           std::span<const Vec4> nodal) {
-  if (family(geometry.type).report_element) {
-    std::array<TriangleState, 4> tri;
-    const int count = saas_triangles(geometry, tri);
-    assert(count == samples.count);
-    for (int k = 0; k < count; ++k) {
-      tri[static_cast<std::size_t>(k)].state.stress = samples.point[static_cast<std::size_t>(k)].value;
-    }
-    return triangles_error(geometry, compliance(laws.front().D, geometry.analysis),
-                           std::span<const TriangleState>(tri).first(static_cast<std::size_t>(count)), nodal);
-  }
+                           std::span<const ElementState> point_states, std::span<const Vec4> nodal) {
+  assert(!family(geometry.type).report_element);
   return points_error(
       geometry, [&](std::size_t p) -> const Mat4& { return (laws.size() == 1 ? laws.front() : laws[p]).D; },
       point_states, nodal);

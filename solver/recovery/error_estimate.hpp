@@ -20,7 +20,6 @@
 #include <span>
 
 #include "solver/fe/element_kernel.hpp"
-#include "solver/recovery/sampling_points.hpp"
 #include "solver/state/recovered_field.hpp"
 
 namespace saasgaps {
@@ -39,13 +38,14 @@ double complementary_energy_density(const Mat4& D, AnalysisType analysis, const 
 ElementError element_error(const ElementData& e, const ElementStates& states, std::span<const double> u,
                            std::span<const Vec4> nodal);
 
-/// The same integrals from what the sampling pass computed (stress_samples): a report element's
-/// triangle stresses are its samples' values, so its static condensation is not repeated; the
-/// isoparametric families read their material points' states. geometry: solid_element_geometry's
-/// (no law); laws: the law of each material point, or one for all.
+/// A report element's (saas, tri3) integrals over its constant-strain triangles, solved from its
+/// displacements u (the saas quad's centre condensed back): e with its law, temperatures and loads.
+ElementError report_element_error(const ElementData& e, std::span<const double> u, std::span<const Vec4> nodal);
+
+/// An isoparametric element's integrals from its material points' states alone. geometry:
+/// solid_element_geometry's (no law); laws: the law of each material point, or one for all.
 ElementError element_error(const ElementData& geometry, std::span<const Constitutive> laws,
-                           std::span<const ElementState> point_states, const ElementSamples& samples,
-                           std::span<const Vec4> nodal);
+                           std::span<const ElementState> point_states, std::span<const Vec4> nodal);
 
 /// The model's estimate from the elements' integrals.
 ErrorEstimate total_error(std::span<const ElementError> elements);

@@ -80,6 +80,10 @@ struct Fit {
   bool made = false;  ///< false: no patch (the node is no corner in this material)
   Polynomial polynomial = Polynomial::constant;
   Coefficients c;
+
+  [[nodiscard]] Vec4 at(const Vec2& x) const {
+    return made ? Vec4(c.transpose() * basis((x - centre) / scale, polynomial)) : Vec4::Zero();
+  }
 };
 
 /// The corners of an element: its family's, or 3 for a report element given 3 nodes (a tri3 that
@@ -139,11 +143,11 @@ bool cholesky_in_place(std::array<double, max_terms * max_terms>& L, int n) {
 /// Least squares with the highest polynomial the points determine (see the header). The normal
 /// equations A c = b (A = sum P P^T, b = sum P value^T) are accumulated in fixed-size arrays and
 /// solved by Cholesky; a rank-deficient A goes to the complete orthogonal decomposition.
-Fit fit_patch(const Vec2& centre, Polynomial most, std::span<const SamplingPoint* const> points) {
+Fit fit_patch(const Vec2& centre, Polynomial most, std::span<const SamplingPoint> points) {
   Fit f;
   f.centre = centre;
   double scale = 0.0;
-  for (const SamplingPoint* p : points) scale = std::max(scale, (p->x - centre).norm());
+  for (const SamplingPoint& p : points) scale = std::max(scale, (p.x - centre).norm());
   f.scale = scale > 0.0 ? scale : 1.0;
   if (points.empty()) return f;
   f.made = true;
@@ -153,8 +157,8 @@ Fit fit_patch(const Vec2& centre, Polynomial most, std::span<const SamplingPoint
     if (static_cast<int>(points.size()) < terms) continue;
     std::array<double, max_terms * max_terms> A{};  // lower triangle, row i at i * max_terms
     std::array<double, max_terms * 4> b{};          // row i at 4 i
-    for (const SamplingPoint* p : points) {
-      const Vec2 x = (p->x - centre) / f.scale;
+    for (const SamplingPoint& p : points) {
+      const Vec2 x = (p.x - centre) / f.scale;
       const std::array<double, 3> xp{1.0, x.x(), x.x() * x.x()};
       const std::array<double, 3> yp{1.0, x.y(), x.y() * x.y()};
       std::array<double, max_terms> P{};
@@ -164,7 +168,7 @@ Fit fit_patch(const Vec2& centre, Polynomial most, std::span<const SamplingPoint
       }
       for (std::size_t i = 0; i < static_cast<std::size_t>(terms); ++i) {
         for (std::size_t j = 0; j <= i; ++j) A[i * max_terms + j] += P[i] * P[j];
-        for (std::size_t c = 0; c < 4; ++c) b[4 * i + c] += P[i] * p->value[static_cast<Eigen::Index>(c)];
+        for (std::size_t c = 0; c < 4; ++c) b[4 * i + c] += P[i] * p.value[static_cast<Eigen::Index>(c)];
       }
     }
     f.polynomial = poly;
@@ -259,67 +263,46 @@ class FitPool {
 };
 
 /// The sampling points of one patch: those of corner node n's elements in material m, and their
-/// mirror images when n is on a symmetry line. Kept in the caller's buffers (reused per patch).
+/// mirror images when n is on a symmetry line. Kept in the caller's buffer (reused per patch).
 class PatchPoints {
  public:
-  PatchPoints(const Model& model, const Incidence& in, std::span<const ElementSamples> samples,
-              const SymmetryLines* symmetry)
-      : model_(model), in_(in), samples_(samples), symmetry_(symmetry) {}
+  PatchPoints(const Model& model, const Incidence& in, const ElementSampler& sample, const SymmetryLines* symmetry)
+      : model_(model), in_(in), sample_(sample), symmetry_(symmetry) {}
 
   /// Gathers corner n's patch in material m; nullopt when n is a corner of none of them.
   std::optional<Polynomial> gather(std::size_t n, int m) {
     points_.clear();
-    mirrored_.clear();
     std::optional<Polynomial> poly;
     for (std::uint32_t k = in_.first[n]; k < in_.first[n + 1]; ++k) {
       const Element& el = model_.elements[in_.element[k]];
       if (el.material != m || in_.local[k] >= corner_count(el)) continue;
       poly = poly ? common(*poly, polynomial_of(el.type)) : polynomial_of(el.type);
-      const ElementSamples& es = samples_[in_.element[k]];
-      for (int p = 0; p < es.count; ++p) points_.push_back(&es.point[static_cast<std::size_t>(p)]);
+      const ElementSamples es = sample_(in_.element[k]);
+      points_.insert(points_.end(), es.point.begin(), es.point.begin() + es.count);
     }
     if (mirrored(n)) {
-      // Reserved first: points_ keeps pointers into mirrored_.
-      mirrored_.reserve(points_.size());
-      for (const SamplingPoint* p : points_) {
-        mirrored_.push_back({symmetry_->mirror_point(model_, n, p->x), symmetry_->mirror_value(n, p->value)});
+      const std::size_t own = points_.size();
+      for (std::size_t p = 0; p < own; ++p) {
+        points_.push_back({symmetry_->mirror_point(model_, n, points_[p].x), symmetry_->mirror_value(n, points_[p].value)});
       }
-      for (const SamplingPoint& p : mirrored_) points_.push_back(&p);
     }
     return poly;
   }
 
   [[nodiscard]] bool mirrored(std::size_t n) const { return symmetry_ != nullptr && symmetry_->on_line(n); }
-  [[nodiscard]] std::span<const SamplingPoint* const> points() const { return points_; }
+  [[nodiscard]] std::span<const SamplingPoint> points() const { return points_; }
 
  private:
   const Model& model_;
   const Incidence& in_;
-  std::span<const ElementSamples> samples_;
+  const ElementSampler& sample_;
   const SymmetryLines* symmetry_;
-  std::vector<const SamplingPoint*> points_;
-  std::vector<SamplingPoint> mirrored_;
+  std::vector<SamplingPoint> points_;
 };
 
-}  // namespace
-
-std::array<Vec4, max_element_nodes> element_nodal_values(const Model& model, const RecoveredField& field, std::size_t e) {
-  const Element& el = model.elements[e];
-  std::array<Vec4, max_element_nodes> out{};
-  for (int a = 0; a < el.node_count; ++a) {
-    out[static_cast<std::size_t>(a)] = field.at(static_cast<std::size_t>(el.nodes[a]), el.material);
-  }
-  return out;
-}
-
-RecoveredField recover_field(const Model& model, std::span<const ElementSamples> samples, const SymmetryLines* symmetry) {
-  assert(samples.size() == model.elements.size());
-  assert(symmetry == nullptr || symmetry->empty() || symmetry->kind.size() == model.nodes.size());
-  if (symmetry != nullptr && symmetry->empty()) symmetry = nullptr;
+/// The sides: the distinct materials of each node's elements, in increasing order (values zero).
+RecoveredField field_sides(const Model& model, const Incidence& in) {
   const std::size_t node_count = model.nodes.size();
-  const Incidence in = incidence(model);
-
-  // The sides: the distinct materials of each node's elements, in increasing order.
   RecoveredField f;
   f.first.assign(node_count + 1, 0);
   f.material.reserve(node_count);
@@ -336,51 +319,114 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
     for (int s = 0; s < count; ++s) f.material.push_back(seen[static_cast<std::size_t>(s)]);
     f.first[n + 1] = static_cast<std::uint32_t>(f.material.size());
   }
-  const std::size_t side_count = f.material.size();
-  f.value.assign(side_count, Vec4::Zero());
+  f.value.assign(f.material.size(), Vec4::Zero());
+  return f;
+}
 
-  // Pass 1, per corner side: its patch's fit and whether it is interior to its material's region.
+/// What a side is to the patches (the header's rules).
+enum class SideKind : std::uint8_t {
+  not_corner,       ///< only a mid-side or centre node in its material: no patch of its own
+  boundary_corner,  ///< a corner on its material region's boundary: its patch is extrapolated
+  interior_corner,  ///< every edge at the corner shared by two of its elements (or along its
+                    ///< symmetry line): its own patch's value
+};
+
+/// The kind of node n's side in material m, from the edges at n to its neighbouring corners.
+/// `neighbours` is the caller's buffer.
+SideKind side_kind(const Model& model, const Incidence& in, const SymmetryLines* symmetry, std::size_t n, int m,
+                   std::vector<int>& neighbours) {
+  neighbours.clear();
+  bool corner = false;
+  for (std::uint32_t k = in.first[n]; k < in.first[n + 1]; ++k) {
+    const Element& el = model.elements[in.element[k]];
+    const int a = in.local[k];
+    const int corners = corner_count(el);
+    if (el.material != m || a >= corners) continue;
+    corner = true;
+    neighbours.push_back(el.nodes[(a + 1) % corners]);
+    neighbours.push_back(el.nodes[(a + corners - 1) % corners]);
+  }
+  if (!corner) return SideKind::not_corner;
+  // Interior: every edge at n (to a neighbouring corner) is shared by exactly two elements, or lies
+  // along n's symmetry line (its mirror image is the other).
+  const bool on_line = symmetry != nullptr && symmetry->on_line(n);
+  std::sort(neighbours.begin(), neighbours.end());
+  for (std::size_t i = 0; i < neighbours.size();) {
+    std::size_t j = i;
+    while (j < neighbours.size() && neighbours[j] == neighbours[i]) ++j;
+    const bool along_line = on_line && symmetry->same_line(model, n, static_cast<std::size_t>(neighbours[i]));
+    if (!(j - i == 2 || (j - i == 1 && along_line))) return SideKind::boundary_corner;
+    i = j;
+  }
+  return SideKind::interior_corner;
+}
+
+}  // namespace
+
+std::array<Vec4, max_element_nodes> element_nodal_values(const Model& model, const RecoveredField& field, std::size_t e) {
+  const Element& el = model.elements[e];
+  std::array<Vec4, max_element_nodes> out{};
+  for (int a = 0; a < el.node_count; ++a) {
+    out[static_cast<std::size_t>(a)] = field.at(static_cast<std::size_t>(el.nodes[a]), el.material);
+  }
+  return out;
+}
+
+RecoveredField recover_field(const Model& model, const ElementSampler& sample, const SymmetryLines* symmetry) {
+  assert(symmetry == nullptr || symmetry->empty() || symmetry->kind.size() == model.nodes.size());
+  if (symmetry != nullptr && symmetry->empty()) symmetry = nullptr;
+  const std::size_t node_count = model.nodes.size();
+  const Incidence in = incidence(model);
+  RecoveredField f = field_sides(model, in);
+  const std::size_t side_count = f.material.size();
+
+  // Pass 1, per side: its kind, from the mesh alone.
+  std::vector<SideKind> kind(side_count, SideKind::not_corner);
+  for_each_range(node_count, [&](std::size_t begin, std::size_t end, unsigned) {
+    std::vector<int> neighbours;
+    for (std::size_t n = begin; n < end; ++n) {
+      for (std::uint32_t s = f.first[n]; s < f.first[n + 1]; ++s) {
+        kind[s] = side_kind(model, in, symmetry, n, f.material[s], neighbours);
+      }
+    }
+  });
+  // Whether a side other than an interior corner reads the patch of corner n in material m (pass
+  // 3): a node of one of the patch's elements, n itself included.
+  const auto read_by_pass_3 = [&](std::size_t n, int m) {
+    for (std::uint32_t k = in.first[n]; k < in.first[n + 1]; ++k) {
+      const Element& el = model.elements[in.element[k]];
+      if (el.material != m || in.local[k] >= corner_count(el)) continue;
+      for (int a = 0; a < el.node_count; ++a) {
+        const int side = f.side(static_cast<std::size_t>(el.nodes[static_cast<std::size_t>(a)]), m);
+        if (kind[static_cast<std::size_t>(side)] != SideKind::interior_corner) return true;
+      }
+    }
+    return false;
+  };
+
+  // Pass 2, per corner side: its patch's fit, the value of an interior corner, and the fits pass 3
+  // reads kept (near the regions' boundaries and at mid-side nodes: a block of the report's
+  // elements keeps a few in a thousand).
   std::vector<StoredFit> fits(side_count);
   std::vector<FitPool> pools(range_count(node_count));
-  std::vector<std::uint8_t> interior(side_count, 0);
   for_each_range(node_count, [&](std::size_t begin, std::size_t end, unsigned r) {
-    PatchPoints patch(model, in, samples, symmetry);
-    std::vector<int> neighbours;
+    PatchPoints patch(model, in, sample, symmetry);
     for (std::size_t n = begin; n < end; ++n) {
       const Vec2 x(model.nodes[n].r, model.nodes[n].z);
       for (std::uint32_t s = f.first[n]; s < f.first[n + 1]; ++s) {
+        if (kind[s] == SideKind::not_corner) continue;
         const int m = f.material[s];
         const std::optional<Polynomial> poly = patch.gather(n, m);
-        if (!poly) continue;  // only a mid-side or centre node in this material
-        neighbours.clear();
-        for (std::uint32_t k = in.first[n]; k < in.first[n + 1]; ++k) {
-          const Element& el = model.elements[in.element[k]];
-          const int a = in.local[k];
-          const int corners = corner_count(el);
-          if (el.material != m || a >= corners) continue;
-          neighbours.push_back(el.nodes[(a + 1) % corners]);
-          neighbours.push_back(el.nodes[(a + corners - 1) % corners]);
-        }
-        // Interior: every edge at n (to a neighbouring corner) is shared by exactly two elements,
-        // or lies along n's symmetry line (its mirror image is the other).
-        std::sort(neighbours.begin(), neighbours.end());
-        bool closed = true;
-        for (std::size_t i = 0; i < neighbours.size() && closed;) {
-          std::size_t j = i;
-          while (j < neighbours.size() && neighbours[j] == neighbours[i]) ++j;
-          const bool along_line =
-              patch.mirrored(n) && symmetry->same_line(model, n, static_cast<std::size_t>(neighbours[i]));
-          closed = j - i == 2 || (j - i == 1 && along_line);
-          i = j;
-        }
-        interior[s] = closed ? 1 : 0;
-        fits[s] = pools[r].keep(fit_patch(x, *poly, patch.points()));
+        assert(poly);
+        const Fit fit = fit_patch(x, *poly, patch.points());
+        if (kind[s] == SideKind::interior_corner) f.value[s] = fit.at(x);
+        if (read_by_pass_3(n, m)) fits[s] = pools[r].keep(fit);
       }
     }
   });
 
-  // Pass 2, per side: the value from the patches that reach it (see the header), pulled so that
-  // each side is written by one thread.
+  // Pass 3, per side that is not an interior corner: the value from the patches that reach it (see
+  // the header), pulled so that each side is written by one thread.
   for_each_range(node_count, [&](std::size_t begin, std::size_t end, unsigned) {
     struct Reached {
       std::uint32_t side;
@@ -391,14 +437,11 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
       const Vec2 x(model.nodes[n].r, model.nodes[n].z);
       const bool on_line = symmetry != nullptr && symmetry->on_line(n);
       for (std::uint32_t s = f.first[n]; s < f.first[n + 1]; ++s) {
-        if (interior[s] != 0) {
-          f.value[s] = fits[s].at(x);
-          continue;
-        }
+        if (kind[s] == SideKind::interior_corner) continue;
         const int m = f.material[s];
         // The corner sides of material m whose patches hold node n: the corners of n's elements in m.
         reached.clear();
-        if (fits[s].made) reached.push_back({s, n});
+        if (kind[s] != SideKind::not_corner) reached.push_back({s, n});
         for (std::uint32_t k = in.first[n]; k < in.first[n + 1]; ++k) {
           const Element& el = model.elements[in.element[k]];
           if (el.material != m) continue;
@@ -427,7 +470,7 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
         Vec4 sum = Vec4::Zero();
         double weight = 0.0;
         for (const Reached& r : reached) {
-          if (interior[r.side] != 0) value_from(r, sum, weight);
+          if (kind[r.side] == SideKind::interior_corner) value_from(r, sum, weight);
         }
         if (weight == 0.0) {
           for (const Reached& r : reached) value_from(r, sum, weight);
@@ -437,6 +480,11 @@ RecoveredField recover_field(const Model& model, std::span<const ElementSamples>
     }
   });
   return f;
+}
+
+RecoveredField recover_field(const Model& model, std::span<const ElementSamples> samples, const SymmetryLines* symmetry) {
+  assert(samples.size() == model.elements.size());
+  return recover_field(model, [samples](std::size_t e) { return samples[e]; }, symmetry);
 }
 
 }  // namespace saasgaps

@@ -4,7 +4,6 @@
 
 #include "solver/fe/isoparametric_kernel.hpp"
 #include "solver/fe/quadrature.hpp"
-#include "solver/fe/saas_kernel.hpp"
 
 namespace saasgaps {
 
@@ -54,22 +53,18 @@ const std::array<std::array<double, 9>, 4>& gauss3_to_gauss2() {
   return W;
 }
 
-ElementSamples stress_samples(const ElementData& e, const ElementStates& states, std::span<const double> u) {
-  return stress_samples(e, std::span<const ElementState>(states.point).first(static_cast<std::size_t>(states.point_count)),
-                        u);
-}
-
-ElementSamples stress_samples(const ElementData& e, std::span<const ElementState> states, std::span<const double> u) {
+ElementSamples stress_samples(const ElementData& e, std::span<const ElementState> states) {
   ElementSamples out;
   switch (e.type) {
     case ElementType::saas:
     case ElementType::tri3: {
-      std::array<TriangleState, 4> t;
-      out.count = saas_triangle_states(e, u, t);
-      for (int k = 0; k < out.count; ++k) {
-        out.point[static_cast<std::size_t>(k)] = {t[static_cast<std::size_t>(k)].centroid,
-                                                 t[static_cast<std::size_t>(k)].state.stress};
-      }
+      // The report's elements keep one material point: a tri3's constant stress at its centroid, a
+      // saas quad's at its centre node, the mean of its corners (3 nodes: a tri3 typed saas).
+      assert(states.size() == 1);
+      Vec2 centre = Vec2::Zero();
+      for (int a = 0; a < e.node_count; ++a) centre += e.x[static_cast<std::size_t>(a)];
+      out.count = 1;
+      out.point[0] = {centre / e.node_count, states[0].stress};
       return out;
     }
     case ElementType::quad8:

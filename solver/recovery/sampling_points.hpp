@@ -1,9 +1,14 @@
 #pragma once
 /// Where superconvergent patch recovery (Zienkiewicz and Zhu 1992) samples an element's stresses:
 /// the points where the element's stress is most accurate, and the stress there as the kernel
-/// computed it (thermal, initial and plastic parts included: the total stress of the point).
+/// computed it at its material points (thermal, initial and plastic parts included: the total stress
+/// of the point). Only the element's geometry and its material points' states are read: sampling is
+/// cheap enough to repeat for each patch that holds the element, so no model-sized array of samples
+/// is kept (patch_recovery.hpp).
 ///
-///   saas    the centroids of its four constant-strain triangles (each triangle's constant stress)
+///   saas    its centre (the mean of the corners) and its one material point's stress there, the
+///           volume-weighted mean of its four constant-strain triangles: the superconvergent point of
+///           a four-node quadrilateral, which ZZ sample at its centre
 ///   tri3    its centroid (its constant stress)
 ///   tri6    the 3-point rule of degree 2, (1/6, 1/6), (2/3, 1/6), (1/6, 2/3): its material points
 ///   quad8,  the 2 x 2 Gauss points xi, eta = +-1/sqrt(3); with full (3 x 3) integration the values
@@ -35,13 +40,9 @@ struct ElementSamples {
   int count = 0;
 };
 
-/// The sampling points of an element with displacements u (2 x node_count) whose kernel states
-/// (at its material points) are `states`.
-ElementSamples stress_samples(const ElementData& e, const ElementStates& states, std::span<const double> u);
-/// The same with the states at the material points viewed (point_count of them). The report's
-/// elements (saas, tri3) read e's law, temperatures and loads and u, not the states; the others read
-/// only e's geometry (solid_element_geometry) and the states, not u.
-ElementSamples stress_samples(const ElementData& e, std::span<const ElementState> point_states, std::span<const double> u);
+/// The sampling points of an element (its geometry: solid_element_geometry's, no law needed) whose
+/// kernel states at its material points are `point_states` (its family's point count of them).
+ElementSamples stress_samples(const ElementData& geometry, std::span<const ElementState> point_states);
 
 /// The 2 x 2 Gauss points' values from a 3 x 3 rule's (both xi fastest): value(q) = sum_p W[q][p] value(p).
 const std::array<std::array<double, 9>, 4>& gauss3_to_gauss2();

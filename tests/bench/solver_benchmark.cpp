@@ -308,9 +308,10 @@ int main(int argc, char** argv) {
       const double s = stages.run("recovered stresses and error estimate", [&] {
         recovered = recover_stresses(
             m, displacement,
-            [&](std::size_t e, std::span<Constitutive> scratch) {
-              SolidMaterials::LawMemo own;  // one per call: the recovery asks from several threads
-              return materials.laws(e, state, own, scratch);
+            [&] {
+              return PointLawsOf([&, memo = SolidMaterials::LawMemo{}](std::size_t e, std::span<Constitutive> scratch) mutable {
+                return materials.laws(e, state, memo, scratch);
+              });
             },
             point_states, points);
       });
