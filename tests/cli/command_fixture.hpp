@@ -15,19 +15,12 @@
 #include <string>
 
 #include "support/captured_command.hpp"
+#include "support/temp_directory.hpp"
 
 namespace saasgaps::testing {
 
 class CommandTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("saasgaps-cli-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-
   static std::string example(const std::string& name) { return std::string(SAASGAPS_EXAMPLES_DIR) + "/" + name; }
   [[nodiscard]] std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
@@ -40,7 +33,8 @@ class CommandTest : public ::testing::Test {
 
   static nlohmann::json json_of(const std::string& file) { return nlohmann::json::parse(read(file)); }
 
-  std::filesystem::path dir_;
+  TempDirectory temp_{"cli"};
+  std::filesystem::path dir_ = temp_.path();
 };
 
 }  // namespace saasgaps::testing

@@ -20,6 +20,7 @@
 #include "service/store/job_store.hpp"
 #include "solver/analysis/analysis.hpp"
 #include "support/examples.hpp"
+#include "support/temp_directory.hpp"
 
 namespace saasgaps {
 namespace {
@@ -86,13 +87,8 @@ json without_wall_times(json result) {
 
 class OldDatabase : public ::testing::Test {
  protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() / ("saasgaps-old-db-" + std::to_string(::getpid()));
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-  fs::path directory_;
+  testing::TempDirectory temp_{"old-db"};
+  fs::path directory_ = temp_.path();
 };
 
 TEST_F(OldDatabase, MigratesAndItsInterruptedJobResumesFromTheOldState) {

@@ -10,20 +10,12 @@
 #include <string>
 
 #include "service/server_process.hpp"
+#include "support/temp_directory.hpp"
 
 namespace saasgaps::testing {
 
 class ServiceFixture : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("saasgaps-service-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-
   [[nodiscard]] std::filesystem::path database() const { return dir_ / "jobs.db"; }
 
   static std::string example_text(const std::string& name) {
@@ -62,7 +54,8 @@ class ServiceFixture : public ::testing::Test {
     return nlohmann::json::parse(in);
   }
 
-  std::filesystem::path dir_;
+  TempDirectory temp_{"service"};
+  std::filesystem::path dir_ = temp_.path();
 };
 
 }  // namespace saasgaps::testing

@@ -112,13 +112,6 @@ bool wait_until(Browser& browser, const std::string& script, std::chrono::millis
   return false;
 }
 
-fs::path fresh_directory(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("saasgaps-browser-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 void save_artifact(const std::string& name, const std::string& png) {
   fs::create_directories(SAASGAPS_ARTIFACTS_DIR);
   std::ofstream(fs::path(SAASGAPS_ARTIFACTS_DIR) / name, std::ios::binary) << png;

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "support/temp_directory.hpp"
+
 namespace saasgaps::testing {
 
 /// chromedriver and one headless Chromium session (a 1400 x 1600 window, off the network).
@@ -43,9 +45,6 @@ class Browser {
 
 /// Polls script (returning true when done) every 50 ms up to the timeout.
 bool wait_until(Browser& browser, const std::string& script, std::chrono::milliseconds timeout);
-
-/// An empty directory of this test process for a server's database and a browser profile.
-std::filesystem::path fresh_directory(const std::string& name);
 
 /// Writes the PNG to build/tests/artifacts/name.
 void save_artifact(const std::string& name, const std::string& png);

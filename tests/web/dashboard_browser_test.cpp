@@ -23,7 +23,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 TEST(Dashboard, FailedJobsSayWhyAndJobsCanBeDeleted) {
-  const fs::path dir = fresh_directory("fail");
+  const TempDirectory temp("browser-fail");
+  const fs::path& dir = temp.path();
   ServerProcess server(dir / "jobs.db");
   httplib::Client client = server.client();
   // Valid, but a mechanism: a held square and a second square hinged to it at one corner. The
@@ -66,7 +67,8 @@ TEST(Dashboard, FailedJobsSayWhyAndJobsCanBeDeleted) {
 }
 
 TEST(Dashboard, FollowsARunningJobAndShowsItsPlots) {
-  const fs::path dir = fresh_directory("follow");
+  const TempDirectory temp("browser-follow");
+  const fs::path& dir = temp.path();
   ServerProcess server(dir / "jobs.db");
   httplib::Client client = server.client();
   json model = tilted_block_document(200);

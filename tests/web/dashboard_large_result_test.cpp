@@ -21,7 +21,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 TEST(Dashboard, LargeResultPageIsInteractiveWithinTwoSeconds) {
-  const fs::path dir = fresh_directory("large");
+  const TempDirectory temp("browser-large");
+  const fs::path& dir = temp.path();
   ServerProcess server(dir / "jobs.db");
   httplib::Client client = server.client();
   client.set_read_timeout(std::chrono::seconds(120));

@@ -38,13 +38,10 @@ std::string base_url(const ServerProcess& server) { return "http://127.0.0.1:" +
 /// the server's client; the directory goes when the test ends.
 class DashboardRuns : public ::testing::Test {
  protected:
-  DashboardRuns()
-      : dir(fresh_directory(::testing::UnitTest::GetInstance()->current_test_info()->name())),
-        server(dir / "jobs.db"),
-        client(server.client()) {}
-  ~DashboardRuns() override { fs::remove_all(dir); }
+  DashboardRuns() : server(dir / "jobs.db"), client(server.client()) {}
 
-  const fs::path dir;
+  const TempDirectory temp{"browser"};
+  const fs::path dir = temp.path();
   ServerProcess server;
   httplib::Client client;
 };

@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 TEST(DashboardStudies, TheListLinksAStudyWhosePageDrawsEachOutputAgainstEachParameter) {
-  const fs::path dir = fresh_directory("DashboardStudies");
+  const TempDirectory temp("browser");
+  const fs::path& dir = temp.path();
   {
     ServerProcess server(dir / "jobs.db");
     httplib::Client client = server.client();

@@ -13,6 +13,7 @@
 
 #include "io/import/assembly_reader.hpp"
 #include "solver/base/errors.hpp"
+#include "support/temp_directory.hpp"
 
 namespace saasgaps {
 namespace {
@@ -35,12 +36,7 @@ Physical Curve("bottom") = {1};
 
 class MeshParameters : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("saasgaps-mesh-parameters-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-    std::ofstream(dir_ / "ring.geo") << ring_geo;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  void SetUp() override { std::ofstream(dir_ / "ring.geo") << ring_geo; }
 
   [[nodiscard]] static json assembly() {
     return {{"schema_version", 1},
@@ -70,7 +66,8 @@ class MeshParameters : public ::testing::Test {
     return {};
   }
 
-  fs::path dir_;
+  testing::TempDirectory temp_{"mesh-parameters"};
+  fs::path dir_ = temp_.path();
 };
 
 TEST_F(MeshParameters, SetTheGeometrysConstantsAndTheDefaultsHoldWithoutThem) {

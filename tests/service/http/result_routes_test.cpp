@@ -2,6 +2,7 @@
 // the race the kill -9 rounds met: GET /v1/jobs/{id} reads the job finished, a resume and a claim
 // make it run again before the result is read. The job resource still answers, without an estimate.
 #include "service/http/result_routes.hpp"
+#include "support/temp_directory.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -15,17 +16,7 @@ namespace fs = std::filesystem;
 
 class ErrorEstimateOfAJob : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("saasgaps-result-routes-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    store_ = std::make_unique<JobStore>((dir_ / "jobs.db").string(), 2);
-  }
-  void TearDown() override {
-    store_.reset();
-    fs::remove_all(dir_);
-  }
+  void SetUp() override { store_ = std::make_unique<JobStore>((dir_ / "jobs.db").string(), 2); }
   /// A job whose first run stopped not converged with this result document.
   std::int64_t finished_job(const std::string& result) {
     const std::int64_t id = store_->submit("{}", "job", 10, std::nullopt, "").job.id;
@@ -37,7 +28,8 @@ class ErrorEstimateOfAJob : public ::testing::Test {
 
   static constexpr const char* result_with_estimate =
       R"({"status":"not_converged","error_estimate":{"relative":0.125,"error":2.5,"energy_norm":20.0}})";
-  fs::path dir_;
+  testing::TempDirectory temp_{"result-routes"};
+  fs::path dir_ = temp_.path();
   std::unique_ptr<JobStore> store_;
 };
 

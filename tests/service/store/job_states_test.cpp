@@ -10,6 +10,7 @@
 
 #include "service/store/job_states.hpp"
 #include "service/store/job_store.hpp"
+#include "support/temp_directory.hpp"
 
 namespace saasgaps::service {
 namespace {
@@ -134,17 +135,7 @@ TEST(JobStates, SqlListsFollowTheTable) {
 /// A store on a fresh file, removed with its WAL afterwards.
 class StoreTransitions : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("saasgaps-job-states-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    open();
-  }
-  void TearDown() override {
-    store_.reset();
-    fs::remove_all(dir_);
-  }
+  void SetUp() override { open(); }
   /// (Re)opens the store, as a server start does.
   void open() {
     store_.reset();
@@ -167,8 +158,9 @@ class StoreTransitions : public ::testing::Test {
   JobStore& store() { return *store_; }
 
   static constexpr int max_interruptions = 2;
-  fs::path dir_;
-  std::unique_ptr<JobStore> store_;
+  testing::TempDirectory temp_{"job-states"};
+  fs::path dir_ = temp_.path();
+  std::unique_ptr<JobStore> store_;  // after the directory: closed before it is removed
 };
 
 TEST_F(StoreTransitions, ARunGoesFromQueuedThroughRunningToItsOutcome) {
