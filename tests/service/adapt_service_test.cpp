@@ -7,7 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "service/service_fixture.hpp"
 
@@ -21,6 +26,36 @@ std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
   for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
   return n;
+}
+
+/// $TMPDIR set for the servers this test starts (they inherit it), restored at the end.
+class TemporaryDirectoryVariable {
+ public:
+  explicit TemporaryDirectoryVariable(const std::filesystem::path& dir) {
+    if (const char* old = std::getenv("TMPDIR")) old_ = old;
+    ::setenv("TMPDIR", dir.c_str(), 1);
+  }
+  ~TemporaryDirectoryVariable() {
+    if (old_) {
+      ::setenv("TMPDIR", old_->c_str(), 1);
+    } else {
+      ::unsetenv("TMPDIR");
+    }
+  }
+  TemporaryDirectoryVariable(const TemporaryDirectoryVariable&) = delete;
+  TemporaryDirectoryVariable& operator=(const TemporaryDirectoryVariable&) = delete;
+
+ private:
+  std::optional<std::string> old_;
+};
+
+/// The upload directories (service/ops/private_directory.hpp) in `dir`.
+std::vector<std::string> upload_directories(const std::filesystem::path& dir) {
+  std::vector<std::string> found;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().filename().string().starts_with("saasgaps-upload-")) found.push_back(entry.path().filename());
+  }
+  return found;
 }
 
 /// The adaptation rows without their wall times: what must match between runs.
@@ -128,6 +163,11 @@ TEST_F(AdaptServiceRun, AServerKilledMidLoopLosesNoStoredCycle) {
   const std::size_t cycles = reference["adaptation"].size();
   ASSERT_GE(cycles, 3U) << reference.dump().substr(0, 400);
 
+  // The servers' temporary directory: the killed server leaves its upload directory there, and
+  // the next server removes it when it starts (docs/operations.md, "Temporary files").
+  const std::filesystem::path tmp = dir_ / "tmp";
+  std::filesystem::create_directories(tmp);
+  const TemporaryDirectoryVariable tmpdir(tmp);
   std::int64_t job = 0;
   json before;
   {
@@ -146,6 +186,7 @@ TEST_F(AdaptServiceRun, AServerKilledMidLoopLosesNoStoredCycle) {
     ASSERT_LT(before["adaptation"].size(), cycles);
     server.kill_hard();
   }
+  EXPECT_EQ(upload_directories(tmp).size(), 1U) << "the killed server's upload directory";
   ServerProcess restarted(database());
   httplib::Client client = restarted.client();
   const std::string path = "/v1/jobs/" + std::to_string(job);
@@ -160,6 +201,8 @@ TEST_F(AdaptServiceRun, AServerKilledMidLoopLosesNoStoredCycle) {
   EXPECT_EQ(cycle_numbers(done["adaptation"]), cycle_numbers(reference["adaptation"]));
   EXPECT_EQ(numbers(get_json(client, path + "/result")), numbers(reference));
   EXPECT_NE(restarted.log().find("\"adapt_resumed\""), std::string::npos);
+  EXPECT_NE(restarted.log().find("\"abandoned_uploads_removed\":1"), std::string::npos) << restarted.log();
+  EXPECT_TRUE(upload_directories(tmp).empty()) << upload_directories(tmp).front();
 }
 
 /// Cancelled between cycles, resumed: it goes on after the last stored cycle.

@@ -59,7 +59,7 @@ class HostileGeometry : public ServiceFixture {
     EXPECT_EQ(health->status, 200);
     std::vector<std::string> left;
     for (const auto& entry : fs::directory_iterator(uploads_)) {
-      if (entry.path().filename().string().starts_with("saasgaps-import-")) left.push_back(entry.path().string());
+      if (entry.path().filename().string().starts_with("saasgaps-upload-")) left.push_back(entry.path().string());
     }
     EXPECT_TRUE(left.empty()) << "upload directory left behind: " << left.front();
   }
@@ -104,7 +104,7 @@ TEST_F(HostileGeometry, FilesOutsideTheUploadCanBeNeitherWrittenNorRead) {
   expect_harmless(client);
 
   // A real geometry outside the upload directory, by absolute and by relative path: the upload
-  // directory is $TMPDIR/saasgaps-import-XXXXXX, so "../" is $TMPDIR.
+  // directory is $TMPDIR/saasgaps-upload-import-PID-XXXXXX, so "../" is $TMPDIR.
   std::ofstream(uploads_ / "outside.geo") << example_text("assemblies/ring-fit.geo");
   for (const std::string& line :
        {"Include \"" + (uploads_ / "outside.geo").string() + "\";", std::string("Include \"../outside.geo\";"),

@@ -94,7 +94,7 @@ TEST_F(Service, ImportsAnUploadedAssembly) {
   EXPECT_EQ(missing["errors"][0]["pointer"], "/mesh");
   const std::string detail = missing["errors"][0]["detail"];
   EXPECT_NE(detail.find("no part of the upload carries the file \"ring-fit.geo\""), std::string::npos) << detail;
-  EXPECT_EQ(detail.find("saasgaps-import-"), std::string::npos) << detail;
+  EXPECT_EQ(detail.find("saasgaps-upload-"), std::string::npos) << detail;
   EXPECT_EQ(detail.find('/'), std::string::npos) << detail;
 
   bad = json::parse(assembly);

@@ -23,6 +23,7 @@
 #include "service/http/guarded_server.hpp"
 #include "service/http/http_api.hpp"
 #include "service/ops/log.hpp"
+#include "service/ops/private_directory.hpp"
 #include "service/runs/job_runner.hpp"
 #include "service/store/database_lock.hpp"
 #include "service/store/event_hub.hpp"
@@ -171,6 +172,8 @@ int run_serve(const ServeOptions& options) {
   service::JobStore store(options.database, options.max_interruptions);
   // Runs handed to Slurm outlive the server: the monitor checks whether their Slurm jobs still run.
   const int recovered = store.recover_interrupted(slurm);
+  // Upload directories of servers and workers killed (kill -9, a crash) before they could remove them.
+  const int abandoned = service::remove_abandoned_uploads();
   service::EventHub hub;
 
   Retention retention(store, options.keep_finished_days);
@@ -225,7 +228,8 @@ int run_serve(const ServeOptions& options) {
   std::cout << ")" << std::endl;
   service::log_info("server_started", {{"version", SAASGAPS_VERSION}, {"host", options.host}, {"port", port},
                                        {"database", options.database}, {"executor", options.executor}, {"workers", options.workers},
-                                       {"recovered_jobs", recovered}, {"authentication", token.has_value()}});
+                                       {"recovered_jobs", recovered}, {"authentication", token.has_value()},
+                                       {"abandoned_uploads_removed", abandoned}});
   if (!store.writable()) service::log_error("database_read_only", {{"reason", store.why_not_writable()}});
 
   const bool clean = server.listen_after_bind();

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "cli/common/file_io.hpp"
+#include "service/ops/private_directory.hpp"
 #include "service/workers/worker_client.hpp"
 #include "service/workers/worker_protocol.hpp"
 
@@ -38,6 +39,10 @@ int run_worker_command(const WorkerCommandOptions& options) {
   worker.retry_for = std::chrono::milliseconds(static_cast<long long>(options.retry_for * 1000.0));
   const std::string prefix = "saasgaps worker (job " + std::to_string(options.job) + ", pid " + std::to_string(::getpid()) + "): ";
   worker.log = [prefix](const std::string& line) { std::cerr << prefix << line << std::endl; };
+  // Upload directories of workers on this node killed before they could remove them.
+  if (const int removed = service::remove_abandoned_uploads(); removed > 0) {
+    worker.log("removed " + std::to_string(removed) + " upload directories of processes that no longer run");
+  }
   return service::run_worker(worker);
 }
 

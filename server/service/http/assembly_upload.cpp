@@ -21,7 +21,7 @@ bool plain_name(const std::string& name) {
 }  // namespace
 
 UploadedFiles::UploadedFiles(const httplib::Request& req, const std::string& document_part, const std::string& route)
-    : directory_("saasgaps-import-") {
+    : directory_("import") {
   if (!req.is_multipart_form_data()) {
     throw HttpError(400, "Bad Request",
                     route + " takes multipart/form-data: a part \"" + document_part + "\" (the " + document_part +

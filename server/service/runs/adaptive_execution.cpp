@@ -64,7 +64,7 @@ void execute_adaptive_run(JobStore& store, EventHub& hub, const ClaimedJob& clai
     note_finished(store, id, state, message, error);
   };
   try {
-    const PrivateDirectory dir("saasgaps-adapt-");
+    const PrivateDirectory dir("adapt");
     for (const auto& [name, content] : input.files) dir.write(name, content);
     const json assembly = io::parse_document(input.assembly);
     std::string problems;
