@@ -162,8 +162,8 @@ TEST(RecoveryLe1, SaasSixteenBySixteenRecoversSigmaYyAtD) {
   std::vector<ElementSamples> samples(c.model.elements.size());
   for (std::size_t e = 0; e < samples.size(); ++e) {
     const ElementData geometry = solid_element_geometry(c.model, e);
-    const ElementState centre{Vec4::Zero(), c.solution.elements[e].stress};
-    samples[e] = stress_samples(geometry, std::span<const ElementState>(&centre, 1));
+    const ElementState state{Vec4::Zero(), c.solution.elements[e].stress};
+    samples[e] = stress_samples(geometry, std::span<const ElementState>(&state, 1));
   }
   const SymmetryLines lines = stress_symmetry_lines(c.model);
   const double patches = recover_field(c.model, samples, &lines).mean(static_cast<std::size_t>(c.D))[zz];
