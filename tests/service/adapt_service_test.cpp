@@ -7,14 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "service/service_fixture.hpp"
+#include "support/environment_variable.hpp"
 
 namespace saasgaps::testing {
 namespace {
@@ -27,27 +26,6 @@ std::size_t count(const std::string& text, const std::string& what) {
   for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
   return n;
 }
-
-/// $TMPDIR set for the servers this test starts (they inherit it), restored at the end.
-class TemporaryDirectoryVariable {
- public:
-  explicit TemporaryDirectoryVariable(const std::filesystem::path& dir) {
-    if (const char* old = std::getenv("TMPDIR")) old_ = old;
-    ::setenv("TMPDIR", dir.c_str(), 1);
-  }
-  ~TemporaryDirectoryVariable() {
-    if (old_) {
-      ::setenv("TMPDIR", old_->c_str(), 1);
-    } else {
-      ::unsetenv("TMPDIR");
-    }
-  }
-  TemporaryDirectoryVariable(const TemporaryDirectoryVariable&) = delete;
-  TemporaryDirectoryVariable& operator=(const TemporaryDirectoryVariable&) = delete;
-
- private:
-  std::optional<std::string> old_;
-};
 
 /// The upload directories (service/ops/private_directory.hpp) in `dir`.
 std::vector<std::string> upload_directories(const std::filesystem::path& dir) {
@@ -167,7 +145,7 @@ TEST_F(AdaptServiceRun, AServerKilledMidLoopLosesNoStoredCycle) {
   // the next server removes it when it starts (docs/operations.md, "Temporary files").
   const std::filesystem::path tmp = dir_ / "tmp";
   std::filesystem::create_directories(tmp);
-  const TemporaryDirectoryVariable tmpdir(tmp);
+  const EnvironmentVariable tmpdir("TMPDIR", tmp.string());  // the servers inherit it
   std::int64_t job = 0;
   json before;
   {

@@ -7,11 +7,13 @@
 
 #include <chrono>
 #include <future>
+#include <optional>
 #include <vector>
 
 #include <unistd.h>
 
 #include "service/service_fixture.hpp"
+#include "support/environment_variable.hpp"
 
 namespace saasgaps::testing {
 namespace {
@@ -27,18 +29,8 @@ class HostileGeometry : public ServiceFixture {
     // remains there afterwards can be seen.
     uploads_ = dir_ / "tmp";
     fs::create_directories(uploads_);
-    const char* old = std::getenv("TMPDIR");
-    old_tmpdir_ = old != nullptr ? std::optional<std::string>(old) : std::nullopt;
-    ::setenv("TMPDIR", uploads_.c_str(), 1);
+    tmpdir_.emplace("TMPDIR", uploads_.string());
     marker_ = dir_ / "created-by-the-geometry";
-  }
-  void TearDown() override {
-    if (old_tmpdir_) {
-      ::setenv("TMPDIR", old_tmpdir_->c_str(), 1);
-    } else {
-      ::unsetenv("TMPDIR");
-    }
-    ServiceFixture::TearDown();
   }
 
   /// The ring-fit example with `line` before its geometry.
@@ -75,7 +67,7 @@ class HostileGeometry : public ServiceFixture {
 
   fs::path uploads_;
   fs::path marker_;
-  std::optional<std::string> old_tmpdir_;
+  std::optional<EnvironmentVariable> tmpdir_;
 };
 
 TEST_F(HostileGeometry, ShellCommandsAreRefused) {

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <thread>
 
 #include "io/model/model_reader.hpp"
@@ -17,6 +18,7 @@
 #include "service/long_job_model.hpp"
 #include "service/runs/job_execution.hpp"
 #include "service/server_process.hpp"
+#include "support/environment_variable.hpp"
 
 namespace saasgaps::testing {
 namespace {
@@ -43,12 +45,13 @@ class Worker : public ::testing::Test {
                   "printf '%s\\n' \"$ids\" | tr ',' '\\n' | while read -r id; do [ -n \"$id\" ] && echo \"$id|RUNNING\"; done\n"
                   "exit 0\n");
     write_program("scancel", "exit 0\n");
-    ::setenv("FAKE_SLURM_DIR", dir_.c_str(), 1);
-    path_ = std::getenv("PATH");
-    ::setenv("PATH", ((dir_ / "bin").string() + ":" + path_).c_str(), 1);
+    fake_slurm_dir_.emplace("FAKE_SLURM_DIR", dir_.string());
+    const char* path = std::getenv("PATH");
+    path_.emplace("PATH", (dir_ / "bin").string() + ":" + (path != nullptr ? path : ""));
   }
   void TearDown() override {
-    ::setenv("PATH", path_.c_str(), 1);
+    path_.reset();
+    fake_slurm_dir_.reset();
     // A fake sbatch the server started just before it stopped can still be writing its ticket file
     // here (seen once: "Directory not empty"): try again for a moment rather than fail on cleanup.
     std::error_code error;
@@ -84,7 +87,8 @@ class Worker : public ::testing::Test {
   }
 
   fs::path dir_;
-  std::string path_;
+  std::optional<EnvironmentVariable> fake_slurm_dir_;  ///< where the stand-in sbatch writes tickets
+  std::optional<EnvironmentVariable> path_;            ///< the stand-ins' directory first
 };
 
 TEST_F(Worker, AWorkerWithItsTicketMatchesSolveAndTheTicketIsSpent) {
