@@ -95,6 +95,13 @@ struct Incidence {
   std::vector<std::uint32_t> first;
   std::vector<std::uint32_t> element;
   std::vector<std::uint8_t> local;
+
+  /// Whether entry k, an element of node n, is in the patch of corner n in material m: an element of
+  /// material m with n among its corners.
+  [[nodiscard]] bool in_patch(const Model& model, std::uint32_t k, int m) const {
+    const Element& el = model.elements[element[k]];
+    return el.material == m && local[k] < corner_count(el);
+  }
 };
 
 Incidence incidence(const Model& model) {
@@ -274,8 +281,8 @@ class PatchPoints {
     points_.clear();
     std::optional<Polynomial> poly;
     for (std::uint32_t k = in_.first[n]; k < in_.first[n + 1]; ++k) {
+      if (!in_.in_patch(model_, k, m)) continue;
       const Element& el = model_.elements[in_.element[k]];
-      if (el.material != m || in_.local[k] >= corner_count(el)) continue;
       poly = poly ? common(*poly, polynomial_of(el.type)) : polynomial_of(el.type);
       const ElementSamples es = sample_(in_.element[k]);
       points_.insert(points_.end(), es.point.begin(), es.point.begin() + es.count);
@@ -338,10 +345,10 @@ SideKind side_kind(const Model& model, const Incidence& in, const SymmetryLines*
   neighbours.clear();
   bool corner = false;
   for (std::uint32_t k = in.first[n]; k < in.first[n + 1]; ++k) {
+    if (!in.in_patch(model, k, m)) continue;
     const Element& el = model.elements[in.element[k]];
     const int a = in.local[k];
     const int corners = corner_count(el);
-    if (el.material != m || a >= corners) continue;
     corner = true;
     neighbours.push_back(el.nodes[(a + 1) % corners]);
     neighbours.push_back(el.nodes[(a + corners - 1) % corners]);
@@ -394,8 +401,8 @@ RecoveredField recover_field(const Model& model, const ElementSampler& sample, c
   // 3): a node of one of the patch's elements, n itself included.
   const auto read_by_pass_3 = [&](std::size_t n, int m) {
     for (std::uint32_t k = in.first[n]; k < in.first[n + 1]; ++k) {
+      if (!in.in_patch(model, k, m)) continue;
       const Element& el = model.elements[in.element[k]];
-      if (el.material != m || in.local[k] >= corner_count(el)) continue;
       for (int a = 0; a < el.node_count; ++a) {
         const int side = f.side(static_cast<std::size_t>(el.nodes[static_cast<std::size_t>(a)]), m);
         if (kind[static_cast<std::size_t>(side)] != SideKind::interior_corner) return true;
