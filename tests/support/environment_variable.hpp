@@ -26,9 +26,6 @@ class EnvironmentVariable {
   EnvironmentVariable(const EnvironmentVariable&) = delete;
   EnvironmentVariable& operator=(const EnvironmentVariable&) = delete;
 
-  /// The value it had before (nullopt: unset).
-  [[nodiscard]] const std::optional<std::string>& old() const { return old_; }
-
  private:
   std::string name_;
   std::optional<std::string> old_;
